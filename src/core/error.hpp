@@ -1,0 +1,32 @@
+// Exceptions the core throws. Messages are for users: they say what is wrong,
+// why, and how to fix it.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace tumble {
+
+/// Bad input (scene values, cloud contents). The app maps it to exit code 2.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A body whose mass distribution cannot define a rotation (no NaN ever leaks).
+class DegenerateBody : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+/// A state became non-finite (or a torque-free energy blew up) mid-run.
+/// The app maps it to exit code 3 and keeps what was already written.
+class Diverged : public std::runtime_error {
+ public:
+  Diverged(const std::string& what, double t, long step)
+      : std::runtime_error(what), time(t), step_index(step) {}
+  double time;       ///< s, time of the last finite state
+  long step_index;   ///< index of the failing step
+};
+
+}  // namespace tumble

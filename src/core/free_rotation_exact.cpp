@@ -1,0 +1,194 @@
+#include "core/free_rotation_exact.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_rj.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+
+#include "core/quaternion.hpp"
+#include "core/rotation_steps.hpp"
+
+namespace tumble {
+
+namespace {
+
+constexpr double kSymmetricTol = 1e-13;  // relative moment difference treated as equal
+constexpr double kPi = 3.14159265358979323846;
+
+// Incomplete F(φ, k) for any φ in (-π, π], by symmetry from [0, π/2].
+double ellint_f_any(double k, double phi, double K) {
+  const double a = std::abs(phi);
+  const double f = a <= 0.5 * kPi ? boost::math::ellint_1(k, a) : 2 * K - boost::math::ellint_1(k, kPi - a);
+  return std::copysign(f, phi);
+}
+
+// ∫₀^φ sin²θ / ((1 + ν sin²θ) √(1 - k² sin²θ)) dθ for |φ| ≤ π/2: (Π(-ν; φ) - F(φ))/(-ν)
+// written with Carlson's R_J (DLMF 19.25.14) so there is no cancellation at small ν.
+double g_reduced(double k, double nu, double phi) {
+  const double s = std::sin(phi), c = std::cos(phi);
+  if (s == 0) return 0;
+  const double s2 = s * s;
+  return s * s2 / 3.0 * boost::math::ellint_rj(c * c, 1 - k * k * s2, 1.0, 1 + nu * s2);
+}
+
+}  // namespace
+
+FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen::Quaterniond& q0,
+                                     const Eigen::Vector3d& L)
+    : inertia_(inertia), q0_(q0.normalized()), L_(L), l_(L.norm()) {
+  const double I1 = inertia[0], I2 = inertia[1], I3 = inertia[2];
+  const Eigen::Vector3d pi = q0_.conjugate() * L_;
+  if (l_ == 0) {
+    kind_ = Kind::at_rest;
+    return;
+  }
+  if (I3 - I1 <= kSymmetricTol * I3) {
+    kind_ = Kind::spherical;
+    i_perp_ = inertia.mean();
+    return;
+  }
+  if (I2 - I1 <= kSymmetricTol * I3 || I3 - I2 <= kSymmetricTol * I3) {
+    kind_ = Kind::symmetric;
+    axis_ = I2 - I1 <= kSymmetricTol * I3 ? 2 : 0;
+    i_perp_ = axis_ == 2 ? 0.5 * (I1 + I2) : 0.5 * (I2 + I3);
+    lambda_ = pi[axis_] * (1.0 / inertia[axis_] - 1.0 / i_perp_);
+    return;
+  }
+  kind_ = Kind::asymmetric;
+  // l² - 2E·I2 without cancellation decides which axis Π circulates about.
+  const double d = pi[0] * pi[0] * (I1 - I2) / I1 + pi[2] * pi[2] * (I3 - I2) / I3;
+  const bool major = d >= 0;
+  // Primed frame: identity, or the proper permutation v' = (v3, -v2, v1)
+  // (a half turn about (1, 0, 1)/√2).
+  q_perm_ = major ? Eigen::Quaterniond::Identity()
+                  : Eigen::Quaterniond(0, std::sqrt(0.5), 0, std::sqrt(0.5));
+  const Eigen::Vector3d p = q_perm_ * pi;  // Π' (rotation of components)
+  if (major) {
+    J1_ = I1; J2_ = I2; J3_ = I3;
+  } else {
+    J1_ = I3; J2_ = I2; J3_ = I1;
+  }
+  // Squared amplitudes from sums of same-signed terms (no cancellation).
+  const double x1 = p[0] * p[0] * (J3_ - J1_) / J1_ + p[1] * p[1] * (J3_ - J2_) / J2_;  // 2E J3 - l²
+  const double x3 = p[1] * p[1] * (J2_ - J1_) / J2_ + p[2] * p[2] * (J3_ - J1_) / J3_;  // l² - 2E J1
+  A1_ = std::sqrt(std::max(0.0, x1 / (J1_ * (J3_ - J1_))));
+  A2_ = std::sqrt(std::max(0.0, x1 / (J2_ * (J3_ - J2_))));
+  A3_ = std::sqrt(std::max(0.0, x3 / (J3_ * (J3_ - J1_))));
+  rho_ = std::sqrt(J1_ * (J3_ - J1_) / (J2_ * (J3_ - J2_)));
+  wp_ = std::sqrt((J3_ - J2_) * x3 / (J1_ * J2_ * J3_));
+  double k2 = (J2_ - J1_) * x1 / ((J3_ - J2_) * x3);
+  k2 = std::clamp(k2, 0.0, 1.0);
+  k_ = std::sqrt(k2);
+  periodic_ = k2 < 1.0;
+  K_ = periodic_ ? boost::math::ellint_1(k_) : std::numeric_limits<double>::infinity();
+  mu_ = (J2_ - J1_) / (J3_ - J2_);
+  nu_ = mu_ * J3_ / J1_;
+  // Signs: Π'3 never changes sign (dn > 0); Euler's equations then fix s2.
+  const double sigma = J3_ > J1_ ? 1.0 : -1.0;
+  s3_ = p[2] < 0 ? -1.0 : 1.0;
+  s2_ = sigma * s3_;
+  // Phase: am(τ0) = atan2(sn, cn) with the amplitude divided out.
+  const double am0 = std::atan2(p[1] / (J2_ * s2_ * rho_), p[0] / J1_);
+  tau0_ = periodic_ ? ellint_f_any(k_, am0, K_) : std::atanh(std::sin(am0));
+  G_K_ = periodic_ ? g_reduced(k_, nu_, 0.5 * kPi) : 0;
+  G_tau0_ = g_of_tau(tau0_);
+  // world ← L-frame at φ = 0: R0 = R_frame · B(τ0)·P.
+  q_frame0_ = q0_ * body_from_elliptic(tau0_).conjugate();
+}
+
+Eigen::Vector3d FreeRotationExact::primed_momentum(double tau) const {
+  double sn, cn, dn;
+  if (periodic_) {
+    const double r = tau - 4 * K_ * std::round(tau / (4 * K_));  // sn, cn have period 4K
+    sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
+  } else {
+    sn = std::tanh(tau);
+    cn = dn = 1.0 / std::cosh(tau);
+  }
+  return {J1_ * A1_ * cn, J2_ * A2_ * s2_ * sn, J3_ * A3_ * s3_ * dn};
+}
+
+// qB ⊗ qP, where B = Rx(θ) Rz(ψ) takes the body direction of L to the L-frame's z:
+// Π'/l = (sinθ sinψ, sinθ cosψ, cosθ). ψ uses the amplitude-free ratio so that
+// it stays defined for a pure spin about axis 3'.
+Eigen::Quaterniond FreeRotationExact::body_from_elliptic(double tau) const {
+  const Eigen::Vector3d p = primed_momentum(tau);
+  double sn, cn, dn;
+  if (periodic_) {
+    const double r = tau - 4 * K_ * std::round(tau / (4 * K_));
+    sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
+  } else {
+    sn = std::tanh(tau);
+    cn = 1.0 / std::cosh(tau);
+  }
+  const double theta = std::atan2(std::hypot(p[0], p[1]), p[2]);
+  const double psi = std::atan2(J1_ * cn, J2_ * s2_ * rho_ * sn);
+  const double ct = std::cos(0.5 * theta), st = std::sin(0.5 * theta);
+  const double cp = std::cos(0.5 * psi), sp = std::sin(0.5 * psi);
+  const Eigen::Quaterniond qb(ct * cp, st * cp, -st * sp, ct * sp);  // Rx(θ) ⊗ Rz(ψ)
+  return qb * q_perm_;
+}
+
+// G(τ) = ∫₀^τ sn²/(1 + ν sn²) du, reduced by the period 2K of sn².
+double FreeRotationExact::g_of_tau(double tau) const {
+  if (!periodic_) return g_reduced(k_, nu_, std::atan(std::sinh(tau)));
+  const double m = std::round(tau / (2 * K_));
+  const double r = tau - 2 * K_ * m;
+  double cn, dn;
+  const double sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
+  return 2 * m * G_K_ + g_reduced(k_, nu_, std::atan2(sn, cn));
+}
+
+double FreeRotationExact::precession(double t, double tau) const {
+  return (l_ / J1_) * (t + (mu_ - nu_) / wp_ * (g_of_tau(tau) - G_tau0_));
+}
+
+Eigen::Quaterniond FreeRotationExact::orientation(double t) const {
+  switch (kind_) {
+    case Kind::at_rest:
+      return q0_;
+    case Kind::spherical:
+      return (quat_exp(t / i_perp_ * L_) * q0_).normalized();
+    case Kind::symmetric:
+      return (quat_exp(t / i_perp_ * L_) * q0_ * axis_rotation(axis_, lambda_ * t)).normalized();
+    case Kind::asymmetric:
+      break;
+  }
+  const double tau = wp_ * t + tau0_;
+  const double dphi = t == 0.0 ? 0.0 : precession(t, tau);
+  // R(t) = R_L Rz(φ) B(τ) P, with R_L Rz(φ0) = R0 (B(τ0) P)ᵀ: L̂ is the L-frame's z in world.
+  const Eigen::Vector3d lhat = L_ / l_;
+  const Eigen::Quaterniond qz = quat_exp(dphi * lhat);  // world rotation about L by Δφ
+  return (qz * q_frame0_ * body_from_elliptic(tau)).normalized();
+}
+
+Eigen::Vector3d FreeRotationExact::momentum_body(double t) const {
+  if (kind_ != Kind::asymmetric) return orientation(t).conjugate() * L_;
+  return q_perm_.conjugate() * primed_momentum(wp_ * t + tau0_);
+}
+
+double FreeRotationExact::body_period() const {
+  if (kind_ != Kind::asymmetric || !periodic_) return std::numeric_limits<double>::infinity();
+  return 4 * K_ / wp_;
+}
+
+BodyState exact_free_state(const RigidBodyModel& m, const BodyState& s0, double t) {
+  BodyState s = s0;
+  s.c = s0.c + t * s0.P / m.mass;
+  s.q = FreeRotationExact(m.inertia, s0.q, s0.L).orientation(t);
+  return s;
+}
+
+namespace {
+void free_rotation_exact(const RigidBodyModel& m, const Eigen::Vector3d& L, Eigen::Quaterniond& q, double h) {
+  q = FreeRotationExact(m.inertia, q, L).orientation(h);
+}
+}  // namespace
+
+BodyState exact_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
+  return strang_step(m, s, t, h, free_rotation_exact);
+}
+
+}  // namespace tumble

@@ -1,0 +1,40 @@
+// Geometric one-step methods: the torque-free rotation advanced by a map that
+// keeps world L (and, for the midpoint rule, energy) exactly, with forces and
+// torques entering as Strang half kicks (`kick` in dynamics.hpp).
+#pragma once
+
+#include "core/body.hpp"
+
+namespace tumble {
+
+/// Torque-free rotation maps: advance q (world ← principal) over h (s) with
+/// world L fixed; the model supplies the principal moments.
+using FreeRotationMap = void (*)(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                                 Eigen::Quaterniond& q, double h);
+
+/// NO_SQUISH / Dullweber–Leimkuhler–McLachlan (J. Chem. Phys. 107, 1997) splitting
+/// H = T1 + T2 + T3 with Tᵢ = Πᵢ²/(2Iᵢ); each Tᵢ flow is an exact rotation about
+/// principal axis i. Symmetric sequence 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2): order 2.
+void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                             Eigen::Quaterniond& q, double h);
+
+/// Implicit midpoint rule on Euler's equations Π' = Π × I⁻¹Π (GNI IV.2.1: it keeps
+/// every quadratic invariant, so |Π|² and 2T, to round-off). Its update is
+/// Π₁ = cay(h ω̂ₘ)ᵀ Π₀, so advancing q by the same Cayley rotation keeps world L.
+void free_rotation_midpoint(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                            Eigen::Quaterniond& q, double h);
+
+/// Kick(h/2) ∘ [c += hP/M, free rotation map over h] ∘ Kick(h/2). A body without
+/// forces skips the kicks; without torque its L is kept bit-for-bit.
+BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, double h,
+                      FreeRotationMap rotate);
+
+BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+/// Yoshida's triple jump (Phys. Lett. A 150, 1990) of `splitting_step`: order 4.
+BodyState splitting4_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+BodyState implicit_midpoint_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+
+/// Momenta first (P, L += h f(x₀)), then c += h v₁ and q ← exp(h ω_world(L₁)) ⊗ q. Order 1.
+BodyState semi_implicit_euler_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+
+}  // namespace tumble

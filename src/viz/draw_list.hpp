@@ -1,0 +1,94 @@
+// GL-free description of one frame: what to draw, in world coordinates.
+// The simulation side (viz) fills it from a snapshot of body states; the
+// render layer turns it into GL draw calls. Nothing here includes GL, so the
+// contents can be unit-tested without a context (MuJoCo's mjvScene idea).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tumble::viz {
+
+/// Linear RGBA colour, components in [0, 1].
+using Color = glm::vec4;
+
+/// An oriented box: the body's extents along its principal axes.
+struct BoxItem {
+  glm::dvec3 center;        ///< world position of the box centre, m
+  glm::dmat3 rotation;      ///< columns = box axes in world (right-handed)
+  glm::dvec3 half_extents;  ///< half sizes along the columns of `rotation`, m
+  Color face;               ///< lit translucent face colour (alpha < 1)
+  Color edge;               ///< crisp edge line colour
+};
+
+/// An arrow from `origin` to `origin + vector` (world, m).
+struct ArrowItem {
+  glm::dvec3 origin;
+  glm::dvec3 vector;
+  double radius;            ///< shaft radius, m (head scales with it)
+  Color color;
+};
+
+/// A particle drawn as a small sphere/point sprite.
+struct PointItem {
+  glm::dvec3 position;      ///< world, m
+  double radius;            ///< m
+  Color color;
+};
+
+/// A polyline (trail of an axis tip); alpha fades from oldest to newest.
+struct PolylineItem {
+  std::vector<glm::dvec3> points;  ///< world, m, oldest first
+  Color color;
+  float width_px;
+};
+
+/// Ground grid in the plane through `origin` with normal +z (world).
+struct GridItem {
+  glm::dvec3 origin;
+  double spacing;           ///< m between lines
+  int half_count;           ///< lines on each side of the origin
+  Color color;
+};
+
+/// Screen-space text, pixel coordinates from the viewport's top-left corner.
+struct TextItem {
+  std::string text;
+  glm::vec2 position_px;
+  float size_px;
+  Color color;
+};
+
+/// Perspective camera (GLM lookAt/perspective conventions).
+struct Camera {
+  glm::dvec3 position{4.0, -6.0, 3.0};  ///< m
+  glm::dvec3 target{0.0, 0.0, 0.0};     ///< m
+  glm::dvec3 up{0.0, 0.0, 1.0};
+  double fov_y_deg = 35.0;              ///< vertical field of view, degrees
+  double near_m = 0.05, far_m = 500.0;
+};
+
+/// One viewport's content. Several of them form a comparison grid.
+struct View {
+  Camera camera;
+  std::vector<BoxItem> boxes;
+  std::vector<ArrowItem> arrows;
+  std::vector<PointItem> points;
+  std::vector<PolylineItem> polylines;
+  std::vector<GridItem> grids;
+  std::vector<TextItem> texts;   ///< overlay, drawn last, in this viewport
+  std::string label;             ///< e.g. the method name in a comparison
+};
+
+/// A whole frame: views laid out on a grid of `columns` (row-major).
+struct DrawList {
+  Color background{0.97f, 0.97f, 0.98f, 1.0f};
+  int columns = 1;
+  std::vector<View> views;
+  std::vector<TextItem> texts;   ///< overlay over the whole frame
+};
+
+}  // namespace tumble::viz
