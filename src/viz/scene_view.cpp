@@ -1,0 +1,118 @@
+#include "viz/scene_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/dynamics.hpp"
+
+namespace tumble::viz {
+
+namespace {
+
+glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+glm::dmat3 rotation_of(const Eigen::Quaterniond& q) {
+  const Eigen::Matrix3d r = q.toRotationMatrix();
+  glm::dmat3 g;
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) g[c][k] = r(k, c);  // glm is column-major: g[col][row]
+  return g;
+}
+
+double largest_half_extent(const RigidBodyModel& m) { return m.box.half_extents.maxCoeff(); }
+
+}  // namespace
+
+glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i) {
+  const double to_face = m.box.center[i] + m.box.half_extents[i];
+  const double len = std::max(to_face, 0.3 * largest_half_extent(m));
+  Eigen::Vector3d e = Eigen::Vector3d::Zero();
+  e[i] = len;
+  return to_glm(s.c + s.q * e);
+}
+
+double box_radius(const RigidBodyModel& m) { return (m.box.center.cwiseAbs() + m.box.half_extents).norm(); }
+
+void TrailRecorder::record(double t, const std::vector<BodySnapshot>& bodies) {
+  Sample s{t, {}};
+  for (const BodySnapshot& b : bodies)
+    s.tips.push_back({axis_tip(*b.model, b.state, 0), axis_tip(*b.model, b.state, 1), axis_tip(*b.model, b.state, 2)});
+  samples_.push_back(std::move(s));
+}
+
+std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds) const {
+  std::vector<PolylineItem> out;
+  if (samples_.empty() || seconds <= 0) return out;
+  const size_t nbodies = samples_.back().tips.size();
+  for (size_t b = 0; b < nbodies; ++b)
+    for (int i = 0; i < 3; ++i) {
+      PolylineItem p{{}, kAxisColors[i], 2.0f};
+      for (const Sample& s : samples_)
+        if (s.t <= t + 1e-12 && s.t >= t - seconds - 1e-12 && b < s.tips.size()) p.points.push_back(s.tips[b][i]);
+      if (p.points.size() >= 2) out.push_back(std::move(p));
+    }
+  return out;
+}
+
+void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawOptions& opt,
+                const TrailRecorder* trails, double t) {
+  for (const BodySnapshot& b : bodies) {
+    const RigidBodyModel& m = *b.model;
+    const BodyState& s = b.state;
+    const double size = std::max(largest_half_extent(m), 1e-3);
+    if (opt.box) {
+      Color edge = b.color * 0.45f;
+      edge.a = 1.0f;
+      view.boxes.push_back({to_glm(s.c + s.q * m.box.center), rotation_of(s.q), to_glm(m.box.half_extents),
+                            b.color, edge});
+    }
+    if (opt.axes)
+      for (int i = 0; i < 3; ++i)
+        view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i]});
+    if (opt.particles && b.cloud) {
+      const Eigen::Quaterniond qc = cloud_orientation(m, s);
+      const double r = 0.02 * size;
+      for (const Particle& p : *b.cloud)
+        view.points.push_back({to_glm(s.c + qc * (p.position - m.com_cloud)), r, {0.2f, 0.2f, 0.25f, 1}});
+    }
+    // L and ω show direction only (their magnitudes have other units than
+    // length), at a fixed multiple of the body's size.
+    if (opt.angular_momentum && s.L.norm() > 0)
+      view.arrows.push_back({to_glm(s.c), to_glm(1.5 * size * s.L.normalized()), 0.025 * size, kLColor});
+    if (opt.omega) {
+      const Eigen::Vector3d w = omega_world(m, s);
+      if (w.norm() > 0)
+        view.arrows.push_back({to_glm(s.c), to_glm(1.3 * size * w.normalized()), 0.02 * size, kOmegaColor});
+    }
+  }
+  if (trails && opt.trail_seconds > 0)
+    for (PolylineItem& p : trails->polylines(t, opt.trail_seconds)) view.polylines.push_back(std::move(p));
+}
+
+Camera auto_camera(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii, double fov_y_deg,
+                   double aspect) {
+  Camera cam;
+  cam.fov_y_deg = fov_y_deg;
+  if (centres.empty()) return cam;
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (size_t i = 0; i < centres.size(); ++i) {
+    lo = glm::min(lo, centres[i] - glm::dvec3(radii[i]));
+    hi = glm::max(hi, centres[i] + glm::dvec3(radii[i]));
+  }
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+  // Distance so the bounding sphere fits the narrower of the two fields of view.
+  const double half_v = 0.5 * fov_y_deg * std::numbers::pi / 180.0;
+  const double half_h = std::atan(std::tan(half_v) * aspect);
+  const double dist = radius / std::sin(std::min(half_v, half_h)) * 1.05;
+  const glm::dvec3 dir = glm::normalize(glm::dvec3(0.55, -1.0, 0.45));
+  cam.target = centre;
+  cam.position = centre + dist * dir;
+  cam.up = {0, 0, 1};
+  cam.near_m = std::max(1e-3, dist - 3 * radius);
+  cam.far_m = dist + 3 * radius;
+  return cam;
+}
+
+}  // namespace tumble::viz

@@ -1,0 +1,71 @@
+// Builds the GL-free draw list of one view from a snapshot of body states.
+#pragma once
+
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "core/body.hpp"
+#include "core/particle_cloud.hpp"
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+/// One body at one instant, with what is needed to draw it.
+struct BodySnapshot {
+  const RigidBodyModel* model = nullptr;
+  const ParticleCloud* cloud = nullptr;  ///< optional: particles in cloud coordinates
+  BodyState state;
+  Color color{0.55f, 0.62f, 0.78f, 0.35f};  ///< box face colour (alpha = translucency)
+};
+
+/// What to draw (scene `[draw]`, overridable on the command line).
+struct DrawOptions {
+  bool box = true;
+  bool axes = true;          ///< principal axes: red = smallest moment, green, blue = largest
+  bool particles = false;
+  bool angular_momentum = false;  ///< world L as an arrow
+  bool omega = false;             ///< ω_world as an arrow
+  double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
+  bool grid = false;
+  double grid_z = 0;              ///< m, height of the ground grid
+};
+
+inline const Color kAxisColors[3] = {{0.86f, 0.15f, 0.15f, 1}, {0.12f, 0.62f, 0.20f, 1}, {0.15f, 0.30f, 0.90f, 1}};
+inline const Color kLColor{0.95f, 0.60f, 0.05f, 1};
+inline const Color kOmegaColor{0.60f, 0.20f, 0.75f, 1};
+
+/// World position of the tip of principal axis `i` (0..2) of a body: the axis
+/// runs from the centre of mass to the box face (at least 30% of the largest
+/// half extent, so a flat body still shows all three axes).
+glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i);
+
+/// Per-body history of axis-tip positions, for trails. Fed every frame from
+/// t = 0, so a frame range renders the same trails as a full run.
+class TrailRecorder {
+ public:
+  void record(double t, const std::vector<BodySnapshot>& bodies);
+  /// Polylines of the last `seconds` before and including `t`.
+  std::vector<PolylineItem> polylines(double t, double seconds) const;
+
+ private:
+  struct Sample {
+    double t;
+    std::vector<std::array<glm::dvec3, 3>> tips;  // per body
+  };
+  std::deque<Sample> samples_;
+};
+
+/// Adds the items of `bodies` to `view` (camera and label are the caller's).
+void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawOptions& opt,
+                const TrailRecorder* trails, double t);
+
+/// A bounding sphere (centre, radius in m) of a body's box.
+double box_radius(const RigidBodyModel& m);
+
+/// Camera that frames all the points in `centres` with their radii, looking
+/// from a fixed 3/4 direction; `aspect` = width/height of the viewport.
+Camera auto_camera(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii, double fov_y_deg,
+                   double aspect);
+
+}  // namespace tumble::viz

@@ -1,0 +1,86 @@
+// The draw list puts box corners and axis tips where the core's state says.
+#include <gtest/gtest.h>
+
+#include "core/mass_properties.hpp"
+#include "core/particle_cloud.hpp"
+#include "viz/scene_view.hpp"
+
+namespace tumble::viz {
+namespace {
+
+struct Fixture {
+  ParticleCloud cloud = make_box({2.0, 1.0, 0.5}, {8, 4, 2}, 3.0);
+  RigidBodyModel model = make_model("b", compute_mass_properties(cloud, "b"), ForceSet{});
+  BodyState state;
+  Fixture() {
+    InitialConditions ic;
+    ic.position = {1, 2, 3};
+    ic.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+    state = make_state(model, ic);
+  }
+};
+
+TEST(SceneView, BoxCornersMatchTransformedCloudExtents) {
+  Fixture f;
+  View v;
+  add_bodies(v, {{&f.model, &f.cloud, f.state}}, DrawOptions{}, nullptr, 0);
+  ASSERT_EQ(v.boxes.size(), 1u);
+  const BoxItem& b = v.boxes[0];
+  // Every particle, transformed by the state, lies inside the drawn box, and the
+  // extreme particles touch its faces.
+  const Eigen::Quaterniond qc = cloud_orientation(f.model, f.state);
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const Particle& p : f.cloud) {
+    const Eigen::Vector3d w = f.state.c + qc * (p.position - f.model.com_cloud);
+    const glm::dvec3 local = glm::transpose(b.rotation) * (glm::dvec3(w.x(), w.y(), w.z()) - b.center);
+    lo = glm::min(lo, local);
+    hi = glm::max(hi, local);
+  }
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(lo[i], -b.half_extents[i], 1e-12);
+    EXPECT_NEAR(hi[i], b.half_extents[i], 1e-12);
+  }
+  // Lattice cell centres: full extents 2 - 2/8, 1 - 1/4, 0.5 - 0.5/2 (sorted by moment).
+  EXPECT_NEAR(b.half_extents[0], 0.875, 1e-12);
+  EXPECT_NEAR(b.half_extents[1], 0.375, 1e-12);
+  EXPECT_NEAR(b.half_extents[2], 0.125, 1e-12);
+}
+
+TEST(SceneView, AxisArrowsStartAtComAndFollowPrincipalAxes) {
+  Fixture f;
+  View v;
+  add_bodies(v, {{&f.model, &f.cloud, f.state}}, DrawOptions{}, nullptr, 0);
+  ASSERT_EQ(v.arrows.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    const ArrowItem& a = v.arrows[i];
+    EXPECT_NEAR(glm::length(a.origin - glm::dvec3(1, 2, 3)), 0.0, 1e-12);
+    const Eigen::Vector3d axis = f.state.q * Eigen::Vector3d::Unit(i);
+    const glm::dvec3 dir = glm::normalize(a.vector);
+    EXPECT_NEAR(glm::dot(dir, glm::dvec3(axis.x(), axis.y(), axis.z())), 1.0, 1e-12);
+    EXPECT_EQ(a.color, kAxisColors[i]);
+  }
+  // Axis 1 (smallest moment) is the long x edge of this box: its tip is on the face.
+  EXPECT_NEAR(glm::length(v.arrows[0].vector), 0.875, 1e-12);
+}
+
+TEST(SceneView, TrailsKeepOnlyTheWindow) {
+  Fixture f;
+  TrailRecorder rec;
+  for (int k = 0; k <= 10; ++k) {
+    BodyState s = f.state;
+    s.c.x() += k;
+    rec.record(0.1 * k, {{&f.model, nullptr, s}});
+  }
+  const auto lines = rec.polylines(1.0, 0.35);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].points.size(), 4u);  // t = 0.7, 0.8, 0.9, 1.0
+}
+
+TEST(SceneView, AutoCameraSeesEverything) {
+  const Camera c = auto_camera({{0, 0, 0}, {10, 0, 0}}, {1, 1}, 40, 16.0 / 9);
+  EXPECT_NEAR(c.target.x, 5.0, 1e-12);
+  EXPECT_GT(glm::length(c.position - c.target), 6.0);
+}
+
+}  // namespace
+}  // namespace tumble::viz
