@@ -93,56 +93,51 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   const double am0 = std::atan2(p[1] / (J2_ * s2_ * rho_), p[0] / J1_);
   tau0_ = periodic_ ? ellint_f_any(k_, am0, K_) : std::atanh(std::sin(am0));
   G_K_ = periodic_ ? g_reduced(k_, nu_, 0.5 * kPi) : 0;
-  G_tau0_ = g_of_tau(tau0_);
+  const Phase ph0 = phase(tau0_);
+  G_tau0_ = ph0.g;
   // world ← L-frame at φ = 0: R0 = R_frame · B(τ0)·P.
-  q_frame0_ = q0_ * body_from_elliptic(tau0_).conjugate();
+  q_frame0_ = q0_ * body_from_elliptic(ph0).conjugate();
 }
 
-Eigen::Vector3d FreeRotationExact::primed_momentum(double tau) const {
-  double sn, cn, dn;
-  if (periodic_) {
-    const double r = tau - 4 * K_ * std::round(tau / (4 * K_));  // sn, cn have period 4K
-    sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
-  } else {
-    sn = std::tanh(tau);
-    cn = dn = 1.0 / std::cosh(tau);
+// sn, cn, dn at τ (one Jacobi evaluation, argument reduced by the period 4K),
+// plus G(τ) = ∫₀^τ sn²/(1 + ν sn²) du, reduced by the period 2K of sn².
+FreeRotationExact::Phase FreeRotationExact::phase(double tau) const {
+  Phase ph;
+  if (!periodic_) {
+    ph.sn = std::tanh(tau);
+    ph.cn = ph.dn = 1.0 / std::cosh(tau);
+    ph.g = g_reduced(k_, nu_, std::atan(std::sinh(tau)));
+    return ph;
   }
-  return {J1_ * A1_ * cn, J2_ * A2_ * s2_ * sn, J3_ * A3_ * s3_ * dn};
+  const double m4 = std::round(tau / (4 * K_));
+  const double r = tau - 4 * K_ * m4;  // in [-2K, 2K]
+  ph.sn = boost::math::jacobi_elliptic(k_, r, &ph.cn, &ph.dn);
+  // Shift r into [-K, K] by ±2K, where sn and cn change sign.
+  double m2 = 2 * m4, sn2 = ph.sn, cn2 = ph.cn;
+  if (r > K_ || r < -K_) {
+    m2 += r > 0 ? 1 : -1;
+    sn2 = -sn2;
+    cn2 = -cn2;
+  }
+  ph.g = 2 * m2 * G_K_ + g_reduced(k_, nu_, std::atan2(sn2, cn2));
+  return ph;
+}
+
+Eigen::Vector3d FreeRotationExact::primed_momentum(const Phase& ph) const {
+  return {J1_ * A1_ * ph.cn, J2_ * A2_ * s2_ * ph.sn, J3_ * A3_ * s3_ * ph.dn};
 }
 
 // qB ⊗ qP, where B = Rx(θ) Rz(ψ) takes the body direction of L to the L-frame's z:
 // Π'/l = (sinθ sinψ, sinθ cosψ, cosθ). ψ uses the amplitude-free ratio so that
 // it stays defined for a pure spin about axis 3'.
-Eigen::Quaterniond FreeRotationExact::body_from_elliptic(double tau) const {
-  const Eigen::Vector3d p = primed_momentum(tau);
-  double sn, cn, dn;
-  if (periodic_) {
-    const double r = tau - 4 * K_ * std::round(tau / (4 * K_));
-    sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
-  } else {
-    sn = std::tanh(tau);
-    cn = 1.0 / std::cosh(tau);
-  }
+Eigen::Quaterniond FreeRotationExact::body_from_elliptic(const Phase& ph) const {
+  const Eigen::Vector3d p = primed_momentum(ph);
   const double theta = std::atan2(std::hypot(p[0], p[1]), p[2]);
-  const double psi = std::atan2(J1_ * cn, J2_ * s2_ * rho_ * sn);
+  const double psi = std::atan2(J1_ * ph.cn, J2_ * s2_ * rho_ * ph.sn);
   const double ct = std::cos(0.5 * theta), st = std::sin(0.5 * theta);
   const double cp = std::cos(0.5 * psi), sp = std::sin(0.5 * psi);
   const Eigen::Quaterniond qb(ct * cp, st * cp, -st * sp, ct * sp);  // Rx(θ) ⊗ Rz(ψ)
   return qb * q_perm_;
-}
-
-// G(τ) = ∫₀^τ sn²/(1 + ν sn²) du, reduced by the period 2K of sn².
-double FreeRotationExact::g_of_tau(double tau) const {
-  if (!periodic_) return g_reduced(k_, nu_, std::atan(std::sinh(tau)));
-  const double m = std::round(tau / (2 * K_));
-  const double r = tau - 2 * K_ * m;
-  double cn, dn;
-  const double sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
-  return 2 * m * G_K_ + g_reduced(k_, nu_, std::atan2(sn, cn));
-}
-
-double FreeRotationExact::precession(double t, double tau) const {
-  return (l_ / J1_) * (t + (mu_ - nu_) / wp_ * (g_of_tau(tau) - G_tau0_));
 }
 
 Eigen::Quaterniond FreeRotationExact::orientation(double t) const {
@@ -156,17 +151,17 @@ Eigen::Quaterniond FreeRotationExact::orientation(double t) const {
     case Kind::asymmetric:
       break;
   }
-  const double tau = wp_ * t + tau0_;
-  const double dphi = t == 0.0 ? 0.0 : precession(t, tau);
+  const Phase ph = phase(wp_ * t + tau0_);
+  // φ' = (l/J1)(1 + μ sn²)/(1 + ν sn²) integrates to (l/J1)(t + (μ - ν)/ωp ΔG).
+  const double dphi = t == 0.0 ? 0.0 : (l_ / J1_) * (t + (mu_ - nu_) / wp_ * (ph.g - G_tau0_));
   // R(t) = R_L Rz(φ) B(τ) P, with R_L Rz(φ0) = R0 (B(τ0) P)ᵀ: L̂ is the L-frame's z in world.
-  const Eigen::Vector3d lhat = L_ / l_;
-  const Eigen::Quaterniond qz = quat_exp(dphi * lhat);  // world rotation about L by Δφ
-  return (qz * q_frame0_ * body_from_elliptic(tau)).normalized();
+  const Eigen::Quaterniond qz = quat_exp(dphi / l_ * L_);  // world rotation about L by Δφ
+  return (qz * q_frame0_ * body_from_elliptic(ph)).normalized();
 }
 
 Eigen::Vector3d FreeRotationExact::momentum_body(double t) const {
   if (kind_ != Kind::asymmetric) return orientation(t).conjugate() * L_;
-  return q_perm_.conjugate() * primed_momentum(wp_ * t + tau0_);
+  return q_perm_.conjugate() * primed_momentum(phase(wp_ * t + tau0_));
 }
 
 double FreeRotationExact::body_period() const {

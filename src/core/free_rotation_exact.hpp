@@ -41,10 +41,13 @@ class FreeRotationExact {
   double body_period() const;
 
  private:
-  Eigen::Quaterniond body_from_elliptic(double tau) const;  // qB(τ) ⊗ qP
-  double precession(double t, double tau) const;            // φ(t) - φ(0)
-  double g_of_tau(double tau) const;
-  Eigen::Vector3d primed_momentum(double tau) const;
+  struct Phase {
+    double sn = 0, cn = 1, dn = 1;  // Jacobi functions at τ
+    double g = 0;                   // G(τ) = ∫₀^τ sn²/(1 + ν sn²) du
+  };
+  Phase phase(double tau) const;
+  Eigen::Quaterniond body_from_elliptic(const Phase& ph) const;  // qB(τ) ⊗ qP
+  Eigen::Vector3d primed_momentum(const Phase& ph) const;
 
   Kind kind_;
   Eigen::Vector3d inertia_;
