@@ -1,0 +1,126 @@
+#define STB_TRUETYPE_IMPLEMENTATION
+#define STBTT_STATIC
+#include <stb/stb_truetype.h>
+
+#include "render/font_atlas.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace tumble::render {
+namespace {
+
+struct Range {
+  char32_t first;
+  int count;
+};
+// ASCII, Latin-1, Greek, and general punctuation (dashes, bullets, ellipsis).
+constexpr std::array<Range, 4> kRanges = {{{0x20, 95}, {0xA0, 96}, {0x391, 57}, {0x2010, 24}}};
+
+// Minimal UTF-8 decoder; malformed bytes come out as '?'.
+char32_t next_code_point(std::string_view s, std::size_t& i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char b0 = byte(i++);
+  if (b0 < 0x80) return b0;
+  const int extra = b0 >= 0xF0 ? 3 : b0 >= 0xE0 ? 2 : b0 >= 0xC0 ? 1 : -1;
+  if (extra < 0 || i + extra > s.size()) return U'?';
+  char32_t c = b0 & (0x3F >> extra);
+  for (int k = 0; k < extra; ++k) {
+    if ((byte(i) & 0xC0) != 0x80) return U'?';
+    c = (c << 6) | (byte(i++) & 0x3F);
+  }
+  return c;
+}
+
+}  // namespace
+
+FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_(bake_px) {
+  std::ifstream in(ttf, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read font " + ttf.string());
+  const std::vector<unsigned char> data{std::istreambuf_iterator<char>(in), {}};
+
+  stbtt_fontinfo info;
+  if (!stbtt_InitFont(&info, data.data(), stbtt_GetFontOffsetForIndex(data.data(), 0))) {
+    throw std::runtime_error("not a usable TrueType font: " + ttf.string());
+  }
+  int ascent = 0, descent = 0, gap = 0;
+  stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
+  const float scale = stbtt_ScaleForPixelHeight(&info, bake_px);
+  ascent_px_ = ascent * scale;
+  line_px_ = (ascent - descent + gap) * scale;
+
+  // Generous padding keeps glyphs from bleeding into each other in the
+  // mipmap levels used when text is drawn much smaller than the bake size.
+  pixels_.assign(static_cast<std::size_t>(width_) * height_, 0);
+  stbtt_pack_context pack;
+  if (!stbtt_PackBegin(&pack, pixels_.data(), width_, height_, 0, 8, nullptr)) {
+    throw std::runtime_error("stbtt_PackBegin failed");
+  }
+  bool ok = true;
+  for (const Range& r : kRanges) {
+    std::vector<stbtt_packedchar> packed(r.count);
+    ok = ok && stbtt_PackFontRange(&pack, data.data(), 0, bake_px, static_cast<int>(r.first),
+                                   r.count, packed.data());
+    for (int k = 0; ok && k < r.count; ++k) {
+      const stbtt_packedchar& p = packed[k];
+      glyphs_.push_back({r.first + k,
+                         Glyph{p.xoff, p.yoff, p.xoff2, p.yoff2, p.x0 / float(width_),
+                               p.y0 / float(height_), p.x1 / float(width_),
+                               p.y1 / float(height_), p.xadvance}});
+    }
+  }
+  stbtt_PackEnd(&pack);
+  if (!ok) throw std::runtime_error("font atlas too small for " + ttf.string());
+  std::sort(glyphs_.begin(), glyphs_.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+const FontAtlas::Glyph* FontAtlas::find(char32_t c) const {
+  auto it = std::lower_bound(glyphs_.begin(), glyphs_.end(), c,
+                             [](const auto& g, char32_t v) { return g.first < v; });
+  if (it != glyphs_.end() && it->first == c) return &it->second;
+  return c == U'?' ? nullptr : find(U'?');
+}
+
+void FontAtlas::layout(std::string_view text, glm::vec2 top_left_px, float size_px,
+                       glm::vec4 color, std::vector<TextVertex>& out) const {
+  const float s = size_px / bake_px_;
+  glm::vec2 pen(top_left_px.x, top_left_px.y + ascent_px_ * s);
+  for (std::size_t i = 0; i < text.size();) {
+    const char32_t c = next_code_point(text, i);
+    if (c == U'\n') {
+      pen = {top_left_px.x, pen.y + line_px_ * s};
+      continue;
+    }
+    const Glyph* g = find(c);
+    if (g == nullptr) continue;
+    const glm::vec2 p0 = pen + glm::vec2(g->x0, g->y0) * s;
+    const glm::vec2 p1 = pen + glm::vec2(g->x1, g->y1) * s;
+    const TextVertex a{p0, {g->u0, g->v0}, color}, b{{p1.x, p0.y}, {g->u1, g->v0}, color},
+        d{{p0.x, p1.y}, {g->u0, g->v1}, color}, e{p1, {g->u1, g->v1}, color};
+    out.insert(out.end(), {a, b, e, a, e, d});
+    pen.x += g->advance * s;
+  }
+}
+
+glm::vec2 FontAtlas::measure(std::string_view text, float size_px) const {
+  const float s = size_px / bake_px_;
+  float line = 0, widest = 0;
+  int lines = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const char32_t c = next_code_point(text, i);
+    if (c == U'\n') {
+      widest = std::max(widest, line);
+      line = 0;
+      ++lines;
+    } else if (const Glyph* g = find(c)) {
+      line += g->advance * s;
+    }
+  }
+  return {std::max(widest, line), lines * line_px_ * s};
+}
+
+}  // namespace tumble::render

@@ -1,0 +1,55 @@
+// Encodes and writes PNG frames on worker threads while the caller renders
+// the next frame. The queue is bounded, so a slow disk applies back-pressure
+// instead of piling up frames in memory.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "render/image.hpp"
+
+namespace tumble::render {
+
+class FrameEncoder {
+ public:
+  /// `threads` workers (at least 1); `capacity` queued frames (at least 1).
+  explicit FrameEncoder(int threads = 2, std::size_t capacity = 4);
+  /// Drains the queue and joins; errors not yet reported are dropped (call
+  /// flush() first to see them).
+  ~FrameEncoder();
+  FrameEncoder(const FrameEncoder&) = delete;
+  FrameEncoder& operator=(const FrameEncoder&) = delete;
+
+  /// Queues a frame for write_png_atomic, blocking while the queue is full.
+  /// Rethrows the first error of an earlier frame, if any.
+  void submit(std::filesystem::path path, Image image);
+
+  /// Waits until every submitted frame is on disk; rethrows the first error.
+  void flush();
+
+  std::size_t frames_written() const;
+
+ private:
+  void worker();
+  void rethrow_locked(std::unique_lock<std::mutex>& lock);
+
+  using Job = std::pair<std::filesystem::path, Image>;
+  mutable std::mutex mutex_;
+  std::condition_variable work_ready_, space_or_idle_;
+  std::deque<Job> queue_;
+  std::size_t capacity_;
+  std::size_t in_flight_ = 0;
+  std::size_t written_ = 0;
+  bool stopping_ = false;
+  std::exception_ptr error_;
+  std::vector<std::thread> workers_;
+};
+
+}  // namespace tumble::render

@@ -1,0 +1,30 @@
+// The one translation unit holding stb_image's (PNG-only) implementation.
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_PNG
+#define STBI_NO_STDIO_HDR
+#define STB_IMAGE_IMPLEMENTATION
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+#include <memory>
+#include <stdexcept>
+
+#include "render/png_io.hpp"
+
+namespace tumble::render {
+
+Image read_png(const std::filesystem::path& path) {
+  int w = 0, h = 0, channels = 0;
+  const std::unique_ptr<stbi_uc, void (*)(void*)> data(
+      stbi_load(path.c_str(), &w, &h, &channels, 3), stbi_image_free);
+  if (!data) {
+    // stbi_failure_reason uses a global; the message is only a hint anyway.
+    throw std::runtime_error("cannot read PNG " + path.string());
+  }
+  const std::size_t n = static_cast<std::size_t>(w) * h * 3;
+  return Image{w, h, std::vector<std::uint8_t>(data.get(), data.get() + n)};
+}
+
+}  // namespace tumble::render

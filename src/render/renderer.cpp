@@ -1,0 +1,168 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::render {
+namespace {
+
+constexpr float kEdgeWidthPx = 1.5f;
+constexpr float kGridWidthPx = 1.0f;
+// Tint the top of each view towards a pale sky blue.
+constexpr glm::vec3 kSkyTint{0.74f, 0.83f, 0.95f};
+constexpr float kSkyAmount = 0.35f;
+
+}  // namespace
+
+Renderer::Renderer(GlContext& context, int width, int height, int msaa,
+                   const std::filesystem::path& resource_dir)
+    : context_((context.make_current(), context)),  // current before any GL call
+      gl_(context.gl()),
+      font_(find_font_file(resource_dir)),
+      target_(gl_, width, height, msaa),
+      mesh_program_(gl_, resource_dir / "shaders", "mesh"),
+      background_program_(gl_, resource_dir / "shaders", "background"),
+      cube_(gl_, unit_cube()),
+      cylinder_(gl_, unit_cylinder(20)),
+      cone_(gl_, unit_cone(24)),
+      sphere_(gl_, unit_sphere(16, 10)),
+      lines_(gl_, resource_dir / "shaders"),
+      text_(gl_, resource_dir / "shaders", font_),
+      empty_vao_(make_vertex_array(gl_)) {}
+
+// GL objects are freed by their members; they need our context current.
+Renderer::~Renderer() {
+  try {
+    context_.make_current();
+  } catch (...) {  // nothing sensible to do in a destructor
+  }
+}
+
+void Renderer::set_viewport(const PixelRect& rect) {
+  const int gl_y = target_.height() - (rect.y + rect.height);  // GL counts from the bottom
+  gl_.Viewport(rect.x, gl_y, rect.width, rect.height);
+  gl_.Scissor(rect.x, gl_y, rect.width, rect.height);
+}
+
+Image Renderer::render(const viz::DrawList& frame) {
+  context_.make_current();
+  target_.bind_for_drawing();
+  gl_.Disable(GL_SCISSOR_TEST);
+  const glm::vec3 background(frame.background);
+  // Gaps between views (the 1 px separators) show this slightly darker tone.
+  const glm::vec3 separator = background * 0.82f;
+  gl_.ClearColor(separator.r, separator.g, separator.b, 1.0f);
+  gl_.DepthMask(GL_TRUE);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  gl_.Enable(GL_SCISSOR_TEST);
+  gl_.Enable(GL_BLEND);
+  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  const int count = static_cast<int>(frame.views.size());
+  for (int i = 0; i < count; ++i) {
+    const PixelRect rect = view_rect(i, count, frame.columns, target_.width(), target_.height());
+    if (rect.width > 0 && rect.height > 0) draw_view(frame.views[i], rect, background);
+  }
+  if (count == 0) {
+    const PixelRect full{0, 0, target_.width(), target_.height()};
+    set_viewport(full);
+    draw_background(background);
+  }
+
+  const PixelRect full{0, 0, target_.width(), target_.height()};
+  set_viewport(full);
+  draw_text(frame.texts, {}, full);
+  gl_.Disable(GL_SCISSOR_TEST);
+  return target_.read_rgb();
+}
+
+void Renderer::draw_background(const glm::vec3& background) {
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.DepthMask(GL_TRUE);
+  gl_.Clear(GL_DEPTH_BUFFER_BIT);  // scissored to this view
+  background_program_.use();
+  background_program_.set("u_bottom", background);
+  background_program_.set("u_top", glm::mix(background, kSkyTint * std::max(background.r, 0.5f),
+                                             kSkyAmount));
+  gl_.BindVertexArray(empty_vao_.id());
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void Renderer::draw_view(const viz::View& view, const PixelRect& rect,
+                         const glm::vec3& background) {
+  set_viewport(rect);
+  draw_background(background);
+
+  const CameraMatrices cam = camera_matrices(view.camera, rect.aspect());
+  const glm::mat4 view_proj = cam.proj * cam.view;
+  const ViewBatches batches = build_view_batches(view);
+
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LEQUAL);
+  // The grid is a faint backdrop: depth-tested, but it must not hide what
+  // lies just below the plane through its own translucency.
+  gl_.DepthMask(GL_FALSE);
+  lines_.draw(batches.grid, view_proj, kGridWidthPx);
+  gl_.DepthMask(GL_TRUE);
+
+  draw_meshes(batches, cam);
+
+  gl_.DepthMask(GL_FALSE);  // trails and edges are translucent overlays
+  for (const Polyline& p : batches.polylines) {
+    lines_.draw(p.strip, view_proj, p.width_px, GL_LINE_STRIP);
+  }
+  lines_.draw(batches.box_edges, view_proj, kEdgeWidthPx);
+  gl_.DepthMask(GL_TRUE);
+
+  gl_.Disable(GL_DEPTH_TEST);
+  draw_text(view.texts, view.label, rect);
+}
+
+void Renderer::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam) {
+  mesh_program_.use();
+  mesh_program_.set("u_view", cam.view);
+  mesh_program_.set("u_proj", cam.proj);
+  // Key light from the camera's upper left, so shapes read the same in every view.
+  mesh_program_.set("u_light_dir", glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f)));
+
+  // Opaque pass.
+  mesh_program_.set("u_specular", 0.28f);
+  cylinder_.upload(batches.arrow_shafts);
+  cylinder_.draw();
+  cone_.upload(batches.arrow_heads);
+  cone_.draw();
+  sphere_.upload(batches.spheres);
+  sphere_.draw();
+
+  // Translucent boxes: no depth writes; inner (back) faces first, then the
+  // outer faces, which is exact for one convex box and close enough for few.
+  if (batches.boxes.empty()) return;
+  mesh_program_.set("u_specular", 0.18f);
+  gl_.DepthMask(GL_FALSE);
+  gl_.Enable(GL_CULL_FACE);
+  cube_.upload(batches.boxes);
+  gl_.CullFace(GL_FRONT);
+  cube_.draw();
+  gl_.CullFace(GL_BACK);
+  cube_.draw();
+  gl_.Disable(GL_CULL_FACE);
+  gl_.DepthMask(GL_TRUE);
+}
+
+void Renderer::draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
+                         const PixelRect& rect) {
+  std::vector<TextVertex> quads;
+  if (!label.empty()) {
+    const float size = std::clamp(rect.height * 0.055f, 11.0f, 26.0f);
+    const float pad = std::round(size * 0.6f);
+    font_.layout(label, {pad, pad * 0.6f}, size, {0.13f, 0.14f, 0.18f, 0.95f}, quads);
+  }
+  for (const viz::TextItem& t : items) {
+    font_.layout(t.text, t.position_px, t.size_px, t.color, quads);
+  }
+  if (quads.empty()) return;
+  gl_.Disable(GL_DEPTH_TEST);
+  text_.draw(quads, {float(rect.width), float(rect.height)});
+}
+
+}  // namespace tumble::render

@@ -1,0 +1,48 @@
+#include "render/resource_dir.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace tumble::render {
+namespace fs = std::filesystem;
+
+std::filesystem::path find_resource_dir() {
+  std::string tried;
+  auto has_shaders = [&](const fs::path& dir) {
+    tried += "\n  " + dir.string();
+    std::error_code ec;
+    return fs::is_directory(dir / "shaders", ec);
+  };
+
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    // Build trees look like <source>/build-xxx/src/app/tumble, so walking up
+    // from the executable reaches the source tree's shaders/.
+    for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
+      if (has_shaders(dir)) return dir;
+      if (dir == dir.root_path()) break;
+    }
+  }
+#ifdef TUMBLE_SOURCE_DIR
+  if (has_shaders(TUMBLE_SOURCE_DIR)) return fs::path(TUMBLE_SOURCE_DIR);
+#endif
+  throw std::runtime_error("cannot find the tumble resource directory (a folder holding "
+                           "shaders/); looked in:" + tried);
+}
+
+std::filesystem::path find_font_file(const std::filesystem::path& resource_dir) {
+  const fs::path candidates[] = {resource_dir / "fonts" / "DejaVuSans.ttf",
+                                 "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"};
+  for (const fs::path& p : candidates) {
+    std::error_code ec;
+    if (fs::is_regular_file(p, ec)) return p;
+  }
+  throw std::runtime_error("font DejaVuSans.ttf not found in " +
+                           (resource_dir / "fonts").string() +
+                           " nor /usr/share/fonts/truetype/dejavu (Debian package "
+                           "fonts-dejavu-core)");
+}
+
+}  // namespace tumble::render

@@ -1,0 +1,59 @@
+// Where each view of a DrawList lands in the frame, and its camera matrices.
+// Header-only and GL-free so tests can project points exactly as the
+// renderer does.
+#pragma once
+
+#include <algorithm>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::render {
+
+/// A viewport in pixels with a top-left origin (image convention).
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+  float aspect() const { return height > 0 ? float(width) / float(height) : 1.0f; }
+};
+
+/// Cell `index` of `count` views on a grid of `columns` (row-major) covering
+/// a frame_w x frame_h frame. Cells tile the frame exactly; cells not in the
+/// first row/column give up a 1 px top/left strip as a visible separator.
+inline PixelRect view_rect(int index, int count, int columns, int frame_w, int frame_h) {
+  const int cols = std::max(1, std::min(columns, std::max(count, 1)));
+  const int rows = std::max(1, (count + cols - 1) / cols);
+  const int c = index % cols, r = index / cols;
+  const int x0 = c * frame_w / cols, x1 = (c + 1) * frame_w / cols;
+  const int y0 = r * frame_h / rows, y1 = (r + 1) * frame_h / rows;
+  const int gap_x = c > 0 ? 1 : 0, gap_y = r > 0 ? 1 : 0;
+  return {x0 + gap_x, y0 + gap_y, x1 - x0 - gap_x, y1 - y0 - gap_y};
+}
+
+struct CameraMatrices {
+  glm::mat4 view;
+  glm::mat4 proj;
+};
+
+inline CameraMatrices camera_matrices(const viz::Camera& cam, float aspect) {
+  const glm::mat4 view = glm::lookAt(glm::vec3(cam.position), glm::vec3(cam.target),
+                                     glm::vec3(cam.up));
+  const glm::mat4 proj =
+      glm::perspective(glm::radians(float(cam.fov_y_deg)), aspect, float(cam.near_m),
+                       float(cam.far_m));
+  return {view, proj};
+}
+
+/// Projects a world point to pixel coordinates (top-left origin, x right,
+/// y down) inside the frame, for the view occupying `rect`.
+inline glm::vec2 project_to_pixel(const viz::Camera& cam, const PixelRect& rect,
+                                  const glm::dvec3& world) {
+  const CameraMatrices m = camera_matrices(cam, rect.aspect());
+  const glm::vec4 clip = m.proj * m.view * glm::vec4(glm::vec3(world), 1.0f);
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  return {float(rect.x) + (ndc.x * 0.5f + 0.5f) * float(rect.width),
+          float(rect.y) + (0.5f - ndc.y * 0.5f) * float(rect.height)};
+}
+
+}  // namespace tumble::render

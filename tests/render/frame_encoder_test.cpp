@@ -1,0 +1,65 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "render/frame_encoder.hpp"
+#include "render/png_io.hpp"
+
+namespace tumble::render {
+namespace {
+namespace fs = std::filesystem;
+
+Image solid(int w, int h, std::uint8_t v) {
+  return Image{w, h, std::vector<std::uint8_t>(std::size_t(w) * h * 3, v)};
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("tumble_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(FrameEncoder, WritesEveryFrameInOrderOfContent) {
+  const fs::path dir = fresh_dir("encoder_ok");
+  {
+    FrameEncoder enc(2, 2);
+    for (int i = 0; i < 12; ++i) {
+      enc.submit(dir / ("f" + std::to_string(i) + ".png"), solid(32, 16, std::uint8_t(i * 10)));
+    }
+    enc.flush();
+    EXPECT_EQ(enc.frames_written(), 12u);
+  }
+  for (int i = 0; i < 12; ++i) {
+    const Image img = read_png(dir / ("f" + std::to_string(i) + ".png"));
+    ASSERT_EQ(img.width, 32);
+    EXPECT_EQ(img.rgb[0], i * 10);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(FrameEncoder, PropagatesWriteErrors) {
+  const fs::path dir = fresh_dir("encoder_fail");
+  FrameEncoder enc(2, 2);
+  enc.submit(dir / "nope" / "f.png", solid(8, 8, 1));
+  EXPECT_THROW(enc.flush(), std::runtime_error);
+  // The error is reported once; the encoder keeps working afterwards.
+  enc.submit(dir / "ok.png", solid(8, 8, 1));
+  EXPECT_NO_THROW(enc.flush());
+  EXPECT_TRUE(fs::exists(dir / "ok.png"));
+  fs::remove_all(dir);
+}
+
+TEST(FrameEncoder, DestructorDrainsQueue) {
+  const fs::path dir = fresh_dir("encoder_drain");
+  {
+    FrameEncoder enc(1, 8);
+    for (int i = 0; i < 5; ++i) enc.submit(dir / (std::to_string(i) + ".png"), solid(64, 64, 7));
+  }
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(fs::exists(dir / (std::to_string(i) + ".png")));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tumble::render

@@ -1,0 +1,87 @@
+// GL-free parts of the renderer: layout, camera projection, batching.
+#include <gtest/gtest.h>
+
+#include "render/view_batches.hpp"
+#include "render/view_layout.hpp"
+
+namespace tumble::render {
+namespace {
+
+TEST(ViewLayout, CellsTileTheFrameWithSeparators) {
+  // 5 views on 3 columns -> 2 rows.
+  const PixelRect a = view_rect(0, 5, 3, 300, 200);
+  const PixelRect b = view_rect(1, 5, 3, 300, 200);
+  const PixelRect d = view_rect(3, 5, 3, 300, 200);
+  EXPECT_EQ(a.x, 0);
+  EXPECT_EQ(a.width, 100);
+  EXPECT_EQ(a.height, 100);
+  EXPECT_EQ(b.x, 101);  // 1 px separator
+  EXPECT_EQ(b.width, 99);
+  EXPECT_EQ(d.y, 101);
+  EXPECT_EQ(d.x, 0);
+}
+
+TEST(ViewLayout, SingleViewIsWholeFrame) {
+  const PixelRect r = view_rect(0, 1, 1, 160, 120);
+  EXPECT_EQ(r.x, 0);
+  EXPECT_EQ(r.y, 0);
+  EXPECT_EQ(r.width, 160);
+  EXPECT_EQ(r.height, 120);
+}
+
+TEST(ViewLayout, CameraTargetProjectsToViewCentre) {
+  viz::Camera cam;
+  const PixelRect r{10, 20, 200, 100};
+  const glm::vec2 p = project_to_pixel(cam, r, cam.target);
+  EXPECT_NEAR(p.x, 110.0f, 1e-3);
+  EXPECT_NEAR(p.y, 70.0f, 1e-3);
+  // +z (camera up) appears above the centre, i.e. smaller y.
+  EXPECT_LT(project_to_pixel(cam, r, cam.target + glm::dvec3(0, 0, 0.5)).y, p.y);
+}
+
+TEST(ViewBatches, ArrowSplitsIntoShaftAndHead) {
+  viz::View v;
+  v.arrows.push_back({{1, 2, 3}, {0, 0, 2}, 0.05, {1, 0, 0, 1}});
+  v.arrows.push_back({{0, 0, 0}, {0, 0, 0}, 0.05, {1, 0, 0, 1}});  // degenerate: skipped
+  const ViewBatches b = build_view_batches(v);
+  ASSERT_EQ(b.arrow_shafts.size(), 1u);
+  ASSERT_EQ(b.arrow_heads.size(), 1u);
+  // Shaft starts at the origin, head tip reaches origin + vector.
+  const glm::vec4 shaft_base = b.arrow_shafts[0].model * glm::vec4(0, 0, 0, 1);
+  const glm::vec4 tip = b.arrow_heads[0].model * glm::vec4(0, 0, 1, 1);
+  EXPECT_NEAR(shaft_base.z, 3.0f, 1e-6);
+  EXPECT_NEAR(tip.x, 1.0f, 1e-6);
+  EXPECT_NEAR(tip.z, 5.0f, 1e-6);
+}
+
+TEST(ViewBatches, BoxesSortedFarToNearWithTwelveEdges) {
+  viz::View v;
+  v.camera.position = {0, -10, 0};
+  const glm::dmat3 eye3(1.0);
+  v.boxes.push_back({{0, -5, 0}, eye3, {1, 1, 1}, {1, 0, 0, 0.3f}, {0, 0, 0, 1}});  // near
+  v.boxes.push_back({{0, 5, 0}, eye3, {1, 2, 3}, {0, 1, 0, 0.3f}, {0, 0, 0, 1}});   // far
+  const ViewBatches b = build_view_batches(v);
+  ASSERT_EQ(b.boxes.size(), 2u);
+  EXPECT_FLOAT_EQ(b.boxes[0].color.g, 1.0f);  // far one first
+  EXPECT_EQ(b.box_edges.size(), 2u * 12u * 2u);
+  // The far box's unit-cube corner (1,1,1) maps to centre + half extents.
+  const glm::vec4 c = b.boxes[0].model * glm::vec4(1, 1, 1, 1);
+  EXPECT_NEAR(c.x, 1.0f, 1e-6);
+  EXPECT_NEAR(c.y, 7.0f, 1e-6);
+  EXPECT_NEAR(c.z, 3.0f, 1e-6);
+}
+
+TEST(ViewBatches, PolylineFadesOldestToNewest) {
+  viz::View v;
+  v.polylines.push_back({{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {0, 0, 1, 0.8f}, 2.0f});
+  const ViewBatches b = build_view_batches(v);
+  ASSERT_EQ(b.polylines.size(), 1u);
+  const auto& s = b.polylines[0].strip;
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_LT(s[0].color.a, s[1].color.a);
+  EXPECT_LT(s[1].color.a, s[2].color.a);
+  EXPECT_FLOAT_EQ(s[2].color.a, 0.8f);
+}
+
+}  // namespace
+}  // namespace tumble::render
