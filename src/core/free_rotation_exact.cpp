@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 
@@ -15,22 +15,32 @@ namespace tumble {
 namespace {
 
 constexpr double kSymmetricTol = 1e-13;  // relative moment difference treated as equal
-constexpr double kPi = 3.14159265358979323846;
 
-// Incomplete F(φ, k) for any φ in (-π, π], by symmetry from [0, π/2].
-double ellint_f_any(double k, double phi, double K) {
-  const double a = std::abs(phi);
-  const double f = a <= 0.5 * kPi ? boost::math::ellint_1(k, a) : 2 * K - boost::math::ellint_1(k, kPi - a);
-  return std::copysign(f, phi);
+// k'² = 1 - k² for the modulus k as stored, formed as (1 - k)(1 + k) so it keeps
+// full relative precision as k → 1 (near the separatrix), where 1 - k² sin²φ
+// would cancel. Boost's jacobi_elliptic forms k' the same way, so K, F, G and
+// sn/cn/dn all refer to one modulus.
+double complementary(double k) { return (1 - k) * (1 + k); }
+
+// F(φ, k) = s R_F(c², c² + k'² s², 1) for s = sin φ, c = cos φ ≥ 0 (DLMF 19.25.5),
+// with 1 - k² s² written as c² + k'² s² (no cancellation).
+double ellint_f_sc(double kc2, double s, double c) {
+  return s * boost::math::ellint_rf(c * c, c * c + kc2 * s * s, 1.0);
 }
 
-// ∫₀^φ sin²θ / ((1 + ν sin²θ) √(1 - k² sin²θ)) dθ for |φ| ≤ π/2: (Π(-ν; φ) - F(φ))/(-ν)
-// written with Carlson's R_J (DLMF 19.25.14) so there is no cancellation at small ν.
-double g_reduced(double k, double nu, double phi) {
-  const double s = std::sin(phi), c = std::cos(phi);
+// Incomplete F(φ, k) for any φ in (-π, π] given (sin φ, cos φ), by symmetry from [0, π/2].
+double ellint_f_any(double kc2, double s, double c, double K) {
+  if (c >= 0) return ellint_f_sc(kc2, s, c);
+  return std::copysign(2 * K - ellint_f_sc(kc2, std::abs(s), -c), s);
+}
+
+// ∫₀^φ sin²θ / ((1 + ν sin²θ) √(1 - k² sin²θ)) dθ for |φ| ≤ π/2 (s = sin φ, c = cos φ ≥ 0):
+// (Π(-ν; φ) - F(φ))/(-ν) written with Carlson's R_J (DLMF 19.25.14) so there is no
+// cancellation at small ν, and with 1 - k² s² = c² + k'² s² so there is none as k → 1.
+double g_reduced(double kc2, double nu, double s, double c) {
   if (s == 0) return 0;
   const double s2 = s * s;
-  return s * s2 / 3.0 * boost::math::ellint_rj(c * c, 1 - k * k * s2, 1.0, 1 + nu * s2);
+  return s * s2 / 3.0 * boost::math::ellint_rj(c * c, c * c + kc2 * s2, 1.0, 1 + nu * s2);
 }
 
 }  // namespace
@@ -82,7 +92,8 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   k2 = std::clamp(k2, 0.0, 1.0);
   k_ = std::sqrt(k2);
   periodic_ = k2 < 1.0;
-  K_ = periodic_ ? boost::math::ellint_1(k_) : std::numeric_limits<double>::infinity();
+  const double kc2 = complementary(k_);
+  K_ = periodic_ ? boost::math::ellint_rf(0.0, kc2, 1.0) : std::numeric_limits<double>::infinity();
   mu_ = (J2_ - J1_) / (J3_ - J2_);
   nu_ = mu_ * J3_ / J1_;
   // Signs: Π'3 never changes sign (dn > 0); Euler's equations then fix s2.
@@ -90,9 +101,11 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   s3_ = p[2] < 0 ? -1.0 : 1.0;
   s2_ = sigma * s3_;
   // Phase: am(τ0) = atan2(sn, cn) with the amplitude divided out.
-  const double am0 = std::atan2(p[1] / (J2_ * s2_ * rho_), p[0] / J1_);
-  tau0_ = periodic_ ? ellint_f_any(k_, am0, K_) : std::atanh(std::sin(am0));
-  G_K_ = periodic_ ? g_reduced(k_, nu_, 0.5 * kPi) : 0;
+  // Phase: (sn τ0, cn τ0) with the amplitudes divided out; τ0 = F(am τ0).
+  const double sn_a = p[1] / (J2_ * s2_ * rho_), cn_a = p[0] / J1_, r0 = std::hypot(sn_a, cn_a);
+  const double sn0 = r0 > 0 ? sn_a / r0 : 0.0, cn0 = r0 > 0 ? cn_a / r0 : 1.0;
+  tau0_ = periodic_ ? ellint_f_any(kc2, sn0, cn0, K_) : std::atanh(sn0);
+  G_K_ = periodic_ ? g_reduced(kc2, nu_, 1.0, 0.0) : 0;
   const Phase ph0 = phase(tau0_);
   G_tau0_ = ph0.g;
   // world ← L-frame at φ = 0: R0 = R_frame · B(τ0)·P.
@@ -106,7 +119,7 @@ FreeRotationExact::Phase FreeRotationExact::phase(double tau) const {
   if (!periodic_) {
     ph.sn = std::tanh(tau);
     ph.cn = ph.dn = 1.0 / std::cosh(tau);
-    ph.g = g_reduced(k_, nu_, std::atan(std::sinh(tau)));
+    ph.g = g_reduced(0.0, nu_, ph.sn, ph.cn);
     return ph;
   }
   const double m4 = std::round(tau / (4 * K_));
@@ -119,7 +132,7 @@ FreeRotationExact::Phase FreeRotationExact::phase(double tau) const {
     sn2 = -sn2;
     cn2 = -cn2;
   }
-  ph.g = 2 * m2 * G_K_ + g_reduced(k_, nu_, std::atan2(sn2, cn2));
+  ph.g = 2 * m2 * G_K_ + g_reduced(complementary(k_), nu_, sn2, cn2);
   return ph;
 }
 
