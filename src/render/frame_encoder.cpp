@@ -7,7 +7,8 @@
 namespace tumble::render {
 
 FrameEncoder::FrameEncoder(int threads, std::size_t capacity)
-    : capacity_(std::max<std::size_t>(capacity, 1)) {
+    : capacity_(std::max<std::size_t>(capacity, 1)),
+      max_spare_(capacity_ + static_cast<std::size_t>(std::max(threads, 1))) {
   const int n = std::max(threads, 1);
   workers_.reserve(n);
   for (int i = 0; i < n; ++i) workers_.emplace_back([this] { worker(); });
@@ -52,6 +53,14 @@ std::size_t FrameEncoder::frames_written() const {
   return written_;
 }
 
+Image FrameEncoder::recycle() {
+  const std::lock_guard lock(mutex_);
+  if (spare_.empty()) return {};
+  Image img = std::move(spare_.back());
+  spare_.pop_back();
+  return img;
+}
+
 void FrameEncoder::worker() {
   std::unique_lock lock(mutex_);
   for (;;) {
@@ -77,6 +86,8 @@ void FrameEncoder::worker() {
     } else {
       ++written_;
     }
+    // Bounded: at most one spare per frame that can be in the pipeline.
+    if (spare_.size() < max_spare_) spare_.push_back(std::move(job.second));
     space_or_idle_.notify_all();
   }
 }

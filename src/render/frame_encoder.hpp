@@ -36,6 +36,11 @@ class FrameEncoder {
 
   std::size_t frames_written() const;
 
+  /// The pixel storage of an already written frame (or an empty Image), to
+  /// render the next frame into: fresh multi-MB buffers are page-faulted in
+  /// on every frame otherwise, which costs as much as the PNG encode.
+  Image recycle();
+
  private:
   void worker();
   void rethrow_locked(std::unique_lock<std::mutex>& lock);
@@ -44,7 +49,9 @@ class FrameEncoder {
   mutable std::mutex mutex_;
   std::condition_variable work_ready_, space_or_idle_;
   std::deque<Job> queue_;
+  std::vector<Image> spare_;  // written frames, kept for recycle()
   std::size_t capacity_;
+  std::size_t max_spare_;  // fixed before the workers start (they read it)
   std::size_t in_flight_ = 0;
   std::size_t written_ = 0;
   bool stopping_ = false;

@@ -1,7 +1,6 @@
 #include "render/offscreen_target.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -65,7 +64,7 @@ void OffscreenTarget::bind_for_drawing() const {
   gl_.Viewport(0, 0, width_, height_);
 }
 
-Image OffscreenTarget::read_rgb() const {
+void OffscreenTarget::read_rgb(Image& img) {
   if (samples_ > 0) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.id());
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.id());
@@ -74,21 +73,30 @@ Image OffscreenTarget::read_rgb() const {
   }
   gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_.id());
   gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
-  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
 
-  const std::size_t row = static_cast<std::size_t>(width_) * 3;
-  std::vector<std::uint8_t> bottom_up(row * height_);
-  gl_.ReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
+  // RGBA matches the renderbuffer, so Mesa copies rows straight out; asking
+  // for GL_RGB takes its generic per-pixel conversion path (~10x slower).
+  const std::size_t w = static_cast<std::size_t>(width_);
+  rgba_.resize(w * 4 * height_);
+  gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba_.data());
   if (const GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
     throw std::runtime_error("glReadPixels failed, GL error " + std::to_string(err));
   }
 
   // GL's origin is the bottom-left corner; images are stored top-down.
-  Image img{width_, height_, std::vector<std::uint8_t>(row * height_)};
+  img.width = width_;
+  img.height = height_;
+  img.rgb.resize(w * 3 * height_);
   for (int y = 0; y < height_; ++y) {
-    std::memcpy(img.rgb.data() + row * y, bottom_up.data() + row * (height_ - 1 - y), row);
+    const std::uint8_t* src = rgba_.data() + w * 4 * (height_ - 1 - y);
+    std::uint8_t* dst = img.rgb.data() + w * 3 * y;
+    for (std::size_t x = 0; x < w; ++x, src += 4, dst += 3) {
+      dst[0] = src[0];
+      dst[1] = src[1];
+      dst[2] = src[2];
+    }
   }
-  return img;
 }
 
 }  // namespace tumble::render

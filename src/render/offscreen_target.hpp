@@ -2,6 +2,9 @@
 // (glBlitFramebuffer) into a single-sample FBO we read back.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "render/gl_object.hpp"
 #include "render/image.hpp"
 
@@ -15,8 +18,9 @@ class OffscreenTarget {
 
   /// Binds the framebuffer the scene should be drawn into.
   void bind_for_drawing() const;
-  /// Resolves MSAA (if any) and reads back a top-down RGB image.
-  Image read_rgb() const;
+  /// Resolves MSAA (if any) and reads back a top-down RGB image into `out`,
+  /// reusing its storage (fresh multi-MB buffers cost page faults per frame).
+  void read_rgb(Image& out);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -27,6 +31,7 @@ class OffscreenTarget {
   int width_, height_, samples_;
   GlObject ms_fbo_, ms_color_, ms_depth_;        // multisampled (samples_ > 0)
   GlObject resolve_fbo_, resolve_color_, resolve_depth_;  // single-sample
+  std::vector<std::uint8_t> rgba_;  // readback staging, reused across frames
 };
 
 }  // namespace tumble::render

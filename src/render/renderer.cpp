@@ -45,6 +45,12 @@ void Renderer::set_viewport(const PixelRect& rect) {
 }
 
 Image Renderer::render(const viz::DrawList& frame) {
+  Image img;
+  render(frame, img);
+  return img;
+}
+
+void Renderer::render(const viz::DrawList& frame, Image& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
@@ -73,7 +79,7 @@ Image Renderer::render(const viz::DrawList& frame) {
   set_viewport(full);
   draw_text(frame.texts, {}, full);
   gl_.Disable(GL_SCISSOR_TEST);
-  return target_.read_rgb();
+  target_.read_rgb(out);
 }
 
 void Renderer::draw_background(const glm::vec3& background) {

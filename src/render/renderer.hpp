@@ -31,6 +31,8 @@ class Renderer {
 
   /// Renders all views (grid of `columns`, row-major) plus overlays.
   Image render(const viz::DrawList& frame);
+  /// Same, into `out`, reusing its pixel storage (cheaper in a frame loop).
+  void render(const viz::DrawList& frame, Image& out);
 
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }

@@ -51,6 +51,18 @@ TEST(FrameEncoder, PropagatesWriteErrors) {
   fs::remove_all(dir);
 }
 
+TEST(FrameEncoder, RecyclesWrittenFrameStorage) {
+  const fs::path dir = fresh_dir("encoder_recycle");
+  FrameEncoder enc(1, 2);
+  EXPECT_TRUE(enc.recycle().rgb.empty());  // nothing written yet
+  enc.submit(dir / "a.png", solid(16, 16, 3));
+  enc.flush();
+  const Image spare = enc.recycle();
+  EXPECT_GE(spare.rgb.capacity(), 16u * 16u * 3u);
+  EXPECT_TRUE(enc.recycle().rgb.empty());  // handed out only once
+  fs::remove_all(dir);
+}
+
 TEST(FrameEncoder, DestructorDrainsQueue) {
   const fs::path dir = fresh_dir("encoder_drain");
   {
