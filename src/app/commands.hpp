@@ -1,0 +1,31 @@
+// The subcommands of `tumble`. Each registers its options on the CLI11 app and,
+// when chosen, sets `action` to the work to run after parsing.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+#include "scene/scene.hpp"
+
+namespace tumble::app {
+
+/// Exit codes (documented in scenes/README.md and the README).
+enum ExitCode : int { kOk = 0, kRuntimeError = 1, kInputError = 2, kDiverged = 3 };
+
+using Action = std::function<int()>;
+
+void add_simulate_command(CLI::App& app, Action& action);
+void add_info_command(CLI::App& app, Action& action);
+
+/// Runs `action`, mapping exceptions to messages on stderr and exit codes.
+int run_action(const Action& action);
+
+/// load_scene plus its warnings printed to stderr.
+scene::Scene load_scene_verbose(const std::filesystem::path& path);
+
+/// printf("%.17g"): round-trips every double.
+std::string format_double(double v);
+
+}  // namespace tumble::app

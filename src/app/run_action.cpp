@@ -1,0 +1,40 @@
+#include <cstdio>
+#include <iostream>
+
+#include "app/atomic_file.hpp"
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+namespace tumble::app {
+
+int run_action(const Action& action) {
+  try {
+    return action();
+  } catch (const InputError& e) {  // scene and option errors, including SceneError
+    std::cerr << e.what() << "\n";
+    return kInputError;
+  } catch (const Diverged& e) {
+    std::cerr << "tumble: " << e.what() << "\n";
+    return kDiverged;
+  } catch (const IoError& e) {
+    std::cerr << "tumble: " << e.what() << "\n";
+    return kRuntimeError;
+  } catch (const std::exception& e) {
+    std::cerr << "tumble: internal error: " << e.what() << "\n";
+    return kRuntimeError;
+  }
+}
+
+scene::Scene load_scene_verbose(const std::filesystem::path& path) {
+  scene::Scene s = scene::load_scene(path);
+  for (const std::string& w : s.warnings) std::cerr << w << "\n";
+  return s;
+}
+
+std::string format_double(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,162 @@
+// [[bodies]]: particle sources, initial conditions, per-body forces, colour.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "scene/internal.hpp"
+
+namespace tumble::scene::detail {
+
+namespace {
+
+// Default body colours (linear RGB), cycled by body index.
+constexpr std::array<std::array<double, 3>, 6> kPalette = {{
+    {0.25, 0.45, 0.80}, {0.85, 0.45, 0.15}, {0.30, 0.65, 0.35},
+    {0.60, 0.35, 0.70}, {0.80, 0.70, 0.20}, {0.40, 0.40, 0.45}}};
+
+bool valid_name(const std::string& n) {
+  if (n.empty() || n.size() > 64) return false;
+  return std::all_of(n.begin(), n.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+           c == '.';
+  });
+}
+
+std::optional<Eigen::Quaterniond> read_orientation(TableReader& r) {
+  const toml::node* n = r.node("orientation");
+  if (!n) return Eigen::Quaterniond::Identity();
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 4) {
+    r.error("orientation", "expected a quaternion [w, x, y, z], found " + describe(*n));
+    return std::nullopt;
+  }
+  double c[4];
+  for (std::size_t k = 0; k < 4; ++k) {
+    auto v = read_number(*a->get(k), r.key_path("orientation") + "[" + std::to_string(k) + "]", Range::any(),
+                         r.diag());
+    if (!v) return std::nullopt;
+    c[k] = *v;
+  }
+  Eigen::Quaterniond q(c[0], c[1], c[2], c[3]);
+  const double norm = q.norm();
+  if (!(norm > 1e-12)) {
+    r.error("orientation", "expected a non-zero quaternion [w, x, y, z], found [0, 0, 0, 0]");
+    return std::nullopt;
+  }
+  if (std::abs(norm - 1) > 1e-9) {
+    r.diag().warning(n->source(), r.key_path("orientation"),
+                     "quaternion has norm " + std::to_string(norm) + "; normalised to unit length");
+  }
+  return q.normalized();
+}
+
+void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
+  f.has_gravity = scene.has_gravity;
+  f.gravity = scene.gravity;
+  f.torque_world = r.vec3("torque_world").value_or(Eigen::Vector3d::Zero());
+  f.torque_body = r.vec3("torque_body").value_or(Eigen::Vector3d::Zero());
+  f.linear_damping = r.number("linear_damping", Range::non_negative()).value_or(0.0);
+  f.angular_damping = r.number("angular_damping", Range::non_negative()).value_or(0.0);
+  const auto list = r.tables("forces");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    TableReader fr(*list[i], r.key_path("forces") + "[" + std::to_string(i) + "]", r.diag(),
+                   {"type", "force", "point", "frame"});
+    const std::string type = fr.string("type").value_or("point");
+    if (type != "point") {
+      fr.error("type", "expected \"point\" (torques and damping are body keys), found \"" + type + "\"");
+      continue;
+    }
+    PointForce pf;
+    if (!fr.has("force")) fr.error("force", "missing; a point force needs force = [fx, fy, fz] (N)");
+    pf.force = fr.vec3("force").value_or(Eigen::Vector3d::Zero());
+    pf.point = fr.vec3("point").value_or(Eigen::Vector3d::Zero());
+    const std::string frame = fr.string("frame").value_or("world");
+    if (frame == "world") pf.frame = Frame::world;
+    else if (frame == "body") pf.frame = Frame::body;
+    else fr.error("frame", "expected \"world\" or \"body\", found \"" + frame + "\"");
+    f.point_forces.push_back(pf);
+  }
+}
+
+void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene& scene) {
+  const std::size_t errors_before = ctx.diag.error_count();
+  TableReader r(t, "bodies[" + std::to_string(index) + "]", ctx.diag,
+                {"name", "particles", "shape", "cloud", "parts", "position", "orientation", "velocity",
+                 "omega_body", "omega_world", "forces", "torque_world", "torque_body", "linear_damping",
+                 "angular_damping", "color"});
+  Body b;
+  b.name = r.string("name").value_or("body" + std::to_string(index));
+  if (!valid_name(b.name)) {
+    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-], found \"" + b.name + "\"");
+  } else if (std::find(ctx.body_names.begin(), ctx.body_names.end(), b.name) != ctx.body_names.end()) {
+    r.error("name", "duplicate body name \"" + b.name + "\"; names must be unique");
+  }
+  ctx.body_names.push_back(b.name);
+
+  int sources = read_cloud_sources(r, ctx, Eigen::Vector3d::Zero(), b.cloud);
+  const auto parts = r.tables("parts");
+  for (std::size_t j = 0; j < parts.size(); ++j) {
+    TableReader pr(*parts[j], r.key_path("parts") + "[" + std::to_string(j) + "]", ctx.diag,
+                   {"particles", "shape", "cloud", "offset"});
+    const Eigen::Vector3d offset = pr.vec3("offset").value_or(Eigen::Vector3d::Zero());
+    if (read_cloud_sources(pr, ctx, offset, b.cloud) == 0)
+      ctx.diag.error(parts[j]->source(), pr.path(), "a part needs particles, shape or cloud");
+    ++sources;
+  }
+  if (sources == 0)
+    ctx.diag.error(t.source(), r.path(),
+                   "body \"" + b.name + "\" has no particles; give particles, shape, cloud or [[bodies.parts]]");
+
+  InitialConditions& ic = b.initial_conditions;
+  ic.position = r.vec3("position").value_or(Eigen::Vector3d::Zero());
+  ic.orientation = read_orientation(r).value_or(Eigen::Quaterniond::Identity());
+  ic.velocity = r.vec3("velocity").value_or(Eigen::Vector3d::Zero());
+  if (r.has("omega_body") && r.has("omega_world")) {
+    r.error("omega_world", "give omega_body or omega_world, not both");
+  } else if (r.has("omega_world")) {
+    ic.omega = r.vec3("omega_world").value_or(Eigen::Vector3d::Zero());
+    ic.omega_frame = Frame::world;
+  } else {
+    ic.omega = r.vec3("omega_body").value_or(Eigen::Vector3d::Zero());
+    ic.omega_frame = Frame::body;
+  }
+  ForceSet forces;
+  read_forces(r, scene, forces);
+  const auto& pal = kPalette[index % kPalette.size()];
+  b.color = r.vec3("color", Range::closed(0, 1)).value_or(Eigen::Vector3d(pal[0], pal[1], pal[2]));
+
+  if (ctx.diag.error_count() != errors_before) return;  // the body is broken; keep collecting others
+  try {
+    b.mass_properties = compute_mass_properties(b.cloud, b.name);
+  } catch (const InputError& e) {  // DegenerateBody: its message names the body and the fix
+    ctx.diag.error(t.source(), r.path(), e.what());
+    return;
+  }
+  b.model = make_model(b.name, b.mass_properties, forces);
+  b.initial = make_state(b.model, ic);
+  if (!b.initial.all_finite()) {
+    ctx.diag.error(t.source(), r.path(), "initial state of \"" + b.name + "\" is not finite; check the values");
+    return;
+  }
+  scene.bodies.push_back(std::move(b));
+}
+
+}  // namespace
+
+void read_bodies(TableReader& root, LoadContext& ctx, Scene& scene) {
+  if (!root.has("bodies")) {
+    root.error("bodies", "missing; a scene needs at least one [[bodies]] table");
+    return;
+  }
+  const auto list = root.tables("bodies");
+  if (list.size() > kMaxBodies) {
+    root.error("bodies", "expected at most " + std::to_string(kMaxBodies) + " bodies (the cap), found " +
+                             std::to_string(list.size()));
+    return;
+  }
+  scene.bodies.reserve(list.size());
+  for (std::size_t i = 0; i < list.size(); ++i) read_body(*list[i], i, ctx, scene);
+}
+
+}  // namespace tumble::scene::detail

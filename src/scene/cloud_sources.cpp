@@ -1,0 +1,210 @@
+// Particle sources of a body: inline particles, a generated shape, a cloud file.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "scene/internal.hpp"
+
+namespace tumble::scene::detail {
+
+namespace {
+
+// Reserves `n` particles of the scene budget; false (with an error) past the cap.
+bool reserve(LoadContext& ctx, TableReader& r, std::string_view key, double n) {
+  if (static_cast<double>(ctx.particles) + n > static_cast<double>(kMaxParticles)) {
+    r.error(key, "the scene would have more than " + std::to_string(kMaxParticles) +
+                     " particles (the cap); lower the resolution");
+    return false;
+  }
+  ctx.particles += static_cast<std::size_t>(n);
+  return true;
+}
+
+void read_particles(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {
+  const toml::node* n = r.node("particles");
+  const toml::array* a = n->as_array();
+  if (!a) {
+    r.error("particles", "expected an array of [x, y, z, m] arrays, found " + describe(*n));
+    return;
+  }
+  if (!reserve(ctx, r, "particles", static_cast<double>(a->size()))) return;
+  ParticleCloud cloud;
+  cloud.reserve(a->size());
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = *a->get(i);
+    const std::string key = r.key_path("particles") + "[" + std::to_string(i) + "]";
+    const toml::array* p = e.as_array();
+    if (!p || p->size() != 4) {
+      r.diag().error(e.source(), key, "expected [x, y, z, m] (m, m, m, kg), found " + describe(e));
+      continue;
+    }
+    Particle part{};
+    bool ok = true;
+    for (int k = 0; k < 3; ++k) {
+      auto x = read_number(*p->get(static_cast<std::size_t>(k)), key + "[" + std::to_string(k) + "]",
+                           Range::any(), r.diag());
+      if (x) part.position[k] = *x;
+      else ok = false;
+    }
+    Range mass_range = Range::positive();
+    mass_range.what = "a mass (kg) > 0";
+    auto m = read_number(*p->get(3), key + "[3]", mass_range, r.diag());
+    if (m && ok) {
+      part.mass = *m;
+      cloud.push_back(part);
+    }
+  }
+  append_cloud(out, cloud, offset);
+}
+
+std::optional<double> mass_of(TableReader& s) {
+  if (!s.has("mass")) return 1.0;
+  return s.number("mass", Range::positive());
+}
+
+ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& ctx, bool& ok) {
+  auto require = [&](std::string_view key, const Range& range) {
+    if (!s.has(key)) {
+      s.error(key, "missing; a " + type + " needs '" + std::string(key) + "' (" + range.what + ")");
+      ok = false;
+      return 0.0;
+    }
+    auto v = s.number(key, range);
+    if (!v) ok = false;
+    return v.value_or(0.0);
+  };
+  auto require_vec = [&](std::string_view key) {
+    if (!s.has(key)) {
+      s.error(key, "missing; a " + type + " needs '" + std::string(key) + "' ([x, y, z], m, each > 0)");
+      ok = false;
+      return Eigen::Vector3d(1, 1, 1);
+    }
+    auto v = s.vec3(key, Range::positive());
+    if (!v) ok = false;
+    return v.value_or(Eigen::Vector3d(1, 1, 1));
+  };
+  auto resolution = [&](long long def, long long lo, long long hi) {
+    if (!s.has("resolution")) return def;
+    auto v = s.integer("resolution", lo, hi);
+    if (!v) ok = false;
+    return v.value_or(def);
+  };
+  const auto mass = mass_of(s);
+  if (!mass) ok = false;
+  ParticleCloud cloud;
+  if (type == "box") {
+    const Eigen::Vector3d size = require_vec("size");
+    Eigen::Vector3i n(10, 10, 10);
+    if (const toml::node* rn = s.node("resolution"); rn && rn->is_array()) {
+      const toml::array& a = *rn->as_array();
+      bool good = a.size() == 3;
+      for (std::size_t k = 0; good && k < 3; ++k) {
+        auto i = a.get(k)->as_integer();
+        good = i && i->get() >= 1 && i->get() <= 100000;
+        if (good) n[static_cast<int>(k)] = static_cast<int>(i->get());
+      }
+      if (!good) {
+        s.error("resolution", "expected an integer or [nx, ny, nz], each in [1, 100000], found " + describe(*rn));
+        ok = false;
+      }
+    } else {
+      n.setConstant(static_cast<int>(resolution(10, 1, 100000)));
+    }
+    if (!ok || !reserve(ctx, s, "resolution", double(n.x()) * n.y() * n.z())) return {};
+    cloud = make_box(size, n, *mass);
+  } else if (type == "ellipsoid") {
+    const Eigen::Vector3d semi = require_vec("semi_axes");
+    const int n = static_cast<int>(resolution(15, 2, 1000));
+    if (!ok || !reserve(ctx, s, "resolution", 0.5236 * n * n * n)) return {};
+    cloud = make_ellipsoid(semi, n, *mass);
+  } else if (type == "cylinder") {
+    const double radius = require("radius", Range::positive());
+    const double length = require("length", Range::positive());
+    const int n = static_cast<int>(resolution(15, 2, 10000));
+    if (!ok) return {};
+    const double nz = std::max(1.0, std::round(n * length / (2 * radius)));
+    if (!reserve(ctx, s, "resolution", 0.7854 * n * n * nz)) return {};
+    cloud = make_cylinder(radius, length, n, *mass);
+  } else {  // t_handle
+    const double handle = require("handle_length", Range::positive());
+    const double stem = require("stem_length", Range::positive());
+    const double thick = require("thickness", Range::positive());
+    if (!s.has("resolution")) {
+      s.error("resolution", "missing; a t_handle needs 'resolution' (particles per metre, an integer >= 1)");
+      ok = false;
+    }
+    const long long per_m = resolution(1, 1, 1000000);
+    if (!ok) return {};
+    auto count = [&](double len) { return std::max(1.0, std::round(len * static_cast<double>(per_m))); };
+    const double nt = count(thick);
+    if (!reserve(ctx, s, "resolution", nt * nt * (count(handle) + count(stem)))) return {};
+    cloud = make_t_handle(handle, stem, thick, static_cast<int>(per_m), *mass);
+  }
+  return cloud;
+}
+
+void read_shape(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {
+  const toml::table* t = r.subtable("shape");
+  if (!t) return;
+  const std::string path = r.key_path("shape");
+  const toml::node* tn = t->get("type");
+  const toml::value<std::string>* ts = tn ? tn->as_string() : nullptr;
+  const std::string type = ts ? ts->get() : "";
+  static constexpr std::string_view kTypes[] = {"box", "ellipsoid", "cylinder", "t_handle"};
+  if (std::find(std::begin(kTypes), std::end(kTypes), type) == std::end(kTypes)) {
+    std::string msg = "expected type = \"box\", \"ellipsoid\", \"cylinder\" or \"t_handle\", found ";
+    msg += tn ? describe(*tn) : "no type";
+    const std::string hint = closest(type, {std::begin(kTypes), std::end(kTypes)});
+    if (!type.empty() && !hint.empty()) msg += "; did you mean \"" + hint + "\"?";
+    ctx.diag.error(tn ? tn->source() : t->source(), path + ".type", msg);
+    return;
+  }
+  using Keys = std::vector<std::string_view>;
+  const Keys keys = type == "box"         ? Keys{"type", "size", "resolution", "mass"}
+                    : type == "ellipsoid" ? Keys{"type", "semi_axes", "resolution", "mass"}
+                    : type == "cylinder"  ? Keys{"type", "radius", "length", "resolution", "mass"}
+                                          : Keys{"type", "handle_length", "stem_length", "thickness", "resolution", "mass"};
+  TableReader s(*t, path, ctx.diag, keys);
+  bool ok = true;
+  try {
+    const ParticleCloud c = make_shape(type, s, ctx, ok);
+    if (ok) append_cloud(out, c, offset);
+  } catch (const InputError& e) {  // generator checks we did not anticipate
+    ctx.diag.error(t->source(), path, e.what());
+  }
+}
+
+void read_cloud_file_source(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {
+  auto file = r.string("cloud");
+  if (!file) return;
+  const std::filesystem::path p = ctx.base_dir / *file;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec)) {
+    r.error("cloud", "expected a cloud file (x y z m per line) relative to the scene, found no file at '" +
+                         p.string() + "'");
+    return;
+  }
+  // ~10 bytes per particle at least: refuse files that cannot fit the cap.
+  if (std::filesystem::file_size(p, ec) > 64 * kMaxParticles) {
+    r.error("cloud", "file '" + p.string() + "' is too large for the particle cap");
+    return;
+  }
+  try {
+    const ParticleCloud c = read_cloud_file(p);
+    if (reserve(ctx, r, "cloud", static_cast<double>(c.size()))) append_cloud(out, c, offset);
+  } catch (const InputError& e) {
+    r.error("cloud", e.what());
+  }
+}
+
+}  // namespace
+
+int read_cloud_sources(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {
+  int sources = 0;
+  if (r.has("particles")) ++sources, read_particles(r, ctx, offset, out);
+  if (r.has("shape")) ++sources, read_shape(r, ctx, offset, out);
+  if (r.has("cloud")) ++sources, read_cloud_file_source(r, ctx, offset, out);
+  return sources;
+}
+
+}  // namespace tumble::scene::detail

@@ -1,0 +1,32 @@
+// Pieces of the loader shared between its source files.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/particle_cloud.hpp"
+#include "scene/reader.hpp"
+#include "scene/scene.hpp"
+
+namespace tumble::scene::detail {
+
+struct LoadContext {
+  Diagnostics& diag;
+  std::filesystem::path base_dir;  ///< cloud files resolve against it
+  std::size_t particles = 0;       ///< running total, capped at kMaxParticles
+  std::vector<std::string> body_names;  ///< every name seen, for the uniqueness check
+};
+
+/// Appends the particles of every source in `r` (particles, shape, cloud) shifted
+/// by `offset`; returns how many sources the table had.
+int read_cloud_sources(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out);
+
+/// Reads [[bodies]] into scene.bodies (uses scene.gravity for the force sets).
+void read_bodies(TableReader& root, LoadContext& ctx, Scene& scene);
+
+/// Reads [output], [camera], [draw], [compare] into scene.render.
+void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene);
+
+}  // namespace tumble::scene::detail

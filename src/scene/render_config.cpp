@@ -1,0 +1,119 @@
+// Render sections: parsed and validated with the scene, used by `tumble render`.
+#include <algorithm>
+
+#include "scene/internal.hpp"
+
+namespace tumble::scene::detail {
+
+namespace {
+
+void read_output(TableReader& r, Scene& s) {
+  OutputConfig& o = s.render.output;
+  o.fps = s.simulation.fps;
+  o.width = static_cast<int>(r.integer("width", 16, 16384).value_or(o.width));
+  o.height = static_cast<int>(r.integer("height", 16, 16384).value_or(o.height));
+  Range fps = Range::closed(1e-3, 1000);
+  o.fps = r.number("fps", fps).value_or(o.fps);
+  if (auto m = r.integer("msaa", 0, 4)) {
+    if (*m == 0 || *m == 2 || *m == 4) o.msaa = static_cast<int>(*m);
+    else r.error("msaa", "expected 0, 2 or 4, found " + std::to_string(*m));
+  }
+  o.background = r.vec3("background", Range::closed(0, 1)).value_or(o.background);
+  if (auto v = r.string("video")) {
+    if (*v == "mp4") o.video = VideoFormat::mp4;
+    else if (*v == "gif") o.video = VideoFormat::gif;
+    else if (*v == "none") o.video = VideoFormat::none;
+    else r.error("video", "expected \"mp4\", \"gif\" or \"none\", found \"" + *v + "\"");
+  }
+  if (o.fps * s.simulation.duration > kMaxFrames)
+    r.error("fps", "duration × fps exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
+}
+
+void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
+  CameraConfig& c = s.render.camera;
+  const bool has_position = r.has("position");
+  c.automatic = r.boolean("auto").value_or(!has_position);
+  if (c.automatic && has_position && r.has("auto"))
+    r.error("auto", "auto = true frames the bodies itself; remove 'position' or set auto = false");
+  c.position = r.vec3("position").value_or(c.position);
+  c.target = r.vec3("target").value_or(c.target);
+  c.up = r.vec3("up").value_or(c.up);
+  if (c.up.norm() < 1e-12) r.error("up", "expected a non-zero vector");
+  c.fov_y_deg = r.number("fov_y", {1, 170, false, "an angle in [1, 170] degrees"}).value_or(c.fov_y_deg);
+  if (!c.automatic && (c.position - c.target).norm() < 1e-12)
+    r.error("target", "camera position and target coincide");
+  if (auto f = r.string("follow")) {
+    const std::vector<std::string_view> names(ctx.body_names.begin(), ctx.body_names.end());
+    if (std::find(names.begin(), names.end(), *f) == names.end()) {
+      std::string msg = "expected the name of a body, found \"" + *f + "\"";
+      const std::string hint = closest(*f, names);
+      if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
+      r.error("follow", msg);
+    }
+    c.follow = *f;
+  }
+}
+
+void read_draw(TableReader& r, Scene& s) {
+  DrawConfig& d = s.render.draw;
+  d.box = r.boolean("box").value_or(d.box);
+  d.axes = r.boolean("axes").value_or(d.axes);
+  d.particles = r.boolean("particles").value_or(d.particles);
+  d.L = r.boolean("L").value_or(d.L);
+  d.omega = r.boolean("omega").value_or(d.omega);
+  d.trails = r.number("trails", Range::closed(0, 1e4)).value_or(d.trails);
+  d.grid = r.boolean("grid").value_or(d.grid);
+  d.overlay = r.boolean("overlay").value_or(d.overlay);
+  d.legend = r.boolean("legend").value_or(d.legend);
+}
+
+void read_compare(TableReader& r, Scene& s) {
+  auto names = r.strings("methods");
+  if (!names) {
+    if (!r.has("methods")) r.error("methods", "missing; [compare] needs methods = [\"euler\", \"rk4\", ...]");
+    return;
+  }
+  if (names->empty() || names->size() > 16) {
+    r.error("methods", "expected 1 to 16 method names, found " + std::to_string(names->size()));
+    return;
+  }
+  for (std::size_t i = 0; i < names->size(); ++i) {
+    const std::string& n = (*names)[i];
+    auto m = parse_method(n);
+    if (!m) {
+      r.error("methods", "entry " + std::to_string(i) + ": expected one of " + method_list() + ", found \"" + n + "\"");
+      continue;
+    }
+    if (std::find(s.render.compare_methods.begin(), s.render.compare_methods.end(), *m) !=
+        s.render.compare_methods.end()) {
+      r.error("methods", "method \"" + n + "\" is listed twice");
+      continue;
+    }
+    s.render.compare_methods.push_back(*m);
+  }
+}
+
+}  // namespace
+
+void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
+  scene.render.output.fps = scene.simulation.fps;
+  if (auto t = root.subtable("output")) {
+    TableReader r(*t, "output", ctx.diag, {"width", "height", "fps", "msaa", "background", "video"});
+    read_output(r, scene);
+  }
+  if (auto t = root.subtable("camera")) {
+    TableReader r(*t, "camera", ctx.diag, {"position", "target", "up", "fov_y", "auto", "follow"});
+    read_camera(r, ctx, scene);
+  }
+  if (auto t = root.subtable("draw")) {
+    TableReader r(*t, "draw", ctx.diag,
+                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend"});
+    read_draw(r, scene);
+  }
+  if (auto t = root.subtable("compare")) {
+    TableReader r(*t, "compare", ctx.diag, {"methods"});
+    read_compare(r, scene);
+  }
+}
+
+}  // namespace tumble::scene::detail

@@ -1,0 +1,158 @@
+// Top level of the loader: syntax, [simulation], [forces], then bodies and render.
+#include "scene/scene.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "scene/internal.hpp"
+
+namespace tumble::scene {
+
+namespace {
+
+using detail::Range;
+using detail::TableReader;
+
+void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
+  SimulationConfig& sim = s.simulation;
+  const toml::table* t = root.subtable("simulation");
+  if (!t) return;
+  TableReader r(*t, "simulation", ctx.diag, {"method", "dt", "duration", "fps", "rtol", "atol"});
+  if (auto m = r.string("method")) {
+    if (*m == "auto") sim.method.reset();
+    else if (auto pm = parse_method(*m)) sim.method = *pm;
+    else {
+      std::vector<std::string_view> names{"auto"};
+      for (Method k : kAllMethods) names.push_back(method_name(k));
+      std::string msg = "expected \"auto\" or one of " + method_list() + ", found \"" + *m + "\"";
+      const std::string hint = detail::closest(*m, names);
+      if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
+      r.error("method", msg);
+    }
+  } else {
+    sim.method = Method::splitting;
+  }
+  sim.dt = r.number("dt", Range::positive()).value_or(sim.dt);
+  sim.duration = r.number("duration", Range::positive()).value_or(sim.duration);
+  sim.fps = r.number("fps", Range::closed(1e-3, 1000)).value_or(sim.fps);
+  sim.rtol = r.number("rtol", {0, 1, true, "a tolerance in (0, 1]"}).value_or(sim.rtol);
+  sim.atol = r.number("atol", {0, 1e300, true, "a tolerance > 0"}).value_or(sim.atol);
+  if (sim.dt > sim.duration)
+    r.error("dt", "expected dt <= duration (" + std::to_string(sim.duration) + " s), found " + std::to_string(sim.dt));
+  if (sim.duration * sim.fps > kMaxFrames)
+    r.error("fps", "duration × fps = " + std::to_string(sim.duration * sim.fps) + " exceeds the frame cap of " +
+                       std::to_string(static_cast<long>(kMaxFrames)));
+}
+
+void read_forces(TableReader& root, detail::LoadContext& ctx, Scene& s) {
+  const toml::table* t = root.subtable("forces");
+  if (!t) return;
+  TableReader r(*t, "forces", ctx.diag, {"gravity"});
+  if (auto g = r.vec3("gravity")) {
+    s.gravity = *g;
+    s.has_gravity = !g->isZero(0);
+  }
+}
+
+Scene load_impl(std::string_view text, const std::string& source_name, const std::filesystem::path& base_dir) {
+  detail::Diagnostics diag(source_name);
+  toml::table root;
+  try {
+    root = toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    diag.error(e.source(), "", "TOML syntax: " + std::string(e.description()));
+    throw SceneError(diag.take_errors());
+  }
+  Scene s;
+  s.content_hash = fnv1a_hex(text);
+  detail::LoadContext ctx{diag, base_dir, 0, {}};
+  TableReader r(root, "", diag,
+                {"name", "simulation", "forces", "bodies", "output", "camera", "draw", "compare"});
+  s.name = r.string("name").value_or("scene");
+  read_simulation(r, ctx, s);
+  read_forces(r, ctx, s);
+  detail::read_bodies(r, ctx, s);
+  detail::read_render_config(r, ctx, s);
+  if (!diag.ok()) throw SceneError(diag.take_errors());
+  s.warnings = diag.take_warnings();
+  return s;
+}
+
+}  // namespace
+
+std::string Diagnostic::str() const {
+  std::string out = file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: ";
+  if (!key.empty()) out += key + ": ";
+  return out + message;
+}
+
+namespace {
+std::string join(const std::vector<Diagnostic>& d) {
+  std::string out;
+  for (const Diagnostic& x : d) out += (out.empty() ? "" : "\n") + x.str();
+  return out;
+}
+}  // namespace
+
+SceneError::SceneError(std::vector<Diagnostic> diags) : InputError(join(diags)), diags_(std::move(diags)) {}
+
+const Body* Scene::find_body(std::string_view body_name) const {
+  for (const Body& b : bodies)
+    if (b.name == body_name) return &b;
+  return nullptr;
+}
+
+Method resolve_method(const std::optional<Method>& m, const RigidBodyModel& model) {
+  if (m) return *m;
+  return model.forces.empty() ? Method::exact : Method::splitting;
+}
+
+StepConfig step_config(const SimulationConfig& sim, const RigidBodyModel& model) {
+  StepConfig c;
+  c.method = resolve_method(sim.method, model);
+  c.dt = sim.dt;
+  c.rtol = sim.rtol;
+  c.atol = sim.atol;
+  return c;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  Scene s = load_impl(buf.str(), path.string(), path.parent_path());
+  s.path = path;
+  return s;
+}
+
+Scene load_scene_from_string(std::string_view text, std::string_view source_name,
+                             const std::filesystem::path& base_dir) {
+  return load_impl(text, std::string(source_name), base_dir);
+}
+
+std::vector<double> sample_times(double duration, double fps) {
+  std::vector<double> t;
+  const double n = std::floor(duration * fps * (1 + 1e-12));
+  for (long k = 0; k <= static_cast<long>(n); ++k) t.push_back(static_cast<double>(k) / fps);
+  // A last sample within round-off of the end *is* the end; otherwise append it.
+  if (t.size() > 1 && std::abs(t.back() - duration) <= 1e-9 * std::max(1.0, duration)) t.back() = duration;
+  else if (t.back() != duration) t.push_back(duration);
+  return t;
+}
+
+std::string fnv1a_hex(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char out[17];
+  std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+  return out;
+}
+
+}  // namespace tumble::scene

@@ -1,0 +1,131 @@
+// A scene file (TOML) turned into ready-to-integrate bodies plus the render
+// settings. Loading validates everything; errors name file:line:col and the key.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/body.hpp"
+#include "core/error.hpp"
+#include "core/integrator.hpp"
+#include "core/mass_properties.hpp"
+#include "core/particle_cloud.hpp"
+#include "core/propagator.hpp"
+
+namespace tumble::scene {
+
+/// Documented caps (scenes/README.md): beyond these a scene is rejected.
+inline constexpr std::size_t kMaxParticles = 10'000'000;  ///< all bodies together
+inline constexpr std::size_t kMaxBodies = 1000;
+inline constexpr double kMaxFrames = 1e6;                 ///< duration × fps
+
+struct SimulationConfig {
+  std::optional<Method> method;  ///< nullopt = "auto" (see resolve_method)
+  double dt = 1e-3;              ///< s
+  double duration = 10;          ///< s
+  double fps = 30;               ///< samples (frames) per second, 1/s
+  double rtol = 1e-9;            ///< rk45 only
+  double atol = 1e-12;           ///< rk45 only
+};
+
+/// "auto": `exact` for a torque-free body, `splitting` otherwise.
+Method resolve_method(const std::optional<Method>& m, const RigidBodyModel& model);
+StepConfig step_config(const SimulationConfig& sim, const RigidBodyModel& model);
+
+enum class VideoFormat { mp4, gif, none };
+
+struct OutputConfig {
+  int width = 1280, height = 720;               ///< px
+  double fps = 30;                              ///< frames per second (default: simulation.fps)
+  int msaa = 4;                                 ///< 0, 2 or 4 samples
+  Eigen::Vector3d background{0.97, 0.97, 0.98}; ///< linear RGB in [0, 1]
+  VideoFormat video = VideoFormat::mp4;
+};
+
+struct CameraConfig {
+  bool automatic = true;                 ///< frame every body over the whole run
+  Eigen::Vector3d position{4, -6, 3};    ///< m (used when !automatic)
+  Eigen::Vector3d target{0, 0, 0};       ///< m
+  Eigen::Vector3d up{0, 0, 1};
+  double fov_y_deg = 35;                 ///< vertical field of view, degrees
+  std::string follow;                    ///< body name; empty = fixed camera
+};
+
+struct DrawConfig {
+  bool box = true, axes = true, particles = false, L = false, omega = false;
+  double trails = 0;                     ///< s of axis-tip history; 0 = off
+  bool grid = false, overlay = true, legend = true;
+};
+
+struct RenderConfig {
+  OutputConfig output;
+  CameraConfig camera;
+  DrawConfig draw;
+  std::vector<Method> compare_methods;   ///< [compare] methods; empty = no comparison
+};
+
+struct Body {
+  std::string name;
+  ParticleCloud cloud;                   ///< cloud axes, as written in the scene
+  MassProperties mass_properties;        ///< in cloud axes
+  RigidBodyModel model;                  ///< what Propagator integrates (keep the Scene alive)
+  InitialConditions initial_conditions;  ///< as written (orientation normalised)
+  BodyState initial;                     ///< make_state(model, initial_conditions)
+  Eigen::Vector3d color{0.3, 0.5, 0.8};  ///< linear RGB in [0, 1]
+};
+
+struct Scene {
+  std::string name;
+  std::filesystem::path path;            ///< as given to load_scene (empty for strings)
+  std::string content_hash;              ///< FNV-1a 64 of the file bytes, 16 hex digits
+  SimulationConfig simulation;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< m/s², world
+  bool has_gravity = false;
+  std::vector<Body> bodies;
+  RenderConfig render;
+  std::vector<std::string> warnings;     ///< "file:line:col: warning: ..." lines
+
+  const Body* find_body(std::string_view body_name) const;
+};
+
+/// One problem found while loading, located in the scene file.
+struct Diagnostic {
+  std::string file;
+  int line = 0, column = 0;
+  std::string key;      ///< e.g. "bodies[0].shape.size"; empty for syntax errors
+  std::string message;  ///< what was expected and what was found
+  std::string str() const;  ///< "file:line:col: error: key: message"
+};
+
+/// All errors of one load, reported together. An InputError, so exit code 2.
+class SceneError : public InputError {
+ public:
+  explicit SceneError(std::vector<Diagnostic> diags);
+  const std::vector<Diagnostic>& diagnostics() const { return diags_; }
+
+ private:
+  std::vector<Diagnostic> diags_;
+};
+
+/// Reads and validates a scene; cloud files resolve relative to its folder.
+/// Throws SceneError (every problem found) or InputError (file unreadable).
+Scene load_scene(const std::filesystem::path& path);
+
+/// Same from text; `source_name` labels errors, `base_dir` resolves cloud files.
+Scene load_scene_from_string(std::string_view text, std::string_view source_name,
+                             const std::filesystem::path& base_dir = {});
+
+/// Sample times k/fps for k = 0, 1, … up to `duration`; the last is always
+/// exactly `duration` (appended when it is not a multiple of 1/fps).
+std::vector<double> sample_times(double duration, double fps);
+
+/// FNV-1a 64-bit hash of `bytes` as 16 lowercase hex digits.
+std::string fnv1a_hex(std::string_view bytes);
+
+}  // namespace tumble::scene
