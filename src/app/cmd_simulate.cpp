@@ -90,7 +90,7 @@ int run_simulate(const SimulateOptions& o) {
         const bool last = static_cast<double>(b) * n * dt >= duration * (1 - 1e-12);
         for (auto& p : props) {
           const BodyState& st = last ? p->advance_to(duration) : p->advance_steps(o.every);
-          append_row(buf, last ? duration : p->time(), p->model(), st);
+          append_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
         }
         if (buf.size() > (1u << 20)) flush();
         if (last) break;
