@@ -1,0 +1,145 @@
+#include "bench/problems.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+
+#include "core/dynamics.hpp"
+#include "core/free_rotation_exact.hpp"
+#include "core/quaternion.hpp"
+#include "core/rk45.hpp"
+
+namespace tumble::bench {
+
+RigidBodyModel diagonal_model(const std::string& name, const Eigen::Vector3d& I, const ForceSet& f) {
+  RigidBodyModel m;
+  m.name = name;
+  m.mass = 1;
+  m.inertia = I;
+  m.inv_inertia = I.cwiseInverse();
+  m.forces = f;
+  return m;
+}
+
+BodyState spinning_state(const RigidBodyModel& m, const Eigen::Vector3d& omega_body) {
+  InitialConditions ic;
+  ic.omega = omega_body;
+  return make_state(m, ic);
+}
+
+Problem t_handle_problem() {
+  Problem p;
+  p.name = "t_handle";
+  p.description = "T-handle: moments (1, 2, 3) kg m^2, omega_body (0.01, 10, 0.01) rad/s, 10 s, torque-free "
+                  "(4 Dzhanibekov flips); reference: closed form";
+  p.model = diagonal_model("t_handle", {1, 2, 3});
+  p.s0 = spinning_state(p.model, {0.01, 10, 0.01});
+  p.reference = exact_free_state(p.model, p.s0, p.duration);
+  return p;
+}
+
+Problem symmetric_top_problem() {
+  Problem p;
+  p.name = "symmetric_top";
+  p.description = "symmetric top: moments (2, 2, 4) kg m^2, omega_body (3, 1, 5) rad/s, 10 s, torque-free; "
+                  "reference: closed form";
+  p.model = diagonal_model("symmetric_top", {2, 2, 4});
+  p.s0 = spinning_state(p.model, {3, 1, 5});
+  p.reference = exact_free_state(p.model, p.s0, p.duration);
+  return p;
+}
+
+Problem forced_problem() {
+  Problem p;
+  p.name = "forced";
+  p.description = "forced T-handle: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.01, 10, 0.01) rad/s, gravity "
+                  "(0, 0, -9.81) m/s^2 plus a body-fixed force (0, 0, 2) N at (1, 0, 0) m, 10 s; reference: "
+                  "rk45 at rtol 1e-13";
+  ForceSet f;
+  f.has_gravity = true;
+  f.gravity = {0, 0, -9.81};
+  f.point_forces.push_back({Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  p.model = diagonal_model("forced", {1, 2, 3}, f);
+  p.s0 = spinning_state(p.model, {0.01, 10, 0.01});
+  p.torque_free = false;
+  p.reference = run_rk45(p.model, p.s0, p.duration, 1e-13);
+  // The same reference integrator on the torque-free T-handle, against the closed form.
+  const Problem th = t_handle_problem();
+  p.reference_check = rotation_angle_between(run_rk45(th.model, th.s0, th.duration, 1e-13).q, th.reference.q);
+  return p;
+}
+
+std::vector<Problem> all_problems() { return {t_handle_problem(), symmetric_top_problem(), forced_problem()}; }
+
+Errors errors(const Problem& p, const BodyState& s) {
+  Errors e;
+  if (!s.all_finite()) return {NAN, NAN};
+  e.angle = rotation_angle_between(s.q, p.reference.q);
+  const double eref = total_energy(p.model, p.reference);
+  e.energy = std::abs(total_energy(p.model, s) - eref) / std::abs(eref);
+  return e;
+}
+
+BodyState run_fixed(Method method, const RigidBodyModel& m, const BodyState& s0, double T, double dt) {
+  const long n = std::max(1L, std::lround(T / dt));
+  const double h = T / static_cast<double>(n);
+  BodyState s = s0;
+  for (long i = 0; i < n; ++i) {
+    s = step(method, m, s, static_cast<double>(i) * h, h);
+    if ((i & 1023) == 0 && !s.all_finite()) break;
+  }
+  return s;
+}
+
+BodyState run_rk45(const RigidBodyModel& m, const BodyState& s0, double T, double rtol) {
+  Rk45Options o;
+  o.rtol = rtol;
+  o.atol = rtol;
+  Rk45 r(m, s0, 0.0, o);
+  return r.advance_to(T);
+}
+
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+double median_cpu_seconds(const std::function<void()>& fn, double min_batch_s, int repeats) {
+  std::vector<double> per_call;
+  long batch = 1;
+  for (int r = 0; r < repeats; ++r) {
+    double elapsed = 0;
+    while (true) {
+      const double t0 = thread_cpu_seconds();
+      for (long i = 0; i < batch; ++i) fn();
+      elapsed = thread_cpu_seconds() - t0;
+      if (elapsed >= min_batch_s) break;
+      // Grow the batch toward the target span (at most ×10 per try).
+      const double want = elapsed > 0 ? 1.2 * min_batch_s / elapsed : 10.0;
+      batch = std::max(batch + 1, static_cast<long>(static_cast<double>(batch) * std::min(want, 10.0)));
+    }
+    per_call.push_back(elapsed / static_cast<double>(batch));
+  }
+  std::sort(per_call.begin(), per_call.end());
+  return per_call[per_call.size() / 2];
+}
+
+std::vector<double> log_sweep(double hi, double lo, int per_decade) {
+  std::vector<double> v;
+  const int n = static_cast<int>(std::lround(std::log10(hi / lo) * per_decade));
+  for (int i = 0; i <= n; ++i) v.push_back(hi * std::pow(10.0, -static_cast<double>(i) / per_decade));
+  return v;
+}
+
+void FlipCounter::observe(double pi2, double t) {
+  const double sign = pi2 > 0 ? 1.0 : (pi2 < 0 ? -1.0 : 0.0);
+  if (sign == 0) return;
+  if (last_sign != 0 && sign != last_sign) {
+    ++count;
+    if (first_time < 0) first_time = t;
+  }
+  last_sign = sign;
+}
+
+}  // namespace tumble::bench

@@ -1,0 +1,151 @@
+// `tumble bench --quick` end to end: runs the studies into a temp folder once,
+// then checks the CSVs it wrote (issue #6 §6).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "bench/bench.hpp"
+#include "core/integrator.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Row = std::map<std::string, std::string>;
+
+std::vector<Row> read_csv(const fs::path& file) {
+  std::ifstream f(file);
+  std::vector<Row> rows;
+  std::string line;
+  std::vector<std::string> header;
+  auto split = [](const std::string& s) {
+    std::vector<std::string> v;
+    std::stringstream ss(s);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) v.push_back(cell);
+    return v;
+  };
+  if (std::getline(f, line)) header = split(line);
+  while (std::getline(f, line)) {
+    const auto cells = split(line);
+    Row r;
+    for (size_t i = 0; i < header.size() && i < cells.size(); ++i) r[header[i]] = cells[i];
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+double num(const Row& r, const std::string& k) { return std::stod(r.at(k)); }
+
+class BenchQuick : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("tumble_bench_quick_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    std::ostringstream log;
+    rc_ = tumble::bench::run({true, dir_}, log);
+  }
+  // TUMBLE_BENCH_KEEP=1 keeps the output for inspection.
+  static void TearDownTestSuite() {
+    if (!std::getenv("TUMBLE_BENCH_KEEP")) fs::remove_all(dir_);
+  }
+  static fs::path dir_;
+  static int rc_;
+};
+fs::path BenchQuick::dir_;
+int BenchQuick::rc_ = -1;
+
+TEST_F(BenchQuick, WritesEveryMethodAndProblem) {
+  ASSERT_EQ(rc_, 0);
+  for (const char* f : {"work_precision.csv", "stability_map.csv", "drift.csv", "dzhanibekov.csv", "summary.md"})
+    EXPECT_TRUE(fs::exists(dir_ / f)) << f;
+  std::set<std::pair<std::string, std::string>> seen;
+  for (const Row& r : read_csv(dir_ / "work_precision.csv")) seen.insert({r.at("problem"), r.at("method")});
+  std::set<std::string> stab;
+  for (const Row& r : read_csv(dir_ / "stability_map.csv")) stab.insert(r.at("method"));
+  for (const char* p : {"t_handle", "symmetric_top", "forced"})
+    for (tumble::Method m : tumble::kAllMethods) {
+      EXPECT_TRUE(seen.count({p, std::string(tumble::method_name(m))})) << p << " " << tumble::method_name(m);
+      EXPECT_TRUE(stab.count(std::string(tumble::method_name(m))));
+    }
+}
+
+TEST_F(BenchQuick, ErrorsFiniteWhereStabilityMapSaysOk) {
+  ASSERT_EQ(rc_, 0);
+  std::map<std::pair<std::string, double>, std::string> ok_at_10;  // (method, dt) at Ω = 10 rad/s
+  for (const Row& r : read_csv(dir_ / "stability_map.csv")) {
+    if (r.at("cell_name") == "ok") {
+      EXPECT_TRUE(std::isfinite(num(r, "error"))) << r.at("method") << " " << r.at("dt");
+    }
+    if (std::abs(num(r, "spin_rad_s") - 10) < 1e-9) ok_at_10[{r.at("method"), num(r, "dt")}] = r.at("cell_name");
+  }
+  // The work-precision T-handle is the Ω = 10 row: where the map says ok at a
+  // dt at least as large, that run must be finite too.
+  for (const Row& r : read_csv(dir_ / "work_precision.csv")) {
+    if (r.at("problem") != "t_handle" || r.at("param_name") != "dt") continue;
+    for (const auto& [key, cell] : ok_at_10)
+      if (key.first == r.at("method") && cell == "ok" && key.second >= num(r, "param") * (1 - 1e-9)) {
+        EXPECT_TRUE(std::isfinite(num(r, "angle_err_rad"))) << r.at("method") << " dt " << r.at("param");
+        break;
+      }
+  }
+}
+
+TEST_F(BenchQuick, ExactIsBestAndErrorsFallWithDt) {
+  ASSERT_EQ(rc_, 0);
+  std::map<std::string, std::vector<std::pair<double, Row>>> by;  // method -> (param, row), T-handle
+  for (const Row& r : read_csv(dir_ / "work_precision.csv"))
+    if (r.at("problem") == "t_handle") by[r.at("method")].push_back({num(r, "param"), r});
+  ASSERT_TRUE(by.count("exact"));
+  // The T-handle sits next to the separatrix: the flow amplifies a relative
+  // perturbation by ~1e7 over 10 s (rk45 at rtol 1e-9 ends ~1e-2 rad off), so
+  // round-off of stepped methods (exact included) floors near 1e-7 rad.
+  const double floor = 1e-7;
+  for (const auto& [param, ex] : by["exact"])
+    for (tumble::Method m : tumble::kAllMethods) {
+      const std::string name(tumble::method_name(m));
+      if (name == "exact" || name == "rk45") continue;
+      for (const auto& [p2, other] : by[name])
+        if (std::abs(p2 / param - 1) < 1e-9 && std::isfinite(num(other, "angle_err_rad"))) {
+          EXPECT_LE(num(ex, "angle_err_rad"), std::max(num(other, "angle_err_rad"), floor)) << name << " dt " << param;
+        }
+    }
+  for (auto& [method, pts] : by) {
+    if (method.rfind("bullet", 0) == 0 || method.rfind("ode", 0) == 0) continue;  // peers: shown, not required
+    std::sort(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.first > b.first; });
+    for (size_t i = 0; i + 1 < pts.size(); ++i) {
+      // In the asymptotic range (above round-off, below saturation) a smaller
+      // step (or tolerance) must not be less accurate.
+      const double big = num(pts[i].second, "angle_err_rad"), small = num(pts[i + 1].second, "angle_err_rad");
+      if (method != "exact" && std::isfinite(big) && big > floor && big < 0.1) {
+        EXPECT_LE(small, 1.1 * big) << method << " at " << pts[i + 1].first;
+      }
+    }
+    const double e_first = num(pts.front().second, "energy_rel_err"), e_last = num(pts.back().second, "energy_rel_err");
+    // Over the whole sweep the energy error falls, unless it starts at round-off.
+    if (std::isfinite(e_first) && e_first > 1e-12) {
+      EXPECT_LT(e_last, e_first) << method;
+    }
+  }
+}
+
+TEST_F(BenchQuick, EulerEnergyGrowsMidpointDoesNot) {
+  ASSERT_EQ(rc_, 0);
+  std::map<std::string, std::vector<Row>> by;
+  for (const Row& r : read_csv(dir_ / "drift.csv")) by[r.at("method")].push_back(r);
+  const auto& eu = by["euler"];
+  ASSERT_GE(eu.size(), 10u);
+  EXPECT_GT(num(eu.back(), "energy_rel_err"), 100 * num(eu[5], "energy_rel_err"));
+  EXPECT_GT(num(eu.back(), "energy_rel_err"), 1e-2);
+  for (const Row& r : by["implicit_midpoint"]) EXPECT_LT(num(r, "energy_rel_err"), 1e-12) << r.at("step");
+}
+
+}  // namespace
