@@ -143,7 +143,7 @@ std::vector<std::filesystem::path> chart_stability(const std::filesystem::path& 
       "set terminal pngcairo size 1600,900 font 'sans,11'\nset logscale xy\nset format x '10^{%L}'\n"
       "set cbrange [-0.5:3.5]\nset palette maxcolors 4\n"
       "set palette defined (0 '#2ca02c', 1 '#f2c80f', 2 '#ff7f0e', 3 '#d62728')\n"
-      "set cbtics ('ok' 0, 'inaccurate (>1%)' 1, 'wrong (flips/axis)' 2, 'diverged' 3)\nunset key\n"
+      "set cbtics ('ok' 0, 'inaccurate (>1%%)' 1, 'wrong (flips/axis)' 2, 'diverged' 3)\nunset key\n"
       "set xlabel 'step dt (s)'\nset ylabel 'spin rate {/Symbol W} (rad/s)'\nset style fill solid 1.0 border lc 'white'\n"
       "set multiplot layout 2,4 title 'Stability map: T-handle (moments 1, 2, 3 kg m^2) spun at {/Symbol W} about "
       "the intermediate axis (flip count, error at ~10 s) and the major/minor axes (tip-over)'\n";

@@ -1,4 +1,5 @@
 // Orchestrates the studies and writes summary.md.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -59,7 +60,7 @@ std::string error_at_dt_table(const std::vector<WpRow>& rows, const std::string&
   std::map<std::string, std::map<int, double>> v;
   for (const WpRow& r : rows) {
     if (r.problem != problem || r.param_name != "dt") continue;
-    if (!v.count(r.method)) order.push_back(r.method);
+    if (std::find(order.begin(), order.end(), r.method) == order.end()) order.push_back(r.method);
     for (int i = 0; i < 3; ++i)
       if (std::abs(r.param / dts[i] - 1) < 1e-6) v[r.method][i] = r.angle;
   }
