@@ -8,7 +8,10 @@ namespace tumble::render {
 
 DynamicLibrary::DynamicLibrary(const std::string& soname, const std::string& hint)
     : soname_(soname) {
-  handle_ = dlopen(soname.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // RTLD_NODELETE: GL drivers keep threads, TLS and atexit hooks alive past
+  // context destruction, so unmapping them on dlclose is asking for a crash
+  // at exit; it also keeps their frames symbolised in sanitizer reports.
+  handle_ = dlopen(soname.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
   if (handle_ == nullptr) {
     const char* why = dlerror();
     throw std::runtime_error("cannot load " + soname + " (" + (why ? why : "unknown") +

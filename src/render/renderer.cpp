@@ -11,6 +11,8 @@ constexpr float kGridWidthPx = 1.0f;
 // Tint the top of each view towards a pale sky blue.
 constexpr glm::vec3 kSkyTint{0.74f, 0.83f, 0.95f};
 constexpr float kSkyAmount = 0.35f;
+// Fraction of each view's height (from the bottom) left at the plain background.
+constexpr float kFlatBackground = 0.35f;
 
 }  // namespace
 
@@ -54,10 +56,10 @@ void Renderer::render(const viz::DrawList& frame, Image& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
+  // One full clear (llvmpipe's fast path) gives every view its flat lower
+  // background and depth; views then only paint their sky gradient.
   const glm::vec3 background(frame.background);
-  // Gaps between views (the 1 px separators) show this slightly darker tone.
-  const glm::vec3 separator = background * 0.82f;
-  gl_.ClearColor(separator.r, separator.g, separator.b, 1.0f);
+  gl_.ClearColor(background.r, background.g, background.b, 1.0f);
   gl_.DepthMask(GL_TRUE);
   gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -65,18 +67,17 @@ void Renderer::render(const viz::DrawList& frame, Image& out) {
   gl_.Enable(GL_BLEND);
   gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   const int count = static_cast<int>(frame.views.size());
+  std::vector<PixelRect> rects;
   for (int i = 0; i < count; ++i) {
-    const PixelRect rect = view_rect(i, count, frame.columns, target_.width(), target_.height());
-    if (rect.width > 0 && rect.height > 0) draw_view(frame.views[i], rect, background);
+    rects.push_back(view_rect(i, count, frame.columns, target_.width(), target_.height()));
+    if (rects.back().width > 0 && rects.back().height > 0) {
+      draw_view(frame.views[i], rects.back(), background);
+    }
   }
-  if (count == 0) {
-    const PixelRect full{0, 0, target_.width(), target_.height()};
-    set_viewport(full);
-    draw_background(background);
-  }
-
   const PixelRect full{0, 0, target_.width(), target_.height()};
   set_viewport(full);
+  if (count == 0) draw_background(background);
+  draw_separators(rects, background * 0.82f);
   draw_text(frame.texts, {}, full);
   gl_.Disable(GL_SCISSOR_TEST);
   target_.read_rgb(out);
@@ -84,14 +85,36 @@ void Renderer::render(const viz::DrawList& frame, Image& out) {
 
 void Renderer::draw_background(const glm::vec3& background) {
   gl_.Disable(GL_DEPTH_TEST);
-  gl_.DepthMask(GL_TRUE);
-  gl_.Clear(GL_DEPTH_BUFFER_BIT);  // scissored to this view
   background_program_.use();
+  background_program_.set("u_flat", kFlatBackground);
   background_program_.set("u_bottom", background);
   background_program_.set("u_top", glm::mix(background, kSkyTint * std::max(background.r, 0.5f),
                                              kSkyAmount));
   gl_.BindVertexArray(empty_vao_.id());
-  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+// 1 px lines in the gaps view_rect leaves left of / above non-edge views.
+void Renderer::draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color) {
+  const float w = float(target_.width()), h = float(target_.height());
+  auto ndc = [&](float x_px, float y_px) {
+    return glm::vec3(x_px / w * 2.0f - 1.0f, 1.0f - y_px / h * 2.0f, 0.0f);
+  };
+  const glm::vec4 c(color, 1.0f);
+  std::vector<LineVertex> lines;
+  for (const PixelRect& r : rects) {
+    const float x = float(r.x), y = float(r.y), bottom = float(r.y + r.height);
+    if (r.x > 0) {
+      lines.push_back({ndc(x - 0.5f, y - 1.0f), c});
+      lines.push_back({ndc(x - 0.5f, bottom), c});
+    }
+    if (r.y > 0) {
+      lines.push_back({ndc(x - 1.0f, y - 0.5f), c});
+      lines.push_back({ndc(float(r.x + r.width), y - 0.5f), c});
+    }
+  }
+  gl_.Disable(GL_DEPTH_TEST);
+  lines_.draw(lines, glm::mat4(1.0f), 1.0f);
 }
 
 void Renderer::draw_view(const viz::View& view, const PixelRect& rect,

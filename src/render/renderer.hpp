@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "render/font_atlas.hpp"
 #include "render/gl_context.hpp"
@@ -41,6 +42,7 @@ class Renderer {
  private:
   void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
   void draw_background(const glm::vec3& background);
+  void draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color);
   void draw_meshes(const ViewBatches& batches, const CameraMatrices& cam);
   void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
                  const PixelRect& rect);
