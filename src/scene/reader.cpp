@@ -10,11 +10,6 @@ namespace {
 
 constexpr std::size_t kMaxErrors = 50;
 
-std::string fmt_double(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 std::string type_name(toml::node_type t) {
   switch (t) {
@@ -32,6 +27,12 @@ std::string type_name(toml::node_type t) {
 }
 
 }  // namespace
+
+std::string format_number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
 
 Diagnostic Diagnostics::make(const toml::source_region& at, std::string key, std::string message) const {
   Diagnostic dg;
@@ -59,7 +60,7 @@ void Diagnostics::warning(const toml::source_region& at, std::string key, std::s
 }
 
 Range Range::closed(double lo, double hi) {
-  return {lo, hi, false, "a number in [" + fmt_double(lo) + ", " + fmt_double(hi) + "]"};
+  return {lo, hi, false, "a number in [" + format_number(lo) + ", " + format_number(hi) + "]"};
 }
 
 bool Range::contains(double v) const {
@@ -70,7 +71,7 @@ bool Range::contains(double v) const {
 std::string describe(const toml::node& n) {
   if (auto s = n.as_string()) return "the string \"" + s->get() + "\"";
   if (auto i = n.as_integer()) return std::to_string(i->get());
-  if (auto f = n.as_floating_point()) return fmt_double(f->get());
+  if (auto f = n.as_floating_point()) return format_number(f->get());
   if (auto b = n.as_boolean()) return b->get() ? "true" : "false";
   if (auto a = n.as_array()) return "an array of " + std::to_string(a->size()) + " element(s)";
   return type_name(n.type());
@@ -93,7 +94,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 
 std::string closest(std::string_view word, const std::vector<std::string_view>& candidates) {
   std::string best;
-  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+  std::size_t best_d = std::max<std::size_t>(2, (word.size() + 2) / 3) + 1;  // allow ~1 edit in 3
   for (std::string_view c : candidates) {
     const std::size_t d = edit_distance(word, c);
     if (d < best_d) best_d = d, best = std::string(c);
@@ -110,7 +111,7 @@ std::optional<double> read_number(const toml::node& n, const std::string& key, c
     return std::nullopt;
   }
   if (!r.contains(v)) {
-    d.error(n.source(), key, "expected " + r.what + ", found " + fmt_double(v));
+    d.error(n.source(), key, "expected " + r.what + ", found " + format_number(v));
     return std::nullopt;
   }
   return v;

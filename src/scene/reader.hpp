@@ -47,6 +47,8 @@ struct Range {
   bool contains(double v) const;
 };
 
+/// %.17g, the shortest text that round-trips.
+std::string format_number(double v);
 /// Short description of a value for "found ..." (type and value).
 std::string describe(const toml::node& n);
 /// Levenshtein distance (for did-you-mean).

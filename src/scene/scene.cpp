@@ -32,8 +32,6 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
       if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
       r.error("method", msg);
     }
-  } else {
-    sim.method = Method::splitting;
   }
   sim.dt = r.number("dt", Range::positive()).value_or(sim.dt);
   sim.duration = r.number("duration", Range::positive()).value_or(sim.duration);
@@ -41,9 +39,10 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
   sim.rtol = r.number("rtol", {0, 1, true, "a tolerance in (0, 1]"}).value_or(sim.rtol);
   sim.atol = r.number("atol", {0, 1e300, true, "a tolerance > 0"}).value_or(sim.atol);
   if (sim.dt > sim.duration)
-    r.error("dt", "expected dt <= duration (" + std::to_string(sim.duration) + " s), found " + std::to_string(sim.dt));
+    r.error("dt", "expected dt <= duration (" + detail::format_number(sim.duration) + " s), found " +
+                      detail::format_number(sim.dt));
   if (sim.duration * sim.fps > kMaxFrames)
-    r.error("fps", "duration × fps = " + std::to_string(sim.duration * sim.fps) + " exceeds the frame cap of " +
+    r.error("fps", "duration × fps = " + detail::format_number(sim.duration * sim.fps) + " exceeds the frame cap of " +
                        std::to_string(static_cast<long>(kMaxFrames)));
 }
 

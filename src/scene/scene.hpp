@@ -26,7 +26,7 @@ inline constexpr std::size_t kMaxBodies = 1000;
 inline constexpr double kMaxFrames = 1e6;                 ///< duration × fps
 
 struct SimulationConfig {
-  std::optional<Method> method;  ///< nullopt = "auto" (see resolve_method)
+  std::optional<Method> method = Method::splitting;  ///< nullopt = "auto" (see resolve_method)
   double dt = 1e-3;              ///< s
   double duration = 10;          ///< s
   double fps = 30;               ///< samples (frames) per second, 1/s
