@@ -10,6 +10,7 @@
 
 #include "render/dynamic_library.hpp"
 #include "render/gl_context.hpp"
+#include "render/gl_functions.hpp"
 
 namespace tumble::render {
 namespace {
@@ -56,11 +57,11 @@ class EglContext final : public GlContext {
     if (context_ == EGL_NO_CONTEXT) fail("cannot create a GL 3.3 core context");
     try {
       make_current();
-      gl_ = load_gl_functions(
+      gl_ = std::make_unique<GlFunctions>(load_gl_functions(
           [](void* self, const char* name) {
             return reinterpret_cast<void*>(static_cast<EglContext*>(self)->get_proc_(name));
           },
-          this);
+          this));
     } catch (...) {
       release();
       throw;

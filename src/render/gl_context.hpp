@@ -1,15 +1,17 @@
 // Headless GL context: one small interface, two backends (OSMesa, EGL
 // surfaceless). Each backend dlopens its library and owns the GL function
-// table, so nothing in the process links libGL.
+// table, so nothing in the process links libGL, and this header includes no
+// GL headers.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <string_view>
 
-#include "render/gl_functions.hpp"
 
 namespace tumble::render {
+
+struct GlFunctions;  // render/gl_functions.hpp; kept out of this header
 
 enum class GlBackend { osmesa, egl };
 
@@ -22,7 +24,7 @@ GlBackend default_gl_backend();
 
 class GlContext {
  public:
-  virtual ~GlContext() = default;
+  virtual ~GlContext();
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;
 
@@ -30,13 +32,14 @@ class GlContext {
   virtual void make_current() = 0;
   virtual GlBackend backend() const = 0;
 
-  const GlFunctions& gl() const { return gl_; }
+  /// Entry points loaded for this context (include render/gl_functions.hpp).
+  const GlFunctions& gl() const { return *gl_; }
   std::string version() const;   ///< GL_VERSION
   std::string renderer() const;  ///< GL_RENDERER
 
  protected:
-  GlContext() = default;
-  GlFunctions gl_;
+  GlContext();
+  std::unique_ptr<GlFunctions> gl_;  // set by the backend once current
 };
 
 /// Creates a current core-profile (>= 3.3) context. Throws std::runtime_error

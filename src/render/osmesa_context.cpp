@@ -9,6 +9,7 @@
 
 #include "render/dynamic_library.hpp"
 #include "render/gl_context.hpp"
+#include "render/gl_functions.hpp"
 
 namespace tumble::render {
 namespace {
@@ -51,11 +52,11 @@ class OsmesaContext final : public GlContext {
     }
     try {
       make_current();
-      gl_ = load_gl_functions(
+      gl_ = std::make_unique<GlFunctions>(load_gl_functions(
           [](void* self, const char* name) {
             return static_cast<OsmesaContext*>(self)->get_proc_(name);
           },
-          this);
+          this));
     } catch (...) {
       destroy_(ctx_);
       throw;

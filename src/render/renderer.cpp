@@ -2,6 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
+
+#include "render/font_atlas.hpp"
+#include "render/gl_functions.hpp"
+#include "render/instanced_mesh.hpp"
+#include "render/line_pass.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/shader_program.hpp"
+#include "render/text_pass.hpp"
+#include "render/view_batches.hpp"
+#include "render/view_layout.hpp"
 
 namespace tumble::render {
 namespace {
@@ -16,8 +28,58 @@ constexpr float kFlatBackground = 0.35f;
 
 }  // namespace
 
+// Everything GL lives here, so renderer.hpp stays free of GL headers.
+class Renderer::Impl {
+ public:
+  Impl(GlContext& context, int width, int height, int msaa,
+       const std::filesystem::path& resource_dir);
+  ~Impl();
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+
+  void render(const viz::DrawList& frame, Image& out);
+  const OffscreenTarget& target() const { return target_; }
+
+ private:
+  void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
+  void draw_background(const glm::vec3& background);
+  void draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color);
+  void draw_meshes(const ViewBatches& batches, const CameraMatrices& cam);
+  void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
+                 const PixelRect& rect);
+  void set_viewport(const PixelRect& rect);
+
+  GlContext& context_;
+  const GlFunctions& gl_;
+  FontAtlas font_;
+  OffscreenTarget target_;
+  ShaderProgram mesh_program_, background_program_;
+  InstancedMesh cube_, cylinder_, cone_, sphere_;
+  LinePass lines_;
+  TextPass text_;
+  GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
+};
+
 Renderer::Renderer(GlContext& context, int width, int height, int msaa,
                    const std::filesystem::path& resource_dir)
+    : impl_(std::make_unique<Impl>(context, width, height, msaa, resource_dir)) {}
+
+Renderer::~Renderer() = default;
+
+Image Renderer::render(const viz::DrawList& frame) {
+  Image img;
+  impl_->render(frame, img);
+  return img;
+}
+
+void Renderer::render(const viz::DrawList& frame, Image& out) { impl_->render(frame, out); }
+
+int Renderer::width() const { return impl_->target().width(); }
+int Renderer::height() const { return impl_->target().height(); }
+int Renderer::samples() const { return impl_->target().samples(); }
+
+Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
+                     const std::filesystem::path& resource_dir)
     : context_((context.make_current(), context)),  // current before any GL call
       gl_(context.gl()),
       font_(find_font_file(resource_dir)),
@@ -33,26 +95,20 @@ Renderer::Renderer(GlContext& context, int width, int height, int msaa,
       empty_vao_(make_vertex_array(gl_)) {}
 
 // GL objects are freed by their members; they need our context current.
-Renderer::~Renderer() {
+Renderer::Impl::~Impl() {
   try {
     context_.make_current();
   } catch (...) {  // nothing sensible to do in a destructor
   }
 }
 
-void Renderer::set_viewport(const PixelRect& rect) {
+void Renderer::Impl::set_viewport(const PixelRect& rect) {
   const int gl_y = target_.height() - (rect.y + rect.height);  // GL counts from the bottom
   gl_.Viewport(rect.x, gl_y, rect.width, rect.height);
   gl_.Scissor(rect.x, gl_y, rect.width, rect.height);
 }
 
-Image Renderer::render(const viz::DrawList& frame) {
-  Image img;
-  render(frame, img);
-  return img;
-}
-
-void Renderer::render(const viz::DrawList& frame, Image& out) {
+void Renderer::Impl::render(const viz::DrawList& frame, Image& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
@@ -83,7 +139,7 @@ void Renderer::render(const viz::DrawList& frame, Image& out) {
   target_.read_rgb(out);
 }
 
-void Renderer::draw_background(const glm::vec3& background) {
+void Renderer::Impl::draw_background(const glm::vec3& background) {
   gl_.Disable(GL_DEPTH_TEST);
   background_program_.use();
   background_program_.set("u_flat", kFlatBackground);
@@ -95,7 +151,7 @@ void Renderer::draw_background(const glm::vec3& background) {
 }
 
 // 1 px lines in the gaps view_rect leaves left of / above non-edge views.
-void Renderer::draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color) {
+void Renderer::Impl::draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color) {
   const float w = float(target_.width()), h = float(target_.height());
   auto ndc = [&](float x_px, float y_px) {
     return glm::vec3(x_px / w * 2.0f - 1.0f, 1.0f - y_px / h * 2.0f, 0.0f);
@@ -117,7 +173,7 @@ void Renderer::draw_separators(const std::vector<PixelRect>& rects, const glm::v
   lines_.draw(lines, glm::mat4(1.0f), 1.0f);
 }
 
-void Renderer::draw_view(const viz::View& view, const PixelRect& rect,
+void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
                          const glm::vec3& background) {
   set_viewport(rect);
   draw_background(background);
@@ -147,7 +203,7 @@ void Renderer::draw_view(const viz::View& view, const PixelRect& rect,
   draw_text(view.texts, view.label, rect);
 }
 
-void Renderer::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam) {
+void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam) {
   mesh_program_.use();
   mesh_program_.set("u_view", cam.view);
   mesh_program_.set("u_proj", cam.proj);
@@ -178,7 +234,7 @@ void Renderer::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam
   gl_.DepthMask(GL_TRUE);
 }
 
-void Renderer::draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
+void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
                          const PixelRect& rect) {
   std::vector<TextVertex> quads;
   if (!label.empty()) {

@@ -1,21 +1,14 @@
 // Draws a viz::DrawList into an offscreen MSAA framebuffer and returns the
 // pixels. Meshes, shaders and the font atlas are created once per Renderer.
+// No GL headers leak from here: the GL state lives in Renderer::Impl.
 #pragma once
 
 #include <filesystem>
-#include <vector>
+#include <memory>
 
-#include "render/font_atlas.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
-#include "render/instanced_mesh.hpp"
-#include "render/line_pass.hpp"
-#include "render/offscreen_target.hpp"
 #include "render/resource_dir.hpp"
-#include "render/shader_program.hpp"
-#include "render/text_pass.hpp"
-#include "render/view_batches.hpp"
-#include "render/view_layout.hpp"
 #include "viz/draw_list.hpp"
 
 namespace tumble::render {
@@ -23,40 +16,29 @@ namespace tumble::render {
 class Renderer {
  public:
   /// `context` must outlive the renderer. `msaa` is 0 (off), 2 or 4 (clamped
-  /// to GL_MAX_SAMPLES). Shaders come from `resource_dir`/shaders.
+  /// to GL_MAX_SAMPLES). Shaders come from `resource_dir`/shaders, the font
+  /// from `resource_dir`/fonts or the system DejaVu. Throws std::runtime_error
+  /// on missing resources, shader errors or an incomplete framebuffer.
   Renderer(GlContext& context, int width, int height, int msaa = 4,
            const std::filesystem::path& resource_dir = find_resource_dir());
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  /// Renders all views (grid of `columns`, row-major) plus overlays.
+  /// Renders all views (grid of `columns`, row-major, each view's label in
+  /// its top-left corner) plus the frame overlay texts. Makes the context
+  /// current on the calling thread.
   Image render(const viz::DrawList& frame);
   /// Same, into `out`, reusing its pixel storage (cheaper in a frame loop).
   void render(const viz::DrawList& frame, Image& out);
 
-  int width() const { return target_.width(); }
-  int height() const { return target_.height(); }
-  int samples() const { return target_.samples(); }  ///< after clamping
+  int width() const;
+  int height() const;
+  int samples() const;  ///< MSAA samples after clamping (0 = off)
 
  private:
-  void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
-  void draw_background(const glm::vec3& background);
-  void draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color);
-  void draw_meshes(const ViewBatches& batches, const CameraMatrices& cam);
-  void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
-                 const PixelRect& rect);
-  void set_viewport(const PixelRect& rect);
-
-  GlContext& context_;
-  const GlFunctions& gl_;
-  FontAtlas font_;
-  OffscreenTarget target_;
-  ShaderProgram mesh_program_, background_program_;
-  InstancedMesh cube_, cylinder_, cone_, sphere_;
-  LinePass lines_;
-  TextPass text_;
-  GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
+  class Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace tumble::render
