@@ -136,11 +136,5 @@ INSTANTIATE_TEST_SUITE_P(Backends, RenderTest,
                                          Case{GlBackend::egl, 0}, Case{GlBackend::egl, 4}),
                          case_name);
 
-TEST(GlBackendName, ParsesKnownNamesOnly) {
-  EXPECT_EQ(parse_gl_backend("osmesa"), GlBackend::osmesa);
-  EXPECT_EQ(parse_gl_backend("egl"), GlBackend::egl);
-  EXPECT_THROW(parse_gl_backend("glx"), std::invalid_argument);
-}
-
 }  // namespace
 }  // namespace tumble::render
