@@ -91,7 +91,7 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   double k2 = (J2_ - J1_) * x1 / ((J3_ - J2_) * x3);
   k2 = std::clamp(k2, 0.0, 1.0);
   k_ = std::sqrt(k2);
-  periodic_ = k2 < 1.0;
+  periodic_ = k_ < 1.0;  // k2 just below 1 can round to k = 1, where K is infinite
   const double kc2 = complementary(k_);
   K_ = periodic_ ? boost::math::ellint_rf(0.0, kc2, 1.0) : std::numeric_limits<double>::infinity();
   mu_ = (J2_ - J1_) / (J3_ - J2_);
@@ -119,7 +119,11 @@ FreeRotationExact::Phase FreeRotationExact::phase(double tau) const {
   if (!periodic_) {
     ph.sn = std::tanh(tau);
     ph.cn = ph.dn = 1.0 / std::cosh(tau);
-    ph.g = g_reduced(0.0, nu_, ph.sn, ph.cn);
+    // On the separatrix (k = 1) G has a closed form, G(τ) = τ/(1+ν) - atan(√ν tanh τ)/((1+ν)√ν).
+    // Only its bounded part is kept here; orientation() adds ωp t/(1+ν), so that
+    // τ0 = ±∞ (a spin exactly about the intermediate axis) gives ΔG = ωp t/(1+ν).
+    const double rn = std::sqrt(nu_);
+    ph.g = -std::atan(rn * ph.sn) / ((1 + nu_) * rn);
     return ph;
   }
   const double m4 = std::round(tau / (4 * K_));
@@ -166,7 +170,8 @@ Eigen::Quaterniond FreeRotationExact::orientation(double t) const {
   }
   const Phase ph = phase(wp_ * t + tau0_);
   // φ' = (l/J1)(1 + μ sn²)/(1 + ν sn²) integrates to (l/J1)(t + (μ - ν)/ωp ΔG).
-  const double dphi = t == 0.0 ? 0.0 : (l_ / J1_) * (t + (mu_ - nu_) / wp_ * (ph.g - G_tau0_));
+  const double dG = ph.g - G_tau0_ + (periodic_ ? 0.0 : wp_ * t / (1 + nu_));
+  const double dphi = t == 0.0 ? 0.0 : (l_ / J1_) * (t + (mu_ - nu_) / wp_ * dG);
   // R(t) = R_L Rz(φ) B(τ) P, with R_L Rz(φ0) = R0 (B(τ0) P)ᵀ: L̂ is the L-frame's z in world.
   const Eigen::Quaterniond qz = quat_exp(dphi / l_ * L_);  // world rotation about L by Δφ
   return (qz * q_frame0_ * body_from_elliptic(ph)).normalized();
