@@ -147,5 +147,34 @@ TEST(ExactSolution, SymmetricAndSphericalBodiesMatchFineRk4) {
   }
 }
 
+// On and at the separatrix: a spin about the intermediate axis (an unstable
+// equilibrium: it must keep spinning at Π2/I2, not stop or precess at another
+// rate), and a state on the separatrix (l² = 2E·I2, k = 1: the non-periodic
+// branch) checked against fine RK4 while it leaves the unstable axis.
+TEST(ExactSolution, IntermediateAxisSpinAndSeparatrix) {
+  const RigidBodyModel m = testing::body_with_moments({1, 2, 3});
+  const Eigen::Quaterniond q0 = Eigen::Quaterniond(0.8, 0.2, -0.4, 0.4).normalized();
+  for (int n = 0; n < 20; ++n) {  // several orientations: different round-off off the axis
+    const Eigen::Quaterniond qn = q0 * axis_rotation(1, 0.37 * n);
+    const BodyState s = testing::spinning_state(m, qn, {0, 2.0, 0});
+    const FreeRotationExact ex(m.inertia, s.q, s.L);
+    for (double t : {0.05, 0.5, 1.5}) {
+      EXPECT_LT(rotation_angle_between(ex.orientation(t), qn * axis_rotation(1, 2.0 * t)), 1e-12)
+          << "n=" << n << " t=" << t;
+    }
+  }
+  // Π = (a, b, √3 a) with I = (1, 2, 3): Π1²(1/I1 - 1/I2) = Π3²(1/I2 - 1/I3), so 2E·I2 = l².
+  const double a = 0.2;
+  BodyState s0;
+  s0.q = q0;
+  s0.L = q0 * Eigen::Vector3d(a, 3.0, std::sqrt(3.0) * a);
+  const FreeRotationExact ex(m.inertia, s0.q, s0.L);
+  BodyState s = s0;
+  for (int k = 1; k <= 4; ++k) {
+    s = rk4_fine(m, s, 0.5, 1e-5);
+    EXPECT_LT(rotation_angle_between(s.q, ex.orientation(0.5 * k)), 1e-9) << "t=" << 0.5 * k;
+  }
+}
+
 }  // namespace
 }  // namespace tumble
