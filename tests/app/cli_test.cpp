@@ -1,0 +1,166 @@
+// `tumble` end to end: output formats, exit codes, atomic CSV.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "app/atomic_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = TUMBLE_SOURCE_DIR;
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+class Cli : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("tumble_cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result run(const std::string& args) const {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string cmd = std::string("'") + TUMBLE_BIN + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  }
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  static std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  }
+  static std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream in(line);
+    for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+    return out;
+  }
+  std::string scene(const char* name) const { return "'" + (kSource / "scenes" / name).string() + "'"; }
+  fs::path dir_;
+};
+
+constexpr const char* kHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy";
+
+TEST_F(Cli, Version) {
+  const Result r = run("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("tumble ", 0), 0u) << r.out;
+}
+
+TEST_F(Cli, SimulateWritesHeaderAndEndsAtDuration) {
+  const fs::path csv = dir_ / "ref.csv";
+  const Result r = run("simulate " + scene("reference.toml") + " --csv '" + csv.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto l = lines(slurp(csv));
+  ASSERT_EQ(l.size(), 1u + 301u);  // header + frames k/30 for k = 0..300
+  EXPECT_EQ(l[0], kHeader);
+  const auto first = split(l[1]), last = split(l.back());
+  ASSERT_EQ(first.size(), 19u);
+  EXPECT_EQ(first[0], "0");
+  EXPECT_EQ(first[1], "reference");
+  EXPECT_EQ(last[0], "10");
+  EXPECT_EQ(first[15], "0.01");  // L = I ω_body at identity orientation: (0.01, 20, 0.03)
+  EXPECT_EQ(first[16], "20");
+  EXPECT_NEAR(std::stod(first[18]), 100.0002, 1e-10);  // energy ½ Σ I ω²
+  EXPECT_NEAR(std::stod(last[18]), 100.0002, 1e-4);    // splitting: bounded energy error
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "temp file left: " << e.path();
+}
+
+TEST_F(Cli, SimulateOverridesAndEvery) {
+  const fs::path csv = dir_ / "every.csv";
+  const Result r = run("simulate " + scene("stable_spin.toml") + " --csv '" + csv.string() +
+                    "' --method rk4 --dt 0.01 --duration 1.05 --every 10");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto l = lines(slurp(csv));
+  // t = 0, 0.1, ..., 1.0, then the final 1.05: 12 samples × 3 bodies.
+  ASSERT_EQ(l.size(), 1u + 12u * 3u);
+  EXPECT_EQ(split(l[4])[0], "0.10000000000000001");
+  for (std::size_t k = l.size() - 3; k < l.size(); ++k) EXPECT_EQ(split(l[k])[0], "1.05");
+  EXPECT_EQ(split(l.back())[1], "major");
+}
+
+TEST_F(Cli, InfoJsonForTheReferenceScene) {
+  const Result r = run("info " + scene("reference.toml") + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* s : {"\"name\": \"reference\"", "\"mass\": 3,", "\"com\": [0, 0, 0]",
+                        "\"inertia\": [[1, 0, 0], [0, 2, 0], [0, 0, 3]]", "\"principal_moments\": [1, 2, 3]",
+                        "\"principal_axes\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]",
+                        "\"box\": {\"center\": [0, 0, 0], \"half_extents\": [1, 1, 0]}"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+  EXPECT_EQ(r.out.rfind("{\n  \"bodies\": [", 0), 0u);
+}
+
+TEST_F(Cli, InfoTextNamesEveryBody) {
+  const Result r = run("info " + scene("stable_spin.toml"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* b : {"body minor", "body intermediate", "body major"}) EXPECT_NE(r.out.find(b), std::string::npos);
+}
+
+TEST_F(Cli, InputErrorsExitWith2) {
+  const fs::path broken = kSource / "tests/scene/broken/negative_dt.toml";
+  Result r = run("simulate '" + broken.string() + "' --csv '" + (dir_ / "x.csv").string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find(broken.string() + ":3:6: error: simulation.dt:"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x.csv"));
+  EXPECT_EQ(run("info '" + (dir_ / "missing.toml").string() + "'").code, 2);
+  EXPECT_EQ(run("simulate " + scene("reference.toml") + " --csv '" + (dir_ / "x.csv").string() + "' --method rk5").code, 2);
+  EXPECT_EQ(run("simulate " + scene("reference.toml") + " --csv '" + (dir_ / "x.csv").string() + "' --dt 20").code, 2);
+  EXPECT_EQ(run("simulate " + scene("reference.toml")).code, 2);  // --csv is required
+  EXPECT_EQ(run("frobnicate").code, 2);
+}
+
+TEST_F(Cli, DivergenceExits3AndKeepsRows) {
+  const fs::path csv = dir_ / "d.csv";
+  const Result r = run("simulate '" + (kSource / "tests/app/data/diverges_under_euler.toml").string() + "' --csv '" +
+                    csv.string() + "'");
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("diverged at t="), std::string::npos) << r.err;
+  const auto l = lines(slurp(csv));
+  ASSERT_GT(l.size(), 10u);
+  EXPECT_EQ(l[0], kHeader);
+  EXPECT_EQ(split(l[1])[0], "0");
+}
+
+TEST_F(Cli, UnwritableCsvIsAnIoError) {
+  const Result r = run("simulate " + scene("reference.toml") + " --csv '" + (dir_ / "no/such/dir/x.csv").string() + "'");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AtomicFileLeavesNothingWithoutCommit) {
+  const fs::path p = dir_ / "a.txt";
+  {
+    tumble::app::AtomicFile f(p);
+    f.write("partial");
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));
+  tumble::app::atomic_write_file(p, "whole");
+  EXPECT_EQ(slurp(p), "whole");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+}  // namespace
