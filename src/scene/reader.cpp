@@ -53,6 +53,14 @@ void Diagnostics::error(const toml::source_region& at, std::string key, std::str
   errors_.push_back(make(at, std::move(key), std::move(message)));
 }
 
+std::vector<Diagnostic> Diagnostics::take_errors() {
+  const auto end = errors_.size() > kMaxErrors ? errors_.end() - 1 : errors_.end();
+  std::stable_sort(errors_.begin(), end, [](const Diagnostic& a, const Diagnostic& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  return std::move(errors_);
+}
+
 void Diagnostics::warning(const toml::source_region& at, std::string key, std::string message) {
   const Diagnostic dg = make(at, std::move(key), std::move(message));
   warnings_.push_back(dg.file + ":" + std::to_string(dg.line) + ":" + std::to_string(dg.column) +

@@ -23,7 +23,8 @@ class Diagnostics {
   void warning(const toml::source_region& at, std::string key, std::string message);
   bool ok() const { return errors_.empty(); }
   std::size_t error_count() const { return errors_.size(); }
-  std::vector<Diagnostic> take_errors() { return std::move(errors_); }
+  /// Errors in file order (the "too many errors" marker stays last).
+  std::vector<Diagnostic> take_errors();
   std::vector<std::string> take_warnings() { return std::move(warnings_); }
   const std::string& file() const { return file_; }
 
