@@ -18,6 +18,7 @@ using Action = std::function<int()>;
 
 void add_simulate_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
+void add_render_command(CLI::App& app, Action& action);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);

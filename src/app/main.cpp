@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "bench/cli.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tumble: free rigid bodies from particle clouds", "tumble"};
@@ -10,6 +11,10 @@ int main(int argc, char** argv) {
   tumble::app::Action action;
   tumble::app::add_simulate_command(app, action);
   tumble::app::add_info_command(app, action);
+#ifdef TUMBLE_HAVE_RENDER
+  tumble::app::add_render_command(app, action);
+#endif
+  tumble::bench::add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -10,13 +10,6 @@
 
 namespace tumble::app {
 
-VideoFormat parse_video_format(const std::string& s) {
-  if (s == "mp4") return VideoFormat::mp4;
-  if (s == "gif") return VideoFormat::gif;
-  if (s == "none") return VideoFormat::none;
-  throw std::invalid_argument("video format must be mp4, gif or none, found '" + s + "'");
-}
-
 bool ffmpeg_available() {
   const char* path = std::getenv("PATH");
   if (!path) return false;

@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <string>
 
+#include "scene/scene.hpp"
+
 namespace tumble::app {
 
-enum class VideoFormat { none, mp4, gif };
-
-VideoFormat parse_video_format(const std::string& s);  ///< "mp4" | "gif" | "none"
+using scene::VideoFormat;
 
 /// True when an `ffmpeg` executable is on PATH.
 bool ffmpeg_available();

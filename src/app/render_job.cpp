@@ -1,0 +1,177 @@
+#include "app/render_job.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/dynamics.hpp"
+#include "core/error.hpp"
+#include "core/propagator.hpp"
+
+namespace tumble::app {
+
+long frame_count(double duration, double fps) {
+  return static_cast<long>(std::floor(duration * fps * (1 + 1e-12))) + 1;
+}
+
+std::pair<long, long> parse_frame_range(const std::string& spec, long count) {
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos) throw InputError("--frames: expected A:B (inclusive frame numbers), found '" + spec + "'");
+  auto num = [&](const std::string& s, long dflt) -> long {
+    if (s.empty()) return dflt;
+    size_t used = 0;
+    long v = -1;
+    try {
+      v = std::stol(s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != s.size() || v < 0) throw InputError("--frames: expected a frame number >= 0, found '" + s + "'");
+    return v;
+  };
+  const long a = num(spec.substr(0, colon), 0), b = num(spec.substr(colon + 1), count - 1);
+  if (a > b || b >= count)
+    throw InputError("--frames " + spec + ": the scene has frames 0:" + std::to_string(count - 1));
+  return {a, b};
+}
+
+std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
+  std::vector<std::optional<Method>> methods;
+  for (Method m : s.render.compare_methods) methods.push_back(m);
+  if (methods.empty()) methods.push_back(s.simulation.method);
+  std::vector<Run> runs;
+  for (const auto& method : methods) {
+    Run run;
+    scene::SimulationConfig sim = s.simulation;
+    sim.method = method;
+    std::vector<std::unique_ptr<Propagator>> props;
+    for (const scene::Body& b : s.bodies) {
+      props.push_back(std::make_unique<Propagator>(b.model, b.initial, scene::step_config(sim, b.model)));
+      run.energy0.push_back(total_energy(b.model, b.initial));
+      const std::string name(method_name(scene::resolve_method(method, b.model)));
+      if (run.label.find(name) == std::string::npos) run.label += (run.label.empty() ? "" : "/") + name;
+    }
+    try {
+      for (long k = 0; k < frames; ++k) {
+        const double t = static_cast<double>(k) / fps;
+        std::vector<BodyState> states;
+        for (auto& p : props) states.push_back(p->advance_to(t));
+        run.frames.push_back(std::move(states));
+      }
+    } catch (const Diverged& e) {
+      run.diverged = e.what();
+    }
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+namespace {
+
+viz::Color rgba(const Eigen::Vector3d& c, float a) {
+  return {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()), a};
+}
+glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vector<BodyState>& states) {
+  std::vector<viz::BodySnapshot> out;
+  for (size_t i = 0; i < s.bodies.size() && i < states.size(); ++i)
+    out.push_back({&s.bodies[i].model, &s.bodies[i].cloud, states[i], rgba(s.bodies[i].color, 0.38f)});
+  return out;
+}
+
+}  // namespace
+
+FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height)
+    : scene_(s), runs_(runs), fps_(fps), height_(height) {
+  const int n = std::max<int>(1, static_cast<int>(runs.size()));
+  columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  rows_ = (n + columns_ - 1) / columns_;
+  const scene::DrawConfig& d = s.render.draw;
+  draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
+  const scene::CameraConfig& c = s.render.camera;
+  const double aspect = (static_cast<double>(width) / columns_) / (static_cast<double>(height) / rows_);
+  if (c.automatic) {
+    // Frame every body over the whole run (all runs: a failing method may drift).
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (const Run& r : runs)
+      for (const auto& states : r.frames)
+        for (size_t i = 0; i < states.size(); ++i) {
+          if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
+          centres.push_back(to_glm(states[i].c));
+          radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
+        }
+    camera_ = viz::auto_camera(centres, radii, c.fov_y_deg, aspect);
+  } else {
+    camera_.position = to_glm(c.position);
+    camera_.target = to_glm(c.target);
+    camera_.up = to_glm(c.up);
+    camera_.fov_y_deg = c.fov_y_deg;
+  }
+  // Trails see every frame from t = 0, so a frame range draws what a full run does.
+  trails_.resize(runs.size());
+  if (draw_.trail_seconds > 0)
+    for (size_t r = 0; r < runs.size(); ++r)
+      for (size_t k = 0; k < runs[r].frames.size(); ++k)
+        trails_[r].record(static_cast<double>(k) / fps, snapshots(s, runs[r].frames[k]));
+}
+
+viz::DrawList FrameBuilder::build(long k) const {
+  viz::DrawList dl;
+  const Eigen::Vector3d& bg = scene_.render.output.background;
+  dl.background = rgba(bg, 1.0f);
+  dl.columns = columns_;
+  const double t = static_cast<double>(k) / fps_;
+  const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
+  for (size_t r = 0; r < runs_.size(); ++r) {
+    const Run& run = runs_[r];
+    viz::View v;
+    v.camera = camera_;
+    v.label = runs_.size() > 1 ? run.label : "";
+    const long last = static_cast<long>(run.frames.size()) - 1;
+    const long kk = std::min(k, last);
+    if (kk >= 0) {
+      const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)]);
+      const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
+      if (follow) {
+        const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
+        v.camera.position += c - v.camera.target;
+        v.camera.target = c;
+      }
+      viz::add_bodies(v, snaps, draw_, &trails_[r], static_cast<double>(kk) / fps_);
+      if (draw_.grid) {
+        double zmin = 1e300;
+        for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
+        v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
+      }
+      if (scene_.render.draw.overlay) {
+        // Largest relative energy error over the bodies: the failure users look for.
+        double rel = 0;
+        for (size_t i = 0; i < snaps.size(); ++i) {
+          const double e0 = run.energy0[i];
+          const double e = total_energy(*snaps[i].model, snaps[i].state);
+          rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
+        }
+        char line[160];
+        std::snprintf(line, sizeof line, "t = %6.2f s   %s   dt = %g s   |dE/E| = %.1e", t, run.label.c_str(),
+                      scene_.simulation.dt, rel);
+        v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 34.0f : 12.0f}, 17.0f, ink});
+      }
+    }
+    if (run.diverged && k > last)
+      v.texts.push_back({"diverged: stopped at t = " + std::to_string(static_cast<double>(last) / fps_).substr(0, 6) + " s",
+                         {12.0f, 58.0f}, 17.0f, {0.75f, 0.1f, 0.1f, 1.0f}});
+    dl.views.push_back(std::move(v));
+  }
+  if (scene_.render.draw.legend && scene_.render.draw.axes) {
+    std::string legend = "principal axes:  red = smallest moment   green = intermediate   blue = largest";
+    if (draw_.angular_momentum) legend += "   orange = L";
+    if (draw_.omega) legend += "   purple = omega";
+    dl.texts.push_back({legend, {12.0f, static_cast<float>(height_) - 26.0f}, 15.0f, ink});
+  }
+  return dl;
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,51 @@
+// `tumble render`: simulate a scene at its frame times, draw each frame
+// headless, write PNGs atomically, a manifest and a video.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/body.hpp"
+#include "scene/scene.hpp"
+#include "viz/draw_list.hpp"
+#include "viz/scene_view.hpp"
+
+namespace tumble::app {
+
+/// One simulated run of all bodies with one method (several in a comparison),
+/// stored at every frame time t_k = k/fps.
+struct Run {
+  std::string label;                        ///< method name(s)
+  std::vector<std::vector<BodyState>> frames;  ///< [frame][body]
+  std::vector<double> energy0;              ///< per body, J
+  std::optional<std::string> diverged;      ///< message, when the run stopped early
+};
+
+/// Simulates `runs` (one per method of [compare], else the scene's) up to
+/// `frame_count` frames at `fps`. A diverging run keeps its frames so far.
+std::vector<Run> simulate_runs(const scene::Scene& s, long frame_count, double fps);
+
+/// Everything drawn for frame k (GL-free, so tests can inspect it).
+class FrameBuilder {
+ public:
+  FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height);
+  viz::DrawList build(long k) const;
+
+ private:
+  const scene::Scene& scene_;
+  const std::vector<Run>& runs_;
+  double fps_;
+  int height_, columns_, rows_;
+  viz::DrawOptions draw_;
+  viz::Camera camera_;
+  std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
+};
+
+/// Number of frames of a run: t_k = k/fps for k = 0 … ⌊duration·fps⌋.
+long frame_count(double duration, double fps);
+
+/// Parses "A:B" (inclusive, either end may be empty) against `count` frames.
+std::pair<long, long> parse_frame_range(const std::string& spec, long count);
+
+}  // namespace tumble::app
