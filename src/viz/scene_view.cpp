@@ -26,7 +26,7 @@ double largest_half_extent(const RigidBodyModel& m) { return m.box.half_extents.
 
 glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i) {
   const double to_face = m.box.center[i] + m.box.half_extents[i];
-  const double len = std::max(to_face, 0.3 * largest_half_extent(m));
+  const double len = std::max(kAxisOvershoot * to_face, 0.45 * largest_half_extent(m));
   Eigen::Vector3d e = Eigen::Vector3d::Zero();
   e[i] = len;
   return to_glm(s.c + s.q * e);
@@ -72,9 +72,11 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
         view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i]});
     if (opt.particles && b.cloud) {
       const Eigen::Quaterniond qc = cloud_orientation(m, s);
-      const double r = 0.02 * size;
+      const double r = 0.012 * size;
+      Color pc = b.color * 0.75f;
+      pc.a = 1.0f;
       for (const Particle& p : *b.cloud)
-        view.points.push_back({to_glm(s.c + qc * (p.position - m.com_cloud)), r, {0.2f, 0.2f, 0.25f, 1}});
+        view.points.push_back({to_glm(s.c + qc * (p.position - m.com_cloud)), r, pc});
     }
     // L and ω show direction only (their magnitudes have other units than
     // length), at a fixed multiple of the body's size.

@@ -35,9 +35,12 @@ inline const Color kAxisColors[3] = {{0.86f, 0.15f, 0.15f, 1}, {0.12f, 0.62f, 0.
 inline const Color kLColor{0.95f, 0.60f, 0.05f, 1};
 inline const Color kOmegaColor{0.60f, 0.20f, 0.75f, 1};
 
+/// Axis arrows reach past the box face by this factor, so their heads stay visible.
+inline constexpr double kAxisOvershoot = 1.3;
+
 /// World position of the tip of principal axis `i` (0..2) of a body: the axis
-/// runs from the centre of mass to the box face (at least 30% of the largest
-/// half extent, so a flat body still shows all three axes).
+/// runs from the centre of mass through the box face (at least 45% of the
+/// largest half extent, so a flat body still shows all three axes).
 glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i);
 
 /// Per-body history of axis-tip positions, for trails. Fed every frame from
