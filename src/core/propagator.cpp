@@ -21,7 +21,8 @@ Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepC
 }
 
 void Propagator::check(double h) {
-  bool bad = !s_.all_finite();
+  // A quaternion whose norm overflowed normalises to 0 yet stays finite.
+  bool bad = !s_.all_finite() || std::abs(s_.q.squaredNorm() - 1.0) > 1e-6;
   // Torque-free: kinetic energy is an invariant; ×10 growth means the method blew up.
   if (!bad && torque_free_) {
     const double e = total_energy(*m_, s_);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/LU>
+
 #include "core/dynamics.hpp"
 #include "core/quaternion.hpp"
 
@@ -43,15 +45,25 @@ void free_rotation_midpoint(const RigidBodyModel& m, const Eigen::Vector3d& L,
                             Eigen::Quaterniond& q, double h) {
   const Eigen::Vector3d& inv_inertia = m.inv_inertia;
   const Eigen::Vector3d pi0 = q.conjugate() * L;
-  // Πm = Π₀ + (h/2) Πm × I⁻¹Πm, by fixed-point iteration (a contraction for
-  // h|ω| < 1); iterate until the update stops changing bits that matter.
+  // Πm = Π₀ + (h/2) Πm × I⁻¹Πm, solved by Newton's method: the fixed-point
+  // iteration only contracts for h|ω| < ~1 and returns NaN beyond. With
+  // W = I⁻¹, the Jacobian of F(a) = a - Π₀ - (h/2) a × Wa is
+  // 1 - (h/2)([a]× W - [Wa]×).
+  auto skew = [](const Eigen::Vector3d& v) {
+    Eigen::Matrix3d k;
+    k << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return k;
+  };
   Eigen::Vector3d pim = pi0;
-  const double tol = 1e-16 * pi0.norm();
-  for (int it = 0; it < 200; ++it) {
-    const Eigen::Vector3d next = pi0 + 0.5 * h * pim.cross(inv_inertia.cwiseProduct(pim));
-    const double change = (next - pim).lpNorm<Eigen::Infinity>();
-    pim = next;
-    if (change <= tol) break;
+  const double tol = 4e-16 * pi0.norm();
+  for (int it = 0; it < 50; ++it) {
+    const Eigen::Vector3d wa = inv_inertia.cwiseProduct(pim);
+    const Eigen::Vector3d f = pim - pi0 - 0.5 * h * pim.cross(wa);
+    const Eigen::Matrix3d jac =
+        Eigen::Matrix3d::Identity() - 0.5 * h * (skew(pim) * inv_inertia.asDiagonal() - skew(wa));
+    const Eigen::Vector3d delta = jac.partialPivLu().solve(f);
+    pim -= delta;
+    if (delta.lpNorm<Eigen::Infinity>() <= tol) break;
   }
   const Eigen::Vector3d half = 0.5 * h * inv_inertia.cwiseProduct(pim);
   q = (q * Eigen::Quaterniond(1.0, half.x(), half.y(), half.z()).normalized()).normalized();
