@@ -45,7 +45,12 @@ const char* kHeader =
     "set terminal pngcairo size 1500,650 font 'sans,11'\n"
     "set grid\nset key outside right top spacing 1.1\n"
     "set style data linespoints\nset pointsize 0.8\n"
-    "set format y '10^{%L}'\nset format x '10^{%L}'\nset logscale xy\n";
+    "set format y '10^{%L}'\nset format x '10^{%L}'\nset logscale xy\n"
+    // Curves 9+ (the peers) get their own colours, dashed, so none repeats a method's style.
+    "set linetype 9 lc rgb '#8c564b' dt 2 pt 4\nset linetype 10 lc rgb '#e377c2' dt 2 pt 5\n"
+    "set linetype 11 lc rgb '#7f7f7f' dt 2 pt 6\nset linetype 12 lc rgb '#bcbd22' dt 2 pt 7\n"
+    "set linetype 13 lc rgb '#17becf' dt 2 pt 8\nset linetype 14 lc rgb '#000080' dt 2 pt 10\n"
+    "set linetype 15 lc rgb '#ff1493' dt 2 pt 12\nset linetype 16 lc rgb '#556b2f' dt 2 pt 14\n";
 
 // Writes NAME.dat and NAME.gp into dir and runs gnuplot there.
 std::vector<std::filesystem::path> draw(const std::filesystem::path& dir, const std::string& name,
@@ -64,7 +69,7 @@ std::vector<std::filesystem::path> draw(const std::filesystem::path& dir, const 
 
 std::string plot_blocks(const std::string& file, const Blocks& b, const std::string& cols) {
   return "names = '" + b.words() + "'\nplot for [i=1:words(names)] '" + file + "' index (i-1) using " + cols +
-         " title word(names, i) noenhanced\n";
+         " lt i title word(names, i) noenhanced\n";
 }
 
 }  // namespace
@@ -82,7 +87,7 @@ std::vector<std::filesystem::path> chart_work_precision(const std::filesystem::p
   for (const auto& [problem, b] : per_problem) {
     const std::string name = "work_precision_" + problem, dat = name + ".dat";
     std::string gp = std::string(kHeader) + "set multiplot layout 1,2 title 'Work-precision: " + problem +
-                     " (error at t = 10 s; lower-left is better; errors of 0 drawn at 10^{-17})' noenhanced\n";
+                     " (error at t = 10 s; lower-left is better; errors of 0 drawn at 1e-17)' noenhanced\n";
     gp += "set xlabel 'CPU time per 10 s run (s)'\nset ylabel 'orientation error (rad)'\nunset key\n";
     gp += plot_blocks(dat, b, "1:2");
     gp += "set ylabel 'relative energy error |E-E_{ref}|/E_{ref}'\nset key outside right top noenhanced\n";
@@ -144,12 +149,13 @@ std::vector<std::filesystem::path> chart_stability(const std::filesystem::path& 
       "set cbrange [-0.5:3.5]\nset palette maxcolors 4\n"
       "set palette defined (0 '#2ca02c', 1 '#f2c80f', 2 '#ff7f0e', 3 '#d62728')\n"
       "set cbtics ('ok' 0, 'inaccurate (>1%%)' 1, 'wrong (flips/axis)' 2, 'diverged' 3)\nunset key\n"
+      "set xrange [3e-5:1]\nset yrange [0.5:200]\n"
       "set xlabel 'step dt (s)'\nset ylabel 'spin rate {/Symbol W} (rad/s)'\nset style fill solid 1.0 border lc 'white'\n"
       "set multiplot layout 2,4 title 'Stability map: T-handle (moments 1, 2, 3 kg m^2) spun at {/Symbol W} about "
-      "the intermediate axis (flip count, error at ~10 s) and the major/minor axes (tip-over)'\n";
+      "the intermediate axis (flip count, error at about 10 s) and the major/minor axes (tip-over)'\n";
   for (size_t i = 0; i < b.names.size(); ++i) {
     gp += "set title '" + b.names[i] + "' noenhanced\n";
-    gp += i + 1 == b.names.size() ? "set colorbox\n" : "unset colorbox\n";
+    gp += i + 1 == b.names.size() ? "set colorbox\nset rmargin 14\n" : "unset colorbox\n";
     gp += "plot 'stability_map.dat' index " + std::to_string(i) + " using 1:2:3:4:5:6:7 with boxxyerror lc palette\n";
   }
   gp += "unset multiplot\n";
