@@ -19,6 +19,9 @@ using Action = std::function<int()>;
 void add_simulate_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
+void add_compare_command(CLI::App& app, Action& action);
+void add_golden_command(CLI::App& app, Action& action);
+void add_bench_command(CLI::App& app, Action& action);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);

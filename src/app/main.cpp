@@ -2,7 +2,6 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
-#include "bench/cli.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tumble: free rigid bodies from particle clouds", "tumble"};
@@ -13,8 +12,10 @@ int main(int argc, char** argv) {
   tumble::app::add_info_command(app, action);
 #ifdef TUMBLE_HAVE_RENDER
   tumble::app::add_render_command(app, action);
+  tumble::app::add_compare_command(app, action);
+  tumble::app::add_golden_command(app, action);
 #endif
-  tumble::bench::add_bench_command(app);
+  tumble::app::add_bench_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
