@@ -88,6 +88,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
   const int n = std::max<int>(1, static_cast<int>(runs.size()));
   columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
   rows_ = (n + columns_ - 1) / columns_;
+  font_px_ = std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f);
   const scene::DrawConfig& d = s.render.draw;
   draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
   const scene::CameraConfig& c = s.render.camera;
@@ -154,15 +155,20 @@ viz::DrawList FrameBuilder::build(long k) const {
           const double e = total_energy(*snaps[i].model, snaps[i].state);
           rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
         }
+        // In a comparison grid the label names the method; keep the line short
+        // and the font in proportion to the viewport.
         char line[160];
-        std::snprintf(line, sizeof line, "t = %6.2f s   %s   dt = %g s   |dE/E| = %.1e", t, run.label.c_str(),
-                      scene_.simulation.dt, rel);
-        v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 34.0f : 12.0f}, 17.0f, ink});
+        if (runs_.size() > 1)
+          std::snprintf(line, sizeof line, "t = %.2f s   dt = %g s   |dE/E| = %.1e", t, scene_.simulation.dt, rel);
+        else
+          std::snprintf(line, sizeof line, "t = %6.2f s   %s   dt = %g s   |dE/E| = %.1e", t, run.label.c_str(),
+                        scene_.simulation.dt, rel);
+        v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 30.0f : 12.0f}, font_px_, ink});
       }
     }
     if (run.diverged && k > last)
       v.texts.push_back({"diverged: stopped at t = " + std::to_string(static_cast<double>(last) / fps_).substr(0, 6) + " s",
-                         {12.0f, 58.0f}, 17.0f, {0.75f, 0.1f, 0.1f, 1.0f}});
+                         {12.0f, 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
     dl.views.push_back(std::move(v));
   }
   if (scene_.render.draw.legend && scene_.render.draw.axes) {

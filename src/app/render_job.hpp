@@ -37,6 +37,7 @@ class FrameBuilder {
   const std::vector<Run>& runs_;
   double fps_;
   int height_, columns_, rows_;
+  float font_px_;  // overlay text size, px
   viz::DrawOptions draw_;
   viz::Camera camera_;
   std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0

@@ -107,7 +107,8 @@ Camera auto_camera(const std::vector<glm::dvec3>& centres, const std::vector<dou
   // Distance so the bounding sphere fits the narrower of the two fields of view.
   const double half_v = 0.5 * fov_y_deg * std::numbers::pi / 180.0;
   const double half_h = std::atan(std::tan(half_v) * aspect);
-  const double dist = radius / std::sin(std::min(half_v, half_h)) * 1.05;
+  // 0.9: the sphere bounds the whole run; at any one moment the bodies fill less.
+  const double dist = radius / std::sin(std::min(half_v, half_h)) * 0.9;
   const glm::dvec3 dir = glm::normalize(glm::dvec3(0.55, -1.0, 0.45));
   cam.target = centre;
   cam.position = centre + dist * dir;
