@@ -42,8 +42,7 @@ Derivative derivative(const RigidBodyModel& m, const BodyState& s, double t) {
   d.dc = s.P / m.mass;
   // q' = ½ ω_world ⊗ q (erratum 1). The seed's Q(q) computes ½ q ⊗ ω, which is
   // right only for a body-frame ω.
-  const Eigen::Vector3d w = omega_world(m, s);
-  d.dq = 0.5 * (pure(w) * s.q).coeffs();
+  d.dq = quaternion_rate(m, s.q, s.L);
   if (m.forces.empty()) {
     d.dP.setZero();
     d.dL.setZero();

@@ -22,6 +22,29 @@ struct Wrench {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
 };
 
+/// q' = ½ ω_world ⊗ q for world L, where ω_world = q I⁻¹ (q̄ L); q need not be
+/// unit (RK stages). Spelt out in scalars for speed, operation for operation as
+/// Eigen evaluates `q * v` (v + w·2(u×v) + u×2(u×v)) and its SSE2 quaternion
+/// product, so the bits match the Eigen expression (tests/core/rk_fast_path_test).
+inline Eigen::Vector4d quaternion_rate(const RigidBodyModel& m, const Eigen::Quaterniond& q,
+                                       const Eigen::Vector3d& L) {
+  const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
+  // Π = q̄ L (vector part -u).
+  double ux = -y * L.z() - -z * L.y(), uy = -z * L.x() - -x * L.z(), uz = -x * L.y() - -y * L.x();
+  ux += ux, uy += uy, uz += uz;
+  const double pix = L.x() + w * ux + (-y * uz - -z * uy), piy = L.y() + w * uy + (-z * ux - -x * uz),
+               piz = L.z() + w * uz + (-x * uy - -y * ux);
+  const double bx = m.inv_inertia.x() * pix, by = m.inv_inertia.y() * piy, bz = m.inv_inertia.z() * piz;
+  // ω = q ω_b.
+  double vx = y * bz - z * by, vy = z * bx - x * bz, vz = x * by - y * bx;
+  vx += vx, vy += vy, vz += vz;
+  const double ox = bx + w * vx + (y * vz - z * vy), oy = by + w * vy + (z * vx - x * vz),
+               oz = bz + w * vz + (x * vy - y * vx);
+  // (0, ω) ⊗ q in Eigen's SSE2 grouping; its terms in the zero w are exact zeros.
+  return 0.5 * Eigen::Vector4d(oy * z - (oz * y - ox * w), oy * w + (oz * x - ox * z),
+                               -(oy * x) + (oz * w + ox * y), -(oy * y) - (oz * z + ox * x));
+}
+
 /// Pure: depends only on its arguments. `t` (s) is unused by the current force
 /// terms but is part of the signature so time-dependent forcing fits.
 Derivative derivative(const RigidBodyModel& m, const BodyState& s, double t);

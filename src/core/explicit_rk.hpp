@@ -33,6 +33,12 @@ BodyState explicit_rk_step(const ButcherTableau& tab, const RigidBodyModel& m, c
 BodyState explicit_rk_step(const ButcherTableau& tab, const DerivativeFn& f, const RigidBodyModel& m,
                            const BodyState& s, double t, double h);
 
+/// `explicit_rk_step` on kRk4Tableau / kEulerTableau, specialised (unrolled
+/// stages; torque-free bodies advance only q through the stages). Same bits as
+/// the tableau form up to the sign of zero momenta.
+BodyState rk4_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+BodyState euler_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+
 /// s + h·d (no renormalisation): the building block of the RK stages.
 inline BodyState add_scaled(const BodyState& s, double h, const Derivative& d) {
   BodyState o;

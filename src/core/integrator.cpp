@@ -42,9 +42,9 @@ int method_order(Method m) {
 
 BodyState step(Method method, const RigidBodyModel& m, const BodyState& s, double t, double h) {
   switch (method) {
-    case Method::euler: return explicit_rk_step(kEulerTableau, m, s, t, h);
+    case Method::euler: return euler_step(m, s, t, h);
     case Method::semi_implicit_euler: return semi_implicit_euler_step(m, s, t, h);
-    case Method::rk4: return explicit_rk_step(kRk4Tableau, m, s, t, h);
+    case Method::rk4: return rk4_step(m, s, t, h);
     case Method::rk45: return rk45_fixed_step(m, s, t, h);
     case Method::implicit_midpoint: return implicit_midpoint_step(m, s, t, h);
     case Method::splitting: return splitting_step(m, s, t, h);

@@ -6,39 +6,15 @@
 
 #include "core/dynamics.hpp"
 #include "core/quaternion.hpp"
+#include "core/splitting_kernel.hpp"
 
 namespace tumble {
 
-namespace {
-
-// Flow of Tᵢ over τ: the body turns by θ = τ Πᵢ/Iᵢ about axis i, so Π (body
-// components) turns by -θ. Returns the half-angle rotation for q; one sincos
-// serves both (cos θ = c² - s², sin θ = 2cs).
-inline Eigen::Quaterniond axis_flow(int i, double inv_i, double tau, Eigen::Vector3d& pi) {
-  const double half = 0.5 * tau * pi[i] * inv_i;
-  const double ch = std::cos(half), sh = std::sin(half);
-  const double c = ch * ch - sh * sh, s = 2 * ch * sh;
-  const int j = (i + 1) % 3, k = (i + 2) % 3;
-  const double pj = pi[j], pk = pi[k];
-  pi[j] = c * pj + s * pk;
-  pi[k] = -s * pj + c * pk;
-  Eigen::Quaterniond r(ch, 0, 0, 0);
-  r.vec()[i] = sh;
-  return r;
-}
-
-}  // namespace
-
 void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L,
                              Eigen::Quaterniond& q, double h) {
-  const Eigen::Vector3d& inv_inertia = m.inv_inertia;
-  Eigen::Vector3d pi = q.conjugate() * L;
-  Eigen::Quaterniond r = axis_flow(0, inv_inertia[0], 0.5 * h, pi);
-  r = r * axis_flow(1, inv_inertia[1], 0.5 * h, pi);
-  r = r * axis_flow(2, inv_inertia[2], h, pi);
-  r = r * axis_flow(1, inv_inertia[1], 0.5 * h, pi);
-  r = r * axis_flow(0, inv_inertia[0], 0.5 * h, pi);
-  q = (q * r).normalized();
+  const kernel::Quat o =
+      kernel::splitting_rotation<false>({q.w(), q.x(), q.y(), q.z()}, L.data(), m.inv_inertia.data(), h);
+  q = Eigen::Quaterniond(o.w, o.x, o.y, o.z);
 }
 
 void free_rotation_midpoint(const RigidBodyModel& m, const Eigen::Vector3d& L,
@@ -69,17 +45,25 @@ void free_rotation_midpoint(const RigidBodyModel& m, const Eigen::Vector3d& L,
   q = (q * Eigen::Quaterniond(1.0, half.x(), half.y(), half.z()).normalized()).normalized();
 }
 
-BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, double h,
-                      FreeRotationMap rotate) {
+namespace {
+// Template so the per-step maps inline (no call through a pointer).
+template <class Rotate>
+BodyState strang(const RigidBodyModel& m, const BodyState& s, double t, double h, Rotate&& rotate) {
   const bool forced = !m.forces.empty();
   BodyState x = forced ? kick(m, s, t, 0.5 * h) : s;
   x.c += h * x.P / m.mass;
   rotate(m, x.L, x.q, h);
   return forced ? kick(m, x, t + h, 0.5 * h) : x;
 }
+}  // namespace
+
+BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, double h,
+                      FreeRotationMap rotate) {
+  return strang(m, s, t, h, rotate);
+}
 
 BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
-  return strang_step(m, s, t, h, free_rotation_splitting);
+  return strang(m, s, t, h, free_rotation_splitting);
 }
 
 BodyState splitting4_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
