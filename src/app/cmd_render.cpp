@@ -1,10 +1,14 @@
 // `tumble render SCENE`: frames (PNG, atomic), manifest.json and a video.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "app/atomic_file.hpp"
@@ -15,6 +19,7 @@
 #include "render/frame_encoder.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
+#include "scene/scene.hpp"
 
 namespace tumble::app {
 
@@ -26,6 +31,7 @@ struct RenderOptions {
   std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl;
   int width = 0, height = 0, msaa = -1;
   double fps = 0;
+  bool resume = false, force = false;
 };
 
 struct Quality {
@@ -50,7 +56,7 @@ std::string json_escape(const std::string& s) {
 }
 
 struct Manifest {
-  std::string scene_path, scene_hash, method, gl_version, gl_renderer, backend, video;
+  std::string scene_path, scene_hash, settings_hash, method, gl_version, gl_renderer, backend, video;
   double dt = 0, fps = 0;
   int width = 0, height = 0, msaa = 0;
   long frame_count = 0, first = 0, last = -1, written = 0;
@@ -60,6 +66,7 @@ struct Manifest {
     std::ostringstream o;
     o << "{\n  \"tool\": \"tumble\",\n  \"version\": \"" << TUMBLE_VERSION << "\",\n"
       << "  \"scene\": \"" << json_escape(scene_path) << "\",\n  \"scene_hash\": \"" << scene_hash << "\",\n"
+      << "  \"settings_hash\": \"" << settings_hash << "\",\n"
       << "  \"method\": \"" << json_escape(method) << "\",\n  \"dt\": " << format_double(dt) << ",\n"
       << "  \"fps\": " << format_double(fps) << ",\n  \"width\": " << width << ",\n  \"height\": " << height
       << ",\n  \"msaa\": " << msaa << ",\n  \"frame_count\": " << frame_count << ",\n  \"frames\": [" << first
@@ -102,17 +109,204 @@ void apply_overrides(const RenderOptions& o, scene::Scene& s) {
   }
 }
 
+// ---- Interruption -----------------------------------------------------------
+// The one piece of global mutable state in the program, and the accepted
+// exception: a signal handler may only store to a volatile sig_atomic_t. It
+// holds the number of the first SIGINT/SIGTERM received (0 = none); the render
+// loop polls it between frames.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
+
+/// While alive, SIGINT and SIGTERM ask the render loop to stop after the frames
+/// in flight. One-shot (SA_RESETHAND): a second Ctrl-C kills at once, which is
+/// still safe because every file is written by temp file + rename.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    ::sigaction(SIGINT, &sa, &old_int_);
+    ::sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~StopSignals() {
+    ::sigaction(SIGINT, &old_int_, nullptr);
+    ::sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  int received() const { return g_stop_signal; }
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+// ---- The output folder ---------------------------------------------------------
+
+/// A field of a manifest we wrote ("key": value on its own line); strings unquoted.
+std::optional<std::string> manifest_field(const std::string& json, const std::string& key) {
+  const std::string tag = "\"" + key + "\": ";
+  const auto at = json.find(tag);
+  if (at == std::string::npos) return std::nullopt;
+  const auto start = at + tag.size();
+  const auto end = json.find_first_of(",\n", start);
+  std::string v = json.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
+  return v;
+}
+
+bool is_frame_file(const std::string& name) {
+  return name.size() == 16 && name.rfind("frame_", 0) == 0 && name.compare(12, 4, ".png") == 0 &&
+         std::all_of(name.begin() + 6, name.begin() + 12, [](char c) { return c >= '0' && c <= '9'; });
+}
+
+/// Leftovers of a process killed mid-write: `frame_*.png.tmp.<pid>`,
+/// `manifest.json.tmp-<pid>`, `<video>.tmp.mp4`. Never a finished file.
+bool is_stale_temp(const std::string& name) {
+  return (name.rfind("frame_", 0) == 0 || name.rfind("manifest.json", 0) == 0 ||
+          name.find(".tmp.mp4") != std::string::npos || name.find(".tmp.gif") != std::string::npos) &&
+         (name.find(".tmp.") != std::string::npos || name.find(".tmp-") != std::string::npos);
+}
+
+std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::string&)) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (pred(it->path().filename().string())) out.push_back(it->path());
+  if (ec) throw IoError("cannot list output folder '" + dir.string() + "': " + ec.message());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void remove_file(const fs::path& p) {
+  std::error_code ec;
+  fs::remove(p, ec);
+  if (ec) throw IoError("cannot remove '" + p.string() + "': " + ec.message());
+}
+
+/// Hash of everything that changes a frame's pixels (not the frame range:
+/// --frames A:B writes the same bytes as a full run).
+std::string settings_hash(const scene::Scene& s, const std::string& method) {
+  const scene::OutputConfig& out = s.render.output;
+  std::ostringstream k;
+  k << s.content_hash << '|' << method << '|' << format_double(s.simulation.dt) << '|' << format_double(out.fps)
+    << '|' << out.width << 'x' << out.height << '|' << out.msaa;
+  return scene::fnv1a_hex(k.str());
+}
+
+/// What is already in the output folder, and what we may do with it.
+struct Existing {
+  bool resumable = false;       ///< a manifest of this scene with these settings
+  long first = 0, last = -1;    ///< its frame range
+};
+
+/// Refuses (InputError) to write over another render unless --force; with
+/// --force, removes that render's frames, video and manifest first.
+Existing inspect_output(const fs::path& dir, const Manifest& want, const RenderOptions& o) {
+  Existing ex;
+  const fs::path mpath = dir / "manifest.json";
+  std::error_code ec;
+  const bool has_manifest = fs::exists(mpath, ec);
+  const std::vector<fs::path> frames = list_dir(dir, is_frame_file);
+  std::string problem;
+  std::optional<std::string> old_video;
+  if (has_manifest) {
+    std::ifstream in(mpath, std::ios::binary);
+    std::stringstream buf;
+    buf << in.rdbuf();
+    const std::string m = buf.str();
+    const auto hash = manifest_field(m, "scene_hash"), settings = manifest_field(m, "settings_hash");
+    old_video = manifest_field(m, "video");
+    if (!in || manifest_field(m, "tool") != std::optional<std::string>("tumble") || !hash) {
+      problem = "holds a manifest.json that tumble did not write";
+    } else if (*hash != want.scene_hash) {
+      problem = "holds a render of another scene (" + manifest_field(m, "scene").value_or("?") + ", hash " + *hash +
+                "; this scene's hash is " + want.scene_hash + ")";
+    } else if (settings != want.settings_hash) {
+      problem = "holds a render of this scene with other settings (size, fps, msaa, method or dt)";
+    } else {
+      ex.resumable = true;
+      if (auto r = manifest_field(m, "frames")) {  // "[A, B]"
+        long a = 0, b = -1;
+        if (std::sscanf(r->c_str(), "[%ld", &a) == 1) {
+          const auto comma = m.find(", ", m.find("\"frames\": ["));
+          if (comma != std::string::npos && std::sscanf(m.c_str() + comma + 2, "%ld", &b) == 1) ex.first = a, ex.last = b;
+        }
+      }
+    }
+  } else if (!frames.empty()) {
+    problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";
+  }
+  if (problem.empty()) return ex;
+  if (!o.force)
+    throw InputError("tumble: output folder " + dir.string() + " " + problem +
+                     ".\ntumble: choose another folder with -o, or add --force to replace that render");
+  // --force: the old render goes, so none of its frames can pass for ours later
+  // (a resumed run trusts every frame file in the folder).
+  std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
+            << " frames)\n";
+  for (const fs::path& f : frames) remove_file(f);
+  if (old_video && !old_video->empty() && fs::path(*old_video).filename() == *old_video &&
+      *old_video != "manifest.json")
+    remove_file(dir / *old_video);
+  if (has_manifest) remove_file(mpath);
+  return {};
+}
+
+std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) {
+  // The loader restricts names to [A-Za-z0-9_.-]; still, never leave the folder.
+  std::string base = s.name;
+  if (base.empty() || fs::path(base).filename() != base || base == "." || base == "..") base = "video";
+  return base + (f == scene::VideoFormat::mp4 ? ".mp4" : ".gif");
+}
+
+std::string quote_arg(const std::string& a) {
+  if (a.find_first_of(" '\"\\$`") == std::string::npos) return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 int run_render(const RenderOptions& o) {
   scene::Scene s = load_scene_verbose(o.scene);
   apply_overrides(o, s);
   const scene::OutputConfig& out = s.render.output;
   const double fps = out.fps;
   const long count = frame_count(s.simulation.duration, fps);
-  const auto [first, last] = o.frames.empty() ? std::pair<long, long>{0, count - 1} : parse_frame_range(o.frames, count);
   const fs::path dir = o.out_dir.empty() ? fs::path("out") / s.name : fs::path(o.out_dir);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw IoError("cannot create output folder " + dir.string() + ": " + ec.message());
+  if (ec) throw IoError("cannot create output folder '" + dir.string() + "': " + ec.message());
+  if (!fs::is_directory(dir, ec)) throw IoError("output path '" + dir.string() + "' is not a folder");
+
+  Manifest man;
+  man.scene_path = s.path.string();
+  man.scene_hash = s.content_hash;
+  {
+    std::vector<std::string> labels;
+    if (!s.render.compare_methods.empty())
+      for (Method m : s.render.compare_methods) labels.emplace_back(method_name(m));
+    else
+      for (const scene::Body& b : s.bodies) {
+        const std::string n(method_name(scene::resolve_method(s.simulation.method, b.model)));
+        if (std::find(labels.begin(), labels.end(), n) == labels.end()) labels.push_back(n);
+      }
+    std::string key;
+    for (const auto& l : labels) key += l + ",";
+    man.settings_hash = settings_hash(s, key);
+  }
+  const Existing existing = inspect_output(dir, man, o);
+  std::pair<long, long> range{0, count - 1};
+  if (!o.frames.empty()) range = parse_frame_range(o.frames, count);
+  else if (o.resume && existing.resumable && existing.first >= 0 && existing.last < count && existing.first <= existing.last)
+    range = {existing.first, existing.last};  // continue the range that was being rendered
+  const auto [first, last] = range;
+  const bool resume = o.resume && existing.resumable;
+  // A process killed mid-write leaves its temp files; they are never valid output.
+  for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
 
   const std::vector<Run> runs = simulate_runs(s, count, fps);
   const FrameBuilder builder(s, runs, fps, out.width, out.height);
@@ -123,9 +317,6 @@ int run_render(const RenderOptions& o) {
   auto ctx = render::create_gl_context(backend);
   render::Renderer renderer(*ctx, out.width, out.height, out.msaa);
 
-  Manifest man;
-  man.scene_path = s.path.string();
-  man.scene_hash = s.content_hash;
   for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
   man.dt = s.simulation.dt;
   man.fps = fps;
@@ -138,29 +329,62 @@ int run_render(const RenderOptions& o) {
   man.gl_version = ctx->version();
   man.gl_renderer = ctx->renderer();
   man.backend = std::string(render::to_string(backend));
+
+  // From here on, files change: Ctrl-C / SIGTERM stop between frames instead
+  // of killing the process, so the manifest tells what is on disk.
+  const StopSignals stop;
+  auto on_disk = [&] {
+    long n = 0;
+    for (long k = first; k <= last; ++k) n += fs::exists(frame_path(dir, k), ec) ? 1 : 0;
+    return n;
+  };
+  if (resume) man.written = on_disk();
   atomic_write_file(dir / "manifest.json", man.json());
 
   Progress progress(last - first + 1, o.progress != "none");
-  {
+  long skipped = 0;
+  int signal = 0;
+  try {
     render::FrameEncoder encoder(2, 4);
     for (long k = first; k <= last && k < good; ++k) {
-      encoder.submit(frame_path(dir, k), renderer.render(builder.build(k)));
-      man.written = k - first + 1;
-      progress.update(man.written);
+      if ((signal = stop.received()) != 0) break;
+      if (resume && fs::exists(frame_path(dir, k), ec)) {
+        ++skipped;  // written whole by an earlier run (rename is atomic)
+      } else {
+        encoder.submit(frame_path(dir, k), renderer.render(builder.build(k)));
+      }
+      progress.update(k - first + 1);
     }
-    encoder.flush();
+    encoder.flush();  // the frames in flight are finished, not dropped
+  } catch (const std::runtime_error& e) {  // a frame could not be written: disk full, permissions
+    man.written = on_disk();
+    try {
+      atomic_write_file(dir / "manifest.json", man.json());
+    } catch (const std::exception&) {  // the disk that failed the frame may fail this too
+    }
+    throw IoError(e.what());
   }
   progress.finish();
+  if (signal == 0) signal = stop.received();  // arrived during the last frames: they are whole anyway
+  man.written = on_disk();
   man.complete = man.written == last - first + 1;
-  if (!man.complete) {
+  if (!man.complete || signal != 0) {
+    man.complete = false;
     atomic_write_file(dir / "manifest.json", man.json());
-    std::cerr << "tumble: " << *runs[0].diverged << "\n"
+    if (signal != 0) {
+      std::cerr << "tumble: interrupted (" << (signal == SIGINT ? "SIGINT" : "SIGTERM") << "): kept " << man.written
+                << " of " << last - first + 1 << " frames in " << dir.string() << "\n"
+                << "tumble: continue with: tumble render " << quote_arg(o.scene) << " -o " << quote_arg(dir.string())
+                << " --resume\n";
+      return 128 + signal;
+    }
+    std::cerr << "tumble: " << runs[0].diverged.value_or("stopped early") << "\n"
               << "tumble: kept " << man.written << " frames in " << dir.string() << "\n";
     return kDiverged;
   }
   const bool full = first == 0 && last == count - 1;
   if (full && out.video != scene::VideoFormat::none) {
-    const fs::path video = dir / (s.name + (out.video == scene::VideoFormat::mp4 ? ".mp4" : ".gif"));
+    const fs::path video = dir / video_file_name(s, out.video);
     const std::string err = encode_video(dir, static_cast<int>(std::lround(fps)), out.video,
                                          parse_quality(o.quality).crf, video);
     if (err.empty()) man.video = video.filename().string();
@@ -168,6 +392,7 @@ int run_render(const RenderOptions& o) {
   }
   atomic_write_file(dir / "manifest.json", man.json());
   std::cout << "rendered frames " << first << ".." << last << " of " << count << " into " << dir.string()
+            << (skipped ? " (" + std::to_string(skipped) + " already on disk)" : std::string())
             << (man.video.empty() ? "" : " (video " + man.video + ")") << "\n";
   return kOk;
 }
@@ -188,6 +413,10 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--msaa", o->msaa, "MSAA samples 0, 2 or 4 (overrides --quality)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
   cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
+  cmd->add_flag("--resume", o->resume,
+                "Continue an interrupted render in the output folder: frames already on disk are kept");
+  cmd->add_flag("--force", o->force,
+                "Replace another render (other scene or settings) in the output folder, removing its frames");
   cmd->callback([o, &action] { action = [o] { return run_render(*o); }; });
 }
 

@@ -1,5 +1,6 @@
 #include "core/mass_properties.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -56,12 +57,31 @@ MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::st
   }
   mp.com = weighted / mp.mass;
   mp.inertia = inertia_about(cloud, mp.com);
+  // Finite inputs can still overflow: |r|² m beyond ~1e308 (e.g. coordinates of
+  // 1e160 m). Say so instead of letting NaN reach the eigen-solver.
+  if (!std::isfinite(mp.mass) || !mp.com.allFinite() || !mp.inertia.allFinite()) {
+    double rmax = 0;
+    for (const Particle& p : cloud) rmax = std::max(rmax, p.position.cwiseAbs().maxCoeff());
+    std::ostringstream s;
+    s << "the mass or inertia overflows double precision (total mass " << mp.mass << " kg, coordinates up to "
+      << rmax << " m); express the body in smaller units (e.g. km and t instead of m and kg)";
+    fail(body_name, s.str());
+  }
 
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(mp.inertia);
   mp.principal_moments = eig.eigenvalues();  // ascending
   const double largest = mp.principal_moments[2];
-  if (cloud.size() == 1 || !(largest > 0.0))
+  if (cloud.size() == 1)
     fail(body_name, "a single point mass has no rotational inertia; use at least three non-collinear particles");
+  if (!(largest > 0.0)) {
+    bool same = true;
+    for (const Particle& p : cloud) same = same && p.position == cloud[0].position;
+    fail(body_name, same ? "all " + std::to_string(cloud.size()) +
+                               " particles are at the same point, which has no rotational inertia; spread them "
+                               "out (at least three non-collinear particles)"
+                         : "the body is so small that its inertia underflows to zero; express it in larger "
+                           "units (e.g. mm instead of m)");
+  }
   if (mp.principal_moments[0] < kMinMomentRatio * largest)
     fail(body_name, "all particles are (nearly) collinear, so the moment about that line vanishes "
                     "(smallest/largest principal moment < 1e-12); give the rod a thickness, e.g. a box "

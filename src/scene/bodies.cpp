@@ -40,6 +40,11 @@ std::optional<Eigen::Quaterniond> read_orientation(TableReader& r) {
   }
   Eigen::Quaterniond q(c[0], c[1], c[2], c[3]);
   const double norm = q.norm();
+  if (!std::isfinite(norm)) {
+    r.error("orientation", "expected a quaternion [w, x, y, z] of moderate size (it is normalised), found one "
+                           "whose norm overflows; divide the components by their largest");
+    return std::nullopt;
+  }
   if (!(norm > 1e-12)) {
     r.error("orientation", "expected a non-zero quaternion [w, x, y, z], found [0, 0, 0, 0]");
     return std::nullopt;

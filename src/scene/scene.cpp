@@ -1,6 +1,7 @@
 // Top level of the loader: syntax, [simulation], [forces], then bodies and render.
 #include "scene/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -41,6 +42,9 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
   if (sim.dt > sim.duration)
     r.error("dt", "expected dt <= duration (" + detail::format_number(sim.duration) + " s), found " +
                       detail::format_number(sim.dt));
+  else if (sim.duration / sim.dt > kMaxSteps)
+    r.error("dt", "expected at most " + detail::format_number(kMaxSteps) + " steps (duration / dt, the cap), found " +
+                      detail::format_number(sim.duration / sim.dt) + "; raise dt");
   if (sim.duration * sim.fps > kMaxFrames)
     r.error("fps", "duration × fps = " + detail::format_number(sim.duration * sim.fps) + " exceeds the frame cap of " +
                        std::to_string(static_cast<long>(kMaxFrames)));
@@ -71,6 +75,18 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
   TableReader r(root, "", diag,
                 {"name", "simulation", "forces", "bodies", "output", "camera", "draw", "compare"});
   s.name = r.string("name").value_or("scene");
+  // The name becomes the default output folder out/<name> and the video's file
+  // name: keep it a plain file name, so a render never writes elsewhere.
+  const bool name_ok = !s.name.empty() && s.name.size() <= 64 && s.name != "." && s.name != ".." &&
+                       std::all_of(s.name.begin(), s.name.end(), [](char c) {
+                         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                                c == '_' || c == '-' || c == '.';
+                       });
+  if (!name_ok) {
+    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-] (it names the output folder), found \"" +
+                        s.name + "\"");
+    s.name = "scene";
+  }
   read_simulation(r, ctx, s);
   read_forces(r, ctx, s);
   detail::read_bodies(r, ctx, s);

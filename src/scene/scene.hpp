@@ -24,6 +24,7 @@ namespace tumble::scene {
 inline constexpr std::size_t kMaxParticles = 10'000'000;  ///< all bodies together
 inline constexpr std::size_t kMaxBodies = 1000;
 inline constexpr double kMaxFrames = 1e6;                 ///< duration × fps
+inline constexpr double kMaxSteps = 1e9;                  ///< duration / dt
 
 struct SimulationConfig {
   std::optional<Method> method = Method::splitting;  ///< nullopt = "auto" (see resolve_method)
