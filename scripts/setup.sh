@@ -13,6 +13,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev     # tests, microbenchmarks
   ffmpeg gnuplot-nox                             # videos, charts (run as programs)
   libbullet-dev libode-dev                       # optional peers for `tumble bench`
+  clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)
 )
 
 missing=()

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer targets (built by the `fuzz` preset) for SECONDS each
+# (default 30), seeded from the shipped scenes, the broken-scene corpus and the
+# regression corpus. A crash leaves crash-* in build/fuzz/artifacts/: add the
+# input to tests/fuzz/regressions/{scene,cloud}/ (replayed by scene_tests).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SECONDS_EACH="${1:-30}"
+BUILD="${FUZZ_BUILD_DIR:-build/fuzz}"
+work="$BUILD/corpus"
+mkdir -p "$work/scene" "$work/cloud" "$BUILD/artifacts"
+cp scenes/*.toml tests/scene/broken/*.toml tests/fuzz/regressions/scene/* "$work/scene/" 2>/dev/null || true
+cp tests/fuzz/regressions/cloud/* "$work/cloud/" 2>/dev/null || true
+for t in scene cloud; do
+  echo "fuzz: fuzz_$t for ${SECONDS_EACH}s"
+  "$BUILD/tests/fuzz/fuzz_$t" -max_total_time="$SECONDS_EACH" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$BUILD/artifacts/" "$work/$t" 2>&1 | grep -E "^(stat::|#[0-9]+ *DONE|==|SUMMARY|Done)" || true
+  if ls "$BUILD/artifacts/" | grep -q .; then
+    echo "fuzz: fuzz_$t found a failing input:" && ls "$BUILD/artifacts/"
+    exit 1
+  fi
+done
