@@ -40,6 +40,7 @@ namespace tumble::render {
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer, "glVertexAttribPointer")  \
   X(PFNGLVERTEXATTRIBDIVISORPROC, VertexAttribDivisor, "glVertexAttribDivisor")  \
   X(PFNGLDRAWARRAYSPROC, DrawArrays, "glDrawArrays")                             \
+  X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced, "glDrawArraysInstanced")  \
   X(PFNGLDRAWELEMENTSINSTANCEDPROC, DrawElementsInstanced,                       \
     "glDrawElementsInstanced")                                                   \
   X(PFNGLCREATESHADERPROC, CreateShader, "glCreateShader")                       \

@@ -11,6 +11,7 @@
 #include "render/line_pass.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/shader_program.hpp"
+#include "render/sphere_pass.hpp"
 #include "render/text_pass.hpp"
 #include "render/view_batches.hpp"
 #include "render/view_layout.hpp"
@@ -54,7 +55,8 @@ class Renderer::Impl {
   FontAtlas font_;
   OffscreenTarget target_;
   ShaderProgram mesh_program_, background_program_;
-  InstancedMesh cube_, cylinder_, cone_, sphere_;
+  InstancedMesh cube_, cylinder_, cone_;
+  SpherePass spheres_;
   LinePass lines_;
   TextPass text_;
   GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
@@ -89,7 +91,7 @@ Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
       cube_(gl_, unit_cube()),
       cylinder_(gl_, unit_cylinder(20)),
       cone_(gl_, unit_cone(24)),
-      sphere_(gl_, unit_sphere(16, 10)),
+      spheres_(gl_, resource_dir / "shaders"),
       lines_(gl_, resource_dir / "shaders"),
       text_(gl_, resource_dir / "shaders", font_),
       empty_vao_(make_vertex_array(gl_)) {}
@@ -208,20 +210,23 @@ void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrice
   mesh_program_.set("u_view", cam.view);
   mesh_program_.set("u_proj", cam.proj);
   // Key light from the camera's upper left, so shapes read the same in every view.
-  mesh_program_.set("u_light_dir", glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f)));
+  const glm::vec3 light_dir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
+  mesh_program_.set("u_light_dir", light_dir);
 
   // Opaque pass.
-  mesh_program_.set("u_specular", 0.28f);
+  constexpr float kOpaqueSpecular = 0.28f;
+  mesh_program_.set("u_specular", kOpaqueSpecular);
   cylinder_.upload(batches.arrow_shafts);
   cylinder_.draw();
   cone_.upload(batches.arrow_heads);
   cone_.draw();
-  sphere_.upload(batches.spheres);
-  sphere_.draw();
+  spheres_.draw(batches.spheres, cam.view, cam.proj, light_dir, kOpaqueSpecular,
+                target_.samples() > 0);
 
   // Translucent boxes: no depth writes; inner (back) faces first, then the
   // outer faces, which is exact for one convex box and close enough for few.
   if (batches.boxes.empty()) return;
+  mesh_program_.use();
   mesh_program_.set("u_specular", 0.18f);
   gl_.DepthMask(GL_FALSE);
   gl_.Enable(GL_CULL_FACE);

@@ -100,9 +100,7 @@ ViewBatches build_view_batches(const viz::View& view) {
   for (const auto& a : view.arrows) add_arrow(a, out);
   for (const auto& pt : view.points) {
     if (!(pt.radius > 0)) continue;
-    const glm::dmat4 m(glm::dvec4(pt.radius, 0, 0, 0), glm::dvec4(0, pt.radius, 0, 0),
-                       glm::dvec4(0, 0, pt.radius, 0), glm::dvec4(pt.position, 1));
-    out.spheres.push_back({glm::mat4(m), pt.color});
+    out.spheres.push_back({glm::vec4(glm::vec3(pt.position), float(pt.radius)), pt.color});
   }
 
   // Translucent boxes blend correctly only when drawn far to near.

@@ -9,6 +9,7 @@
 
 #include "render/instanced_mesh.hpp"
 #include "render/line_pass.hpp"
+#include "render/sphere_pass.hpp"
 #include "viz/draw_list.hpp"
 
 namespace tumble::render {
@@ -21,7 +22,7 @@ struct Polyline {
 struct ViewBatches {
   std::vector<MeshInstance> arrow_shafts;  ///< unit cylinder instances
   std::vector<MeshInstance> arrow_heads;   ///< unit cone instances
-  std::vector<MeshInstance> spheres;       ///< unit sphere instances
+  std::vector<SphereInstance> spheres;     ///< particle impostors
   std::vector<MeshInstance> boxes;         ///< unit cube, sorted far -> near
   std::vector<LineVertex> box_edges;       ///< GL_LINES pairs
   std::vector<LineVertex> grid;            ///< GL_LINES pairs
