@@ -143,6 +143,8 @@ void Renderer::Impl::render(const viz::DrawList& frame, Image& out) {
 
 void Renderer::Impl::draw_background(const glm::vec3& background) {
   gl_.Disable(GL_DEPTH_TEST);
+  // Opaque: with blending on, llvmpipe reads back every sample it covers.
+  gl_.Disable(GL_BLEND);
   background_program_.use();
   background_program_.set("u_flat", kFlatBackground);
   background_program_.set("u_bottom", background);
@@ -150,6 +152,7 @@ void Renderer::Impl::draw_background(const glm::vec3& background) {
                                              kSkyAmount));
   gl_.BindVertexArray(empty_vao_.id());
   gl_.DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  gl_.Enable(GL_BLEND);
 }
 
 // 1 px lines in the gaps view_rect leaves left of / above non-edge views.
