@@ -351,7 +351,10 @@ int run_render(const RenderOptions& o) {
       if (resume && fs::exists(frame_path(dir, k), ec)) {
         ++skipped;  // written whole by an earlier run (rename is atomic)
       } else {
-        encoder.submit(frame_path(dir, k), renderer.render(builder.build(k)));
+        // Reuse a written frame's buffer: a fresh 2.7 MB image per frame costs page faults.
+        render::Image img = encoder.recycle();
+        renderer.render(builder.build(k), img);
+        encoder.submit(frame_path(dir, k), std::move(img));
       }
       progress.update(k - first + 1);
     }
