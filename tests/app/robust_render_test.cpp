@@ -138,7 +138,9 @@ TEST_F(RobustRender, KilledRenderResumesByteIdenticalToACleanRun) {
   std::ofstream(out / "frame_000150.png.tmp.99999") << "partial";
   std::ofstream(out / "manifest.json.tmp-99999") << "{";
   for (const std::string& n : names(out))
-    if (n.rfind("frame_", 0) == 0 && n.find(".tmp") == std::string::npos) EXPECT_TRUE(whole_png(slurp(out / n))) << n;
+    if (n.rfind("frame_", 0) == 0 && n.find(".tmp") == std::string::npos) {
+      EXPECT_TRUE(whole_png(slurp(out / n))) << n;
+    }
 
   const Result r = run("render '" + data("slow_render.toml") + "' -o '" + out.string() + "' --resume --progress none");
   ASSERT_EQ(r.code, 0) << r.err;
