@@ -1,0 +1,286 @@
+// `tumble golden SCENE --at t1,t2 --dir DIR [--update]`: makes or checks
+// golden images (and a golden trajectory) of a scene. Physics is checked
+// first, so a physics change is reported as such before the pixels differ.
+// Exit 0 all pass (or --update), 1 a golden differs or is missing, 2 bad input.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "app/atomic_file.hpp"
+#include "app/commands.hpp"
+#include "app/frame_renderer.hpp"
+#include "core/error.hpp"
+#include "golden/compare.hpp"
+#include "golden/report.hpp"
+#include "golden/trajectory.hpp"
+#include "render/gl_context.hpp"
+#include "render/png_io.hpp"
+
+namespace tumble::app {
+
+// Shared with `tumble compare` (cmd_compare.cpp).
+void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c);
+void check_golden_tolerance(const golden::CompareOptions& c);
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kGoldenFailed = 1;
+
+struct GoldenOptions {
+  std::string scene, at, dir, report, msaa, gl;
+  int width = 320, height = 240;
+  long every = 10;
+  bool update = false, physics_only = false;
+  golden::CompareOptions cmp;
+  golden::TrajectoryTolerance tol;
+};
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  for (std::string f; std::getline(in, f, ',');)
+    if (!f.empty()) out.push_back(f);
+  return out;
+}
+
+double parse_num(const std::string& what, const std::string& s) {
+  std::size_t used = 0;
+  double v = NAN;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !std::isfinite(v)) throw InputError(what + ": expected a number, found '" + s + "'");
+  return v;
+}
+
+/// Times -> frame numbers; each time must be a frame time k/fps of the scene.
+std::vector<long> frames_at(const std::string& at, double fps, long count) {
+  std::set<long> ks;
+  const auto items = split_list(at);
+  if (items.empty()) throw InputError("--at: expected times in s, e.g. --at 0.5,2");
+  for (const std::string& item : items) {
+    const double t = parse_num("--at", item);
+    const long k = std::lround(t * fps);
+    if (t < 0 || std::abs(static_cast<double>(k) / fps - t) > 1e-9 * std::max(1.0, std::abs(t))) {
+      const long lo = static_cast<long>(std::floor(t * fps));
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "--at %s: not a frame time of the scene (t = k/fps, fps %g); nearest: %.6g s and %.6g s",
+                    item.c_str(), fps, std::max(0L, lo) / fps, std::max(0L, lo + 1) / fps);
+      throw InputError(buf);
+    }
+    if (k >= count)
+      throw InputError("--at " + item + ": past the end of the scene (last frame t = " +
+                       format_double(static_cast<double>(count - 1) / fps) + " s)");
+    ks.insert(k);
+  }
+  return {ks.begin(), ks.end()};
+}
+
+std::string slurp(const fs::path& p, bool& ok) {
+  std::ifstream in(p, std::ios::binary);
+  ok = static_cast<bool>(in);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string json_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '"' || c == '\\') o += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    o += c;
+  }
+  return o;
+}
+
+/// The value of "key": "..." in our own sidecar JSON (no general parser needed).
+std::string sidecar_field(const std::string& json, const std::string& key) {
+  const std::string pat = "\"" + key + "\": \"";
+  const auto a = json.find(pat);
+  if (a == std::string::npos) return "?";
+  const auto b = json.find('"', a + pat.size());
+  return b == std::string::npos ? "?" : json.substr(a + pat.size(), b - a - pat.size());
+}
+
+int run_golden(const GoldenOptions& o) {
+  check_golden_tolerance(o.cmp);
+  if (!(o.tol.rtol >= 0) || !(o.tol.atol >= 0)) throw InputError("--rtol/--atol: expected numbers >= 0");
+  if (o.every < 1) throw InputError("--every: expected an integer >= 1");
+  for (int v : {o.width, o.height})
+    if (v < 16 || v > 16384) throw InputError("--width/--height: expected 16..16384 px, found " + std::to_string(v));
+  const scene::Scene s = load_scene_verbose(o.scene);
+  std::vector<int> msaas;
+  if (o.msaa.empty()) msaas.push_back(s.render.output.msaa);
+  for (const std::string& m : split_list(o.msaa)) {
+    if (m != "0" && m != "2" && m != "4") throw InputError("--msaa: expected a list of 0, 2, 4, found '" + m + "'");
+    msaas.push_back(std::stoi(m));
+  }
+  const double fps = s.render.output.fps;
+  const long count = frame_count(s.simulation.duration, fps);
+  const std::vector<long> ks = frames_at(o.at, fps, count);
+  const fs::path dir = o.dir;
+  const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
+
+  const SceneFrames frames(s, ks.back());
+  golden::Report report(report_dir, "tumble golden: " + s.name + " (" + s.path.string() + ")");
+  int failed = 0, cases = 0, written = 0;
+  auto line = [&](bool pass, const std::string& status, const std::string& what, const std::string& figures) {
+    ++cases;
+    failed += !pass;
+    std::cout << status << "  " << what << ": " << figures << "\n";
+  };
+
+  // Golden physics: every `every`-th frame up to the last golden time, plus the golden frames.
+  {
+    std::set<long> rows(ks.begin(), ks.end());
+    for (long k = 0; k <= ks.back(); k += o.every) rows.insert(k);
+    const std::string actual = frames.trajectory_csv({rows.begin(), rows.end()});
+    const fs::path path = dir / (s.name + ".trajectory.csv");
+    bool ok = false;
+    const std::string expected = slurp(path, ok);
+    const std::string what = "physics " + path.filename().string();
+    if (o.update) {
+      if (!ok || expected != actual) {
+        atomic_write_file(path, actual);
+        ++written;
+        std::cout << (ok ? "updated  " : "created  ") << path.string()
+                  << (ok ? "  (was: " + golden::compare_trajectories(actual, expected, o.tol).summary + ")" : "") << "\n";
+      }
+    } else if (!ok) {
+      const std::string msg = "no golden " + path.string() + "; run with --update (or TUMBLE_UPDATE_GOLDENS=1 ctest -L golden) to create it";
+      line(false, "MISSING", what, msg);
+      report.add_text(what, false, "MISSING", msg);
+    } else {
+      const golden::TrajectoryComparison c = golden::compare_trajectories(actual, expected, o.tol);
+      line(c.pass, c.pass ? "PASS   " : "PHYSICS", what, c.summary);
+      report.add_text(what, c.pass, c.pass ? "pass" : "PHYSICS CHANGED", c.summary);
+    }
+  }
+
+  if (!o.physics_only) {
+    const render::GlBackend backend = o.gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(o.gl);
+    auto ctx = render::create_gl_context(backend);
+    const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
+    for (int msaa : msaas) {
+      int samples = 0;
+      const std::vector<render::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
+      for (std::size_t i = 0; i < ks.size(); ++i) {
+        const long k = ks[i];
+        char base[160];
+        std::snprintf(base, sizeof base, "%s_f%06ld_msaa%d", s.name.c_str(), k, msaa);
+        const fs::path png = dir / (std::string(base) + ".png"), side = dir / (std::string(base) + ".json");
+        char what[200];
+        std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) msaa %d %dx%d", s.name.c_str(),
+                      static_cast<double>(k) / fps, k, msaa, o.width, o.height);
+        const render::Image& actual = images[i];
+        std::optional<render::Image> expected;
+        std::string read_error;
+        if (fs::exists(png)) {
+          try {
+            expected = render::read_png(png);
+          } catch (const std::exception& e) {
+            read_error = e.what();
+          }
+        }
+        if (o.update) {
+          std::ostringstream j;
+          j << "{\n  \"scene\": \"" << json_escape(s.path.filename().string()) << "\",\n  \"t\": "
+            << format_double(static_cast<double>(k) / fps) << ",\n  \"frame\": " << k << ",\n  \"fps\": "
+            << format_double(fps) << ",\n  \"width\": " << o.width << ",\n  \"height\": " << o.height
+            << ",\n  \"msaa\": " << msaa << ",\n  \"samples\": " << samples << ",\n  \"gl_backend\": \""
+            << render::to_string(backend) << "\",\n  \"gl_renderer\": \"" << json_escape(gl_renderer)
+            << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"tumble_version\": \""
+            << TUMBLE_VERSION << "\"\n}\n";
+          const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
+                            expected->rgb == actual.rgb;
+          bool side_ok = false;
+          const bool side_same = slurp(side, side_ok) == j.str();
+          if (!same) {
+            render::write_png_atomic(png, actual);
+            std::cout << (expected ? "updated  " : "created  ") << png.string()
+                      << (expected ? "  (was: " + golden::compare_images(actual, *expected, o.cmp).summary + ")" : "")
+                      << "\n";
+          }
+          if (!same || !side_same) {
+            atomic_write_file(side, j.str());
+            ++written;
+          }
+          continue;
+        }
+        bool side_ok = false;
+        const std::string sidecar = slurp(side, side_ok);
+        const std::string note = "expected made with " +
+                                 (side_ok ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
+                                          : std::string("? (no sidecar ") + side.filename().string() + ")") +
+                                 "; actual with " + gl_renderer + ", " + gl_version;
+        if (!fs::exists(png)) {
+          const std::string msg = "no golden " + png.string() + "; run with --update (or TUMBLE_UPDATE_GOLDENS=1 ctest -L golden) to create it";
+          line(false, "MISSING", what, msg);
+          report.add_image(base, what, actual, nullptr, nullptr, o.cmp, false, "MISSING", msg);
+          continue;
+        }
+        if (!expected) {
+          line(false, "UNREADABLE", what, read_error);
+          report.add_image(base, what, actual, nullptr, nullptr, o.cmp, false, "UNREADABLE", read_error);
+          continue;
+        }
+        const golden::Comparison c = golden::compare_images(actual, *expected, o.cmp);
+        line(c.pass, c.pass ? "PASS   " : "FAIL   ", what, c.summary);
+        report.add_image(base, what, actual, &*expected, &c, o.cmp, c.pass, c.pass ? "pass" : "FAIL", note);
+      }
+    }
+  }
+  if (o.update) {
+    std::cout << "golden: " << written << " file(s) written in " << dir.string()
+              << " (the rest were already identical); review them and commit\n";
+    return kOk;
+  }
+  if (failed) {
+    const fs::path index = report.write();
+    std::cout << "golden: " << failed << " of " << cases << " cases FAILED; report: " << fs::absolute(index).string()
+              << "\n";
+    return kGoldenFailed;
+  }
+  std::cout << "golden: all " << cases << " cases pass\n";
+  return kOk;
+}
+
+}  // namespace
+
+void add_golden_command(CLI::App& app, Action& action) {
+  auto o = std::make_shared<GoldenOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "golden", "Check (or --update) golden images and a golden trajectory of a scene at chosen times");
+  cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  cmd->add_option("--at", o->at, "Times in s, comma-separated; each must be a frame time k/fps")->required();
+  cmd->add_option("--dir", o->dir, "Folder of the goldens (<name>_f<frame>_msaa<N>.png/.json, <name>.trajectory.csv)")
+      ->required();
+  cmd->add_flag("--update", o->update, "Write the goldens from this run instead of checking them");
+  cmd->add_option("--msaa", o->msaa, "MSAA samples, a list of 0, 2, 4 (default: the scene's)");
+  cmd->add_option("--width", o->width, "Image width, px (default 320)");
+  cmd->add_option("--height", o->height, "Image height, px (default 240)");
+  cmd->add_option("--report", o->report, "Folder of the failure report (default golden-report/<scene name>)");
+  cmd->add_option("--every", o->every, "Golden trajectory: every N-th frame up to the last time (default 10)");
+  cmd->add_option("--rtol", o->tol.rtol, "Trajectory relative tolerance (default 1e-6)");
+  cmd->add_option("--atol", o->tol.atol, "Trajectory absolute tolerance, SI units (default 1e-9)");
+  cmd->add_flag("--physics-only", o->physics_only, "Check only the trajectory (no GL needed)");
+  cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
+  add_golden_tolerance_options(cmd, o->cmp);
+  cmd->callback([o, &action] { action = [o] { return run_golden(*o); }; });
+}
+
+}  // namespace tumble::app
