@@ -1,0 +1,250 @@
+// Golden images and golden physics of every shipped scene, determinism of the
+// renderer, and the comparison itself (library and `tumble compare`/`golden`).
+// TUMBLE_UPDATE_GOLDENS=1 turns the scene tests into `tumble golden --update`.
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+
+#include "app/frame_renderer.hpp"
+#include "cli_fixture.hpp"
+#include "golden/compare.hpp"
+#include "golden/trajectory.hpp"
+#include "render/png_io.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+class GoldenCli : public Cli {};
+
+struct GoldenScene {
+  const char* name;  ///< scenes/<name>.toml, goldens in tests/golden/<name>/
+  const char* at;    ///< frame times (k/30 s): early, middle, late
+};
+
+// Times are multiples of 1/30 s (every shipped scene renders at 30 fps); the
+// last one bounds the simulation (fixed camera) and the trajectory.
+const GoldenScene kScenes[] = {
+    {"dzhanibekov", "0.5,4,12"},   {"methods_compare", "0.5,6,15"}, {"reference", "0.5,3,9"},
+    {"stable_spin", "0.5,5,11"},   {"symmetric_top", "0.5,4,9"},    {"thrown_box", "0.2,0.9,1.6"},
+};
+
+bool updating() {
+  const char* e = std::getenv("TUMBLE_UPDATE_GOLDENS");
+  return e && std::string(e) == "1";
+}
+
+std::string golden_cmd(const GoldenScene& g, const std::string& extra, const std::string& report_suffix) {
+  return "golden " + ("'" + (kSource / "scenes" / (std::string(g.name) + ".toml")).string() + "'") + " --at " + g.at +
+         " --dir '" + (kSource / "tests/golden" / g.name).string() + "' --report '" + TUMBLE_GOLDEN_REPORT_DIR + "/" +
+         g.name + report_suffix + "' " + extra + (updating() ? " --update" : "");
+}
+
+class Scenes : public GoldenCli, public testing::WithParamInterface<GoldenScene> {};
+
+// Physics first: its own test, so a physics change shows up as one.
+TEST_P(Scenes, Physics) {
+  const Result r = run(golden_cmd(GetParam(), "--physics-only", "-physics"));
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+}
+
+TEST_P(Scenes, Pixels) {
+  const Result r = run(golden_cmd(GetParam(), "--msaa 4,0 --width 320 --height 240", ""));
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  if (!updating()) {
+    EXPECT_NE(r.out.find("all 7 cases pass"), std::string::npos) << r.out;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, Scenes, testing::ValuesIn(kScenes),
+                         [](const testing::TestParamInfo<GoldenScene>& i) { return std::string(i.param.name); });
+
+// ---- determinism: identical bytes ----
+
+TEST(Determinism, SameFrameRenderedTwiceInOneProcess) {
+  const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes/stable_spin.toml");
+  const tumble::app::SceneFrames frames(s, 150);
+  auto ctx = tumble::render::create_gl_context(tumble::render::default_gl_backend());
+  for (int msaa : {4, 0}) {
+    // Frame 150, another frame, frame 150 again (renderer state reused), then a fresh renderer.
+    const auto a = frames.render(*ctx, {150, 30, 150}, 320, 240, msaa);
+    const auto b = frames.render(*ctx, {150}, 320, 240, msaa);
+    EXPECT_TRUE(a[0].rgb == a[2].rgb) << "msaa " << msaa;
+    EXPECT_TRUE(a[0].rgb == b[0].rgb) << "msaa " << msaa;
+    EXPECT_FALSE(a[0].rgb == a[1].rgb) << "frames 150 and 30 should differ";
+  }
+}
+
+class DeterminismCli : public Cli {};
+
+// llvmpipe splits the frame into tiles over LP_NUM_THREADS threads; the bytes must not depend on it.
+TEST_F(DeterminismCli, LpNumThreadsOneAndTwoGiveIdenticalBytes) {
+  for (const char* sc : {"dzhanibekov.toml", "methods_compare.toml"}) {
+    std::string files[2];
+    for (int threads = 1; threads <= 2; ++threads) {
+      const std::string out = (dir_ / (std::string(sc) + ".t" + std::to_string(threads))).string();
+      // Set in the child's environment only, before it creates its GL context.
+      const std::string cmd = std::string("LP_NUM_THREADS=") + std::to_string(threads) + " '" + TUMBLE_BIN + "' render " +
+                              scene(sc) + " --frames 120:120 --width 320 --height 240 --msaa 4 --video none --progress none -o '" +
+                              out + "' >'" + out + ".log' 2>&1";
+      ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd << "\n" << slurp(out + ".log");
+      files[threads - 1] = slurp(fs::path(out) / "frame_000120.png");
+      ASSERT_FALSE(files[threads - 1].empty());
+    }
+    EXPECT_TRUE(files[0] == files[1]) << sc << ": LP_NUM_THREADS=1 and 2 differ";
+  }
+}
+// Full run vs --frames range: tests/app/render_cli_test.cpp (RenderCli.FrameRangeIsByteIdenticalToTheFullRun).
+
+// The golden path draws what `tumble render` draws (fixed and automatic camera).
+TEST_F(DeterminismCli, GoldenFramesMatchTumbleRender) {
+  if (updating()) GTEST_SKIP() << "updating goldens";
+  for (const auto& [sc, frame] : {std::pair{"dzhanibekov", 120}, std::pair{"stable_spin", 150}}) {
+    const std::string out = (dir_ / sc).string();
+    ASSERT_EQ(run("render " + scene((std::string(sc) + ".toml").c_str()) + " --frames " + std::to_string(frame) + ":" +
+                  std::to_string(frame) + " --width 320 --height 240 --msaa 4 --video none --progress none -o '" + out + "'")
+                  .code,
+              0);
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%06d.png", frame);
+    char golden[96];
+    std::snprintf(golden, sizeof golden, "%s_f%06d_msaa4.png", sc, frame);
+    const Result r = run("compare '" + out + "/" + name + "' '" + (kSource / "tests/golden" / sc / golden).string() + "'");
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+  }
+}
+
+// ---- the comparison ----
+
+tumble::render::Image flat(int w, int h, std::uint8_t v) {
+  return {w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3, v)};
+}
+
+TEST(Compare, IdenticalImagesPassWithZeroFigures) {
+  const auto a = flat(40, 30, 100);
+  const auto c = tumble::golden::compare_images(a, a);
+  EXPECT_TRUE(c.pass);
+  EXPECT_EQ(c.max_delta, 0);
+  EXPECT_EQ(c.over, 0);
+  EXPECT_EQ(c.rms, 0.0);
+}
+
+TEST(Compare, LowBitNoiseUnderTheThresholdPasses) {
+  auto a = flat(40, 30, 100), b = a;
+  for (std::size_t i = 0; i < b.rgb.size(); i += 7) b.rgb[i] = static_cast<std::uint8_t>(100 + (i % 9) - 4);
+  const auto c = tumble::golden::compare_images(a, b);
+  EXPECT_TRUE(c.pass) << c.summary;
+  EXPECT_EQ(c.max_delta, 4);
+  EXPECT_EQ(c.over, 0);
+}
+
+TEST(Compare, CountsPixelsOverTheThresholdByTheirLargestChannel) {
+  auto a = flat(100, 100, 100), b = a;
+  b.rgb[0 * 3 + 2] = 109;  // blue +9: over 8
+  b.rgb[1 * 3 + 0] = 108;  // +8: not over
+  const auto c = tumble::golden::compare_images(a, b, {8, 0.0});
+  EXPECT_EQ(c.over, 1);
+  EXPECT_EQ(c.max_delta, 9);
+  EXPECT_DOUBLE_EQ(c.fraction, 1e-4);
+  EXPECT_FALSE(c.pass);  // max_fraction 0
+  EXPECT_TRUE(tumble::golden::compare_images(a, b, {8, 1e-4}).pass);
+  const auto mask = tumble::golden::over_threshold_mask(a, b, 8);
+  EXPECT_EQ(mask.rgb[0], 255);
+  EXPECT_EQ(mask.rgb[3], 108 / 4);  // not over: the expected pixel, darkened
+  EXPECT_EQ(tumble::golden::amplified_difference(a, b).rgb[2], 9 * 16);
+}
+
+TEST(Compare, DifferentSizesFailWithoutThrowing) {
+  const auto c = tumble::golden::compare_images(flat(32, 24, 0), flat(24, 32, 0));
+  EXPECT_FALSE(c.pass);
+  EXPECT_TRUE(c.size_mismatch);
+  EXPECT_NE(c.summary.find("32x24"), std::string::npos) << c.summary;
+}
+
+TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
+  const std::string h = std::string(tumble::golden::kTrajectoryHeader) + "\n";
+  const std::string e = h + "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5\n";
+  EXPECT_TRUE(tumble::golden::compare_trajectories(h + "0,b,1.0000001,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5\n", e).pass);
+  const auto bad = tumble::golden::compare_trajectories(h + "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5.0001\n", e);
+  EXPECT_FALSE(bad.pass);
+  EXPECT_NE(bad.summary.find("energy"), std::string::npos) << bad.summary;
+  EXPECT_FALSE(tumble::golden::compare_trajectories(h, e).pass);  // fewer rows (a run diverged)
+  EXPECT_FALSE(tumble::golden::compare_trajectories("x\n", e).pass);
+}
+
+TEST_F(GoldenCli, CompareExitCodes) {
+  auto w = [&](const char* n, const tumble::render::Image& img) {
+    tumble::render::write_png_atomic(dir_ / n, img);
+    return "'" + (dir_ / n).string() + "'";
+  };
+  auto img = flat(64, 48, 200);
+  const std::string a = w("a.png", img);
+  img.rgb[0] = 0;
+  const std::string one = w("one.png", img);
+  for (int i = 0; i < 64 * 10; ++i) img.rgb[static_cast<std::size_t>(i) * 3] = 0;
+  const std::string many = w("many.png", img);
+  const std::string other = w("other.png", flat(48, 64, 200));
+  std::ofstream(dir_ / "junk.png") << "not a png";
+  EXPECT_EQ(run("compare " + a + " " + a).code, 0);
+  EXPECT_EQ(run("compare " + one + " " + a).code, 0);  // 1 of 3072 pixels: 3.3e-4 <= 5e-4
+  Result r = run("compare " + many + " " + a + " --diff '" + (dir_ / "d.png").string() + "'");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("640 of 3072 pixels"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir_ / "d.png"));
+  r = run("compare " + other + " " + a);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("sizes differ"), std::string::npos) << r.out;
+  r = run("compare '" + (dir_ / "junk.png").string() + "' " + a);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("junk.png"), std::string::npos) << r.err;
+  EXPECT_EQ(run("compare '" + (dir_ / "nope.png").string() + "' " + a).code, 2);
+  EXPECT_EQ(run("compare " + a + " " + a + " --max-delta 300").code, 2);
+}
+
+const char* kTiny = TUMBLE_SOURCE_DIR "/tests/app/data/tiny_render.toml";
+
+TEST_F(GoldenCli, MissingGoldenFailsAndIsNotCreated) {
+  const std::string cmd = std::string("golden '") + kTiny + "' --at 0.1 --dir '" + (dir_ / "g").string() +
+                          "' --report '" + (dir_ / "rep").string() + "' --height 48";
+  const Result r = run(cmd + " --width 64");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("MISSING"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::is_empty(dir_ / "g"));
+  EXPECT_TRUE(fs::exists(dir_ / "rep/index.html"));
+  // --update creates them; then the same check passes, and a changed size fails with a report.
+  EXPECT_EQ(run(cmd + " --width 64 --update").code, 0);
+  const Result ok = run(cmd + " --width 64");
+  EXPECT_EQ(ok.code, 0) << ok.out << ok.err;
+  EXPECT_FALSE(fs::exists(dir_ / "rep/index.html")) << "a passing run removes the stale report";
+  const Result bad = run(cmd + " --width 48");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.out.find("sizes differ"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find((dir_ / "rep/index.html").string()), std::string::npos) << bad.out;
+}
+
+TEST_F(GoldenCli, ChangedImageWritesTheFourPicturesAndTheIndex) {
+  const std::string cmd = std::string("golden '") + kTiny + "' --at 0.1 --dir '" + (dir_ / "g").string() +
+                          "' --report '" + (dir_ / "rep").string() + "' --width 64 --height 48 --msaa 0";
+  ASSERT_EQ(run(cmd + " --update").code, 0);
+  const fs::path png = dir_ / "g" / "tiny_render_f000001_msaa0.png";
+  ASSERT_TRUE(fs::exists(png)) << run("golden --help").out;
+  EXPECT_NE(slurp(dir_ / "g" / "tiny_render_f000001_msaa0.json").find("\"gl_renderer\": \""), std::string::npos);
+  auto img = tumble::render::read_png(png);
+  for (auto& v : img.rgb) v = static_cast<std::uint8_t>(255 - v);
+  tumble::render::write_png_atomic(png, img);
+  const Result r = run(cmd);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
+  for (const char* kind : {"actual", "expected", "diff", "mask"})
+    EXPECT_TRUE(fs::exists(dir_ / "rep/img" / (std::string("tiny_render_f000001_msaa0.") + kind + ".png"))) << kind;
+  const std::string html = slurp(dir_ / "rep/index.html");
+  EXPECT_NE(html.find("img/tiny_render_f000001_msaa0.diff.png"), std::string::npos);
+  EXPECT_NE(html.find("max delta"), std::string::npos);
+}
+
+TEST_F(GoldenCli, TimesMustBeFrameTimes) {
+  const Result r = run(std::string("golden '") + kTiny + "' --at 0.15 --dir '" + dir_.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("not a frame time"), std::string::npos) << r.err;
+}
+
+}  // namespace
