@@ -94,16 +94,6 @@ std::string slurp(const fs::path& p, bool& ok) {
   return s.str();
 }
 
-std::string json_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    o += c;
-  }
-  return o;
-}
-
 /// The value of "key": "..." in our own sidecar JSON (no general parser needed).
 std::string sidecar_field(const std::string& json, const std::string& key) {
   const std::string pat = "\"" + key + "\": \"";

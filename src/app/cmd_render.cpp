@@ -45,16 +45,6 @@ Quality parse_quality(const std::string& q) {
   throw InputError("--quality: expected low, medium or high, found '" + q + "'");
 }
 
-std::string json_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    o += c;
-  }
-  return o;
-}
-
 struct Manifest {
   std::string scene_path, scene_hash, settings_hash, method, gl_version, gl_renderer, backend, video;
   double dt = 0, fps = 0;

@@ -32,4 +32,7 @@ scene::Scene load_scene_verbose(const std::filesystem::path& path);
 /// printf("%.17g"): round-trips every double.
 std::string format_double(double v);
 
+/// A string as the inside of a JSON string literal (quotes and backslashes escaped, control characters dropped).
+std::string json_escape(const std::string& s);
+
 }  // namespace tumble::app
