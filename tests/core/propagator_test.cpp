@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/error.hpp"
@@ -59,6 +60,16 @@ TEST(Propagator, AdvanceStepsTakesExactlyNSteps) {
   EXPECT_LT(rotation_angle_between(p.state().q, direct.q), 1e-15);
 }
 
+// Runs `p` far past its divergence and returns what it threw (fails if nothing).
+std::optional<Diverged> run_until_diverged(Propagator& p) {
+  try {
+    p.advance_to(1000.0);
+  } catch (const Diverged& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
 // Explicit Euler with a huge step on a fast spin: ω dt = 50 rad per step. The
 // body (0.1, 1.9, 2.0) starts spinning about its major axis with a small tilt;
 // Euler's orientation update rotates about ω by ~π per step and throws the spin
@@ -71,19 +82,16 @@ TEST(Propagator, DivergingRunThrowsWithTimeStepBodyAndMethod) {
   cfg.method = Method::euler;
   cfg.dt = 1.0;
   Propagator p(m, s0, cfg);
-  try {
-    p.advance_to(1000.0);
-    FAIL() << "expected Diverged";
-  } catch (const Diverged& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("diverged at t="), std::string::npos) << what;
-    EXPECT_NE(what.find("step"), std::string::npos) << what;
-    EXPECT_NE(what.find("spinning top"), std::string::npos) << what;
-    EXPECT_NE(what.find("euler"), std::string::npos) << what;
-    EXPECT_GT(e.step_index, 0);
-    EXPECT_GE(e.time, 0.0);
-    std::printf("%s\n", what.c_str());
-  }
+  const auto e = run_until_diverged(p);
+  ASSERT_TRUE(e) << "expected Diverged";
+  const std::string what = e->what();
+  EXPECT_NE(what.find("diverged at t="), std::string::npos) << what;
+  EXPECT_NE(what.find("step"), std::string::npos) << what;
+  EXPECT_NE(what.find("spinning top"), std::string::npos) << what;
+  EXPECT_NE(what.find("euler"), std::string::npos) << what;
+  EXPECT_GT(e->step_index, 0);
+  EXPECT_GE(e->time, 0.0);
+  std::printf("%s\n", what.c_str());
 }
 
 // With forces the energy is not invariant; a non-finite state is what trips the
@@ -97,15 +105,12 @@ TEST(Propagator, NonFiniteStateThrowsDiverged) {
   cfg.method = Method::euler;
   cfg.dt = 1.0;
   Propagator p(m, s0, cfg);
-  try {
-    p.advance_to(1000.0);
-    FAIL() << "expected Diverged";
-  } catch (const Diverged& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("diverged at t="), std::string::npos) << what;
-    EXPECT_NE(what.find("damped"), std::string::npos) << what;
-    EXPECT_NE(what.find("euler"), std::string::npos) << what;
-  }
+  const auto e = run_until_diverged(p);
+  ASSERT_TRUE(e) << "expected Diverged";
+  const std::string what = e->what();
+  EXPECT_NE(what.find("diverged at t="), std::string::npos) << what;
+  EXPECT_NE(what.find("damped"), std::string::npos) << what;
+  EXPECT_NE(what.find("euler"), std::string::npos) << what;
 }
 
 }  // namespace
