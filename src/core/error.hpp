@@ -25,7 +25,7 @@ class Diverged : public std::runtime_error {
  public:
   Diverged(const std::string& what, double t, long step)
       : std::runtime_error(what), time(t), step_index(step) {}
-  double time;       ///< s, time of the last finite state
+  double time;       ///< s, end of the failing step (where the bad state was found)
   long step_index;   ///< index of the failing step
 };
 

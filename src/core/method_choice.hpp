@@ -1,0 +1,62 @@
+// `method = "auto"` with a tolerance: pick the cheapest method (and its step)
+// whose error at the end of the run stays within the tolerance, from error
+// measured on the body itself and per-step costs measured by the microbench.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/body.hpp"
+#include "core/integrator.hpp"
+#include "core/propagator.hpp"
+
+namespace tumble {
+
+/// What a run asks of auto.
+struct ChoiceRequest {
+  double duration = 10;         ///< s, the run's length
+  double sample_interval = 0;   ///< s between samples (frames); a run steps at most this far; 0 = none
+  double tolerance = 1e-6;      ///< largest end error, rad (see end_state_error)
+};
+
+/// One candidate's measured error model and predicted cost.
+struct MethodEstimate {
+  Method method = Method::splitting;
+  bool usable = false;          ///< its error model was verified on this body
+  StepConfig config;            ///< step (rk45: rtol, atol) that meets the tolerance
+  double steps = 0;             ///< predicted steps of the run
+  double error = 0;             ///< predicted end error, rad
+  double cost_s = 0;            ///< predicted CPU s: steps × step_cost_ns
+  double observed_order = 0;    ///< from the pilot (rk45: 0)
+  std::string note;             ///< why it is not usable
+};
+
+struct MethodChoice {
+  StepConfig config;
+  double error = 0;             ///< predicted end error, rad
+  double cost_s = 0;            ///< predicted CPU s
+  std::string reason;           ///< one line for the user: what was picked and why
+  std::vector<MethodEstimate> candidates;  ///< empty when no pilot ran (torque-free)
+};
+
+/// Error of state `a` against `b` as one number: the larger of the rotation
+/// angle between them (rad) and the centre-of-mass offset in radii of gyration
+/// sqrt((I1+I2+I3)/(2M)) (a shift of one radius counts as one radian).
+double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodyState& b);
+
+/// CPU time of one step (ns), measured by
+/// `tumble_microbench --benchmark_filter='BM_Step/'` (T-handle; "forced" = the
+/// bench's gravity + body-fixed force problem). Used as relative weights, so the
+/// choice does not depend on the load of the machine it runs on.
+double step_cost_ns(Method method, bool forced);
+
+/// Torque-free bodies get `exact` (the closed form, error at round-off). Other
+/// bodies: each candidate runs the whole duration at N, 2N, 4N, … steps; the
+/// differences of successive end states give its error (Richardson: e(h) ≈
+/// d/(2^p - 1) once two successive ratios match the order p), which fixes the
+/// step that meets half the tolerance. rk45 is run at rtol 1e-4, 1e-6, … and
+/// takes the first rtol whose difference to the next stays within it.
+/// The cheapest usable candidate wins. Throws InputError when none is usable.
+MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& req);
+
+}  // namespace tumble

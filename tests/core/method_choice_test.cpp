@@ -1,0 +1,130 @@
+// method = "auto" with a tolerance (issue #6 §4): whatever choose_method picks,
+// and every candidate it calls usable, must meet the tolerance when run the way
+// a scene runs it (stopping at every frame), checked against an independent
+// reference (rk45 at rtol 1e-13), not against the pilot's own estimate.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/error.hpp"
+#include "core/method_choice.hpp"
+#include "core/propagator.hpp"
+#include "reference_problem.hpp"
+#include "test_helpers.hpp"
+
+namespace tumble {
+namespace {
+
+// An asymmetric body (1, 2, 3) kg·m² near its middle axis, pushed by a
+// body-fixed thruster and a body torque, under gravity: no closed form.
+RigidBodyModel thruster_model() {
+  RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "thruster");
+  m.forces.has_gravity = true;
+  m.forces.gravity = {0, 0, -9.81};
+  m.forces.point_forces.push_back({Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  m.forces.torque_body = {0, 0.3, 0};
+  return m;
+}
+
+BodyState thruster_state(const RigidBodyModel& m) {
+  return testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0.5, 3, 0.2});
+}
+
+// The run a scene makes: stop at every sample k·Δ (and at the end).
+BodyState run_like_a_scene(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg,
+                           const ChoiceRequest& r) {
+  Propagator p(m, s0, cfg);
+  for (double k = 1; k * r.sample_interval < r.duration; ++k) p.advance_to(k * r.sample_interval);
+  return p.advance_to(r.duration);
+}
+
+BodyState reference_end(const RigidBodyModel& m, const BodyState& s0, double duration) {
+  StepConfig cfg;
+  cfg.method = Method::rk45;
+  cfg.rtol = 1e-13;
+  cfg.atol = 1e-16;
+  return Propagator(m, s0, cfg).advance_to(duration);
+}
+
+TEST(MethodChoice, TorqueFreeBodyGetsTheClosedForm) {
+  const RigidBodyModel m = testing::reference_model();
+  const MethodChoice c = choose_method(m, testing::reference_state(m), {10, 1.0 / 30, 1e-9});
+  EXPECT_EQ(c.config.method, Method::exact);
+  EXPECT_TRUE(c.candidates.empty());
+  EXPECT_NE(c.reason.find("torque-free"), std::string::npos) << c.reason;
+}
+
+TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
+  const RigidBodyModel m = thruster_model();
+  const BodyState s0 = thruster_state(m);
+  const ChoiceRequest base{5, 1.0 / 30, 1e-6};
+  const BodyState ref = reference_end(m, s0, base.duration);
+  for (double tol : {1e-3, 1e-6, 1e-8}) {
+    ChoiceRequest r = base;
+    r.tolerance = tol;
+    const MethodChoice c = choose_method(m, s0, r);
+    int usable = 0;
+    for (const MethodEstimate& e : c.candidates) {
+      if (!e.usable) continue;
+      ++usable;
+      const double err = end_state_error(m, run_like_a_scene(m, s0, e.config, r), ref);
+      EXPECT_LE(err, tol) << method_name(e.method) << " at tolerance " << tol << " (dt " << e.config.dt
+                          << ", predicted " << e.error << ")";
+      // The prediction is an estimate, not a bound; it should still be the right size.
+      if (e.method != Method::rk45) {
+        EXPECT_GT(err, e.error / 30) << method_name(e.method) << " at " << tol;
+      }
+      if (std::getenv("TUMBLE_VERBOSE")) std::printf("%-18s tol %.0e dt %.3g steps %.0f predicted %.2e actual %.2e\n", std::string(method_name(e.method)).c_str(), tol, e.config.dt, e.steps, e.error, err);
+    }
+    EXPECT_GE(usable, 3) << "tolerance " << tol;
+    // The pick is the cheapest usable candidate, and it is usable.
+    for (const MethodEstimate& e : c.candidates)
+      if (e.usable) {
+        EXPECT_LE(c.cost_s, e.cost_s) << method_name(e.method);
+      }
+    EXPECT_LE(c.error, tol);
+    EXPECT_NE(c.reason.find(std::string(method_name(c.config.method))), std::string::npos) << c.reason;
+  }
+}
+
+TEST(MethodChoice, TighterToleranceNeverTakesFewerSteps) {
+  const RigidBodyModel m = thruster_model();
+  const BodyState s0 = thruster_state(m);
+  const MethodChoice loose = choose_method(m, s0, {5, 1.0 / 30, 1e-4});
+  const MethodChoice tight = choose_method(m, s0, {5, 1.0 / 30, 1e-8});
+  ASSERT_EQ(loose.candidates.size(), tight.candidates.size());
+  for (size_t i = 0; i < loose.candidates.size(); ++i) {
+    const MethodEstimate &a = loose.candidates[i], &b = tight.candidates[i];
+    if (!a.usable || !b.usable) continue;
+    EXPECT_LE(a.steps, b.steps) << method_name(a.method);
+    EXPECT_GE(a.cost_s, 0);
+  }
+  EXPECT_GE(tight.cost_s, loose.cost_s);
+}
+
+// The order check must hold on what the pilot saw: a 2nd-order method must not
+// be credited with 4th order and vice versa.
+TEST(MethodChoice, ObservedOrdersMatchTheMethods) {
+  const RigidBodyModel m = thruster_model();
+  const MethodChoice c = choose_method(m, thruster_state(m), {5, 1.0 / 30, 1e-7});
+  for (const MethodEstimate& e : c.candidates) {
+    if (!e.usable || e.method == Method::rk45 || e.observed_order == 0) continue;
+    const int p = e.method == Method::exact ? 2 : method_order(e.method);
+    EXPECT_NEAR(e.observed_order, p, 0.4) << method_name(e.method);
+  }
+}
+
+TEST(MethodChoice, EndStateErrorCountsShiftInRadiiOfGyration) {
+  const RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 2.0);  // r_g = sqrt(6 / 4)
+  BodyState a, b;
+  b.c = {0, 0, std::sqrt(1.5) * 1e-3};
+  EXPECT_NEAR(end_state_error(m, a, b), 1e-3, 1e-15);
+  b.c.setZero();
+  b.q = Eigen::Quaterniond(Eigen::AngleAxisd(2e-3, Eigen::Vector3d::UnitY()));
+  EXPECT_NEAR(end_state_error(m, a, b), 2e-3, 1e-15);
+}
+
+}  // namespace
+}  // namespace tumble
