@@ -21,7 +21,7 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
   SimulationConfig& sim = s.simulation;
   const toml::table* t = root.subtable("simulation");
   if (!t) return;
-  TableReader r(*t, "simulation", ctx.diag, {"method", "dt", "duration", "fps", "rtol", "atol"});
+  TableReader r(*t, "simulation", ctx.diag, {"method", "dt", "duration", "fps", "rtol", "atol", "tolerance"});
   if (auto m = r.string("method")) {
     if (*m == "auto") sim.method.reset();
     else if (auto pm = parse_method(*m)) sim.method = *pm;
@@ -34,7 +34,14 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
       r.error("method", msg);
     }
   }
-  sim.dt = r.number("dt", Range::positive()).value_or(sim.dt);
+  const std::optional<double> dt = r.number("dt", Range::positive());
+  sim.dt = dt.value_or(sim.dt);
+  sim.tolerance = r.number("tolerance", Range::closed(1e-12, 1));
+  if (sim.tolerance && sim.method)
+    r.error("tolerance", "expected method = \"auto\" with a tolerance (it picks the method and dt that meet it), "
+                         "found method = \"" + std::string(method_name(*sim.method)) + "\"; remove one of them");
+  else if (sim.tolerance && dt)
+    r.error("dt", "expected no dt with method = \"auto\" and a tolerance: auto picks dt itself; remove dt or the tolerance");
   sim.duration = r.number("duration", Range::positive()).value_or(sim.duration);
   sim.fps = r.number("fps", Range::closed(1e-3, 1000)).value_or(sim.fps);
   sim.rtol = r.number("rtol", {0, 1, true, "a tolerance in (0, 1]"}).value_or(sim.rtol);
@@ -132,6 +139,26 @@ StepConfig step_config(const SimulationConfig& sim, const RigidBodyModel& model)
   c.rtol = sim.rtol;
   c.atol = sim.atol;
   return c;
+}
+
+MethodPlan plan_method(const SimulationConfig& sim, const Body& body) {
+  MethodPlan p;
+  if (sim.method || !sim.tolerance) {
+    p.config = step_config(sim, body.model);
+    if (!sim.method)
+      p.reason = std::string(method_name(p.config.method)) +
+                 (body.model.forces.empty() ? ": torque-free, closed form" : ": has forces (no tolerance given)");
+    return p;
+  }
+  ChoiceRequest req;
+  req.duration = sim.duration;
+  req.sample_interval = 1 / sim.fps;
+  req.tolerance = *sim.tolerance;
+  const MethodChoice c = choose_method(body.model, body.initial, req);
+  p.config = c.config;
+  p.reason = c.reason;
+  p.candidates = c.candidates;
+  return p;
 }
 
 Scene load_scene(const std::filesystem::path& path) {

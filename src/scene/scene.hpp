@@ -15,10 +15,13 @@
 #include "core/error.hpp"
 #include "core/integrator.hpp"
 #include "core/mass_properties.hpp"
+#include "core/method_choice.hpp"
 #include "core/particle_cloud.hpp"
 #include "core/propagator.hpp"
 
 namespace tumble::scene {
+
+struct Body;
 
 /// Documented caps (scenes/README.md): beyond these a scene is rejected.
 inline constexpr std::size_t kMaxParticles = 10'000'000;  ///< all bodies together
@@ -33,11 +36,23 @@ struct SimulationConfig {
   double fps = 30;               ///< samples (frames) per second, 1/s
   double rtol = 1e-9;            ///< rk45 only
   double atol = 1e-12;           ///< rk45 only
+  /// "auto" only: largest end error (rad, see end_state_error); auto then picks dt too.
+  std::optional<double> tolerance;
 };
 
-/// "auto": `exact` for a torque-free body, `splitting` otherwise.
+/// "auto" without a tolerance: `exact` for a torque-free body, `splitting` otherwise.
 Method resolve_method(const std::optional<Method>& m, const RigidBodyModel& model);
 StepConfig step_config(const SimulationConfig& sim, const RigidBodyModel& model);
+
+/// How one body will be stepped, and why (`reason` is empty when the scene named the method).
+struct MethodPlan {
+  StepConfig config;
+  std::string reason;
+  std::vector<MethodEstimate> candidates;  ///< auto with a tolerance: every candidate measured
+};
+/// step_config, except that "auto" with a tolerance measures the candidates on
+/// this body (choose_method) and picks the cheapest that meets it.
+MethodPlan plan_method(const SimulationConfig& sim, const Body& body);
 
 enum class VideoFormat { mp4, gif, none };
 

@@ -84,6 +84,30 @@ TEST(SceneKeys, AutoMethodPicksExactOnlyWhenTorqueFree) {
   EXPECT_EQ(scene::step_config(s.simulation, s.bodies[1].model).method, Method::splitting);
 }
 
+// With a tolerance, auto measures the candidates on each body (core's
+// method_choice_test checks the picks against a reference) and says why.
+TEST(SceneKeys, AutoWithToleranceMeasuresEachBody) {
+  const auto s = load_scene_from_string(std::string("[simulation]\nmethod = \"auto\"\ntolerance = 1e-5\nduration = 2\n"
+                                                    "[[bodies]]\nname = \"free\"\n") +
+                                            kRefParticles + "omega_body = [0.1, 3, 0.1]\n[[bodies]]\nname = \"pushed\"\n"
+                                            "torque_body = [0, 0, 0.5]\nomega_body = [0.1, 3, 0.1]\n" + kRefParticles,
+                                        "t.toml");
+  ASSERT_TRUE(s.simulation.tolerance.has_value());
+  EXPECT_EQ(*s.simulation.tolerance, 1e-5);
+  const scene::MethodPlan free = scene::plan_method(s.simulation, s.bodies[0]);
+  EXPECT_EQ(free.config.method, Method::exact);
+  EXPECT_TRUE(free.candidates.empty());
+  const scene::MethodPlan pushed = scene::plan_method(s.simulation, s.bodies[1]);
+  EXPECT_FALSE(pushed.candidates.empty());
+  EXPECT_NE(pushed.reason.find(std::string(method_name(pushed.config.method))), std::string::npos) << pushed.reason;
+  EXPECT_NE(pushed.reason.find("tolerance 1e-05"), std::string::npos) << pushed.reason;
+  // A method named by the scene is used as written, with no reason given.
+  scene::SimulationConfig fixed = s.simulation;
+  fixed.method = Method::rk4;
+  EXPECT_EQ(scene::plan_method(fixed, s.bodies[1]).config.method, Method::rk4);
+  EXPECT_TRUE(scene::plan_method(fixed, s.bodies[1]).reason.empty());
+}
+
 TEST(SceneKeys, ForcesReachTheModel) {
   const auto s = load_scene_from_string(std::string("[forces]\ngravity = [0, 0, -9.81]\n[[bodies]]\n") + kRefParticles +
                                             "torque_body = [0, 0, 1]\nlinear_damping = 0.5\n"
