@@ -88,6 +88,23 @@ std::string to_text(const scene::Scene& s) {
       << "                    " << row(i.axes.col(2)) << " (3, largest)\n"
       << "  box centre        " << row(i.box_center) << " m\n"
       << "  box half extents  " << row(i.half_extents) << " m (along the principal axes)\n";
+    const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
+    o << "  method            " << method_name(plan.config.method);
+    if (plan.config.method == Method::rk45) o << ", rtol " << format_double(plan.config.rtol);
+    else if (!(plan.config.method == Method::exact && b.model.forces.empty())) o << ", dt " << format_double(plan.config.dt) << " s";
+    o << (plan.reason.empty() ? " (set by the scene)" : " (auto: " + plan.reason + ")") << "\n";
+    for (const MethodEstimate& e : plan.candidates) {
+      char line[200];
+      if (e.usable)
+        std::snprintf(line, sizeof line, "    %-18s %-9s %-10.3g %10.0f steps  error %.1e rad  ~%.3g ms%s\n",
+                      std::string(method_name(e.method)).c_str(), e.method == Method::rk45 ? "rtol" : "dt (s)",
+                      e.method == Method::rk45 ? e.config.rtol : e.config.dt, e.steps, e.error, e.cost_s * 1e3,
+                      e.method == plan.config.method ? "  <- picked" : "");
+      else
+        std::snprintf(line, sizeof line, "    %-18s not usable: %s\n", std::string(method_name(e.method)).c_str(),
+                      e.note.c_str());
+      o << line;
+    }
   }
   return o.str();
 }

@@ -281,7 +281,10 @@ int run_render(const RenderOptions& o) {
       for (Method m : s.render.compare_methods) labels.emplace_back(method_name(m));
     else
       for (const scene::Body& b : s.bodies) {
-        const std::string n(method_name(scene::resolve_method(s.simulation.method, b.model)));
+        // auto with a tolerance: the pick follows from the scene bytes (hashed) and the tolerance.
+        const std::string n = !s.simulation.method && s.simulation.tolerance
+                                  ? "auto@" + format_double(*s.simulation.tolerance)
+                                  : std::string(method_name(scene::resolve_method(s.simulation.method, b.model)));
         if (std::find(labels.begin(), labels.end(), n) == labels.end()) labels.push_back(n);
       }
     std::string key;
@@ -299,6 +302,8 @@ int run_render(const RenderOptions& o) {
   for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
 
   const std::vector<Run> runs = simulate_runs(s, count, fps);
+  for (const Run& r : runs)
+    for (const std::string& note : r.auto_notes) std::cerr << "tumble: " << note << "\n";
   const FrameBuilder builder(s, runs, fps, out.width, out.height);
   long good = count;  // frames every run could reach (single run: stop at divergence)
   if (runs.size() == 1) good = static_cast<long>(runs[0].frames.size());

@@ -43,11 +43,13 @@ void apply_overrides(const SimulateOptions& o, scene::Scene& s) {
   scene::SimulationConfig& sim = s.simulation;
   if (o.method_opt->count()) {
     if (o.method == "auto") sim.method.reset();
-    else if (auto m = parse_method(o.method)) sim.method = *m;
+    else if (auto m = parse_method(o.method)) sim.method = *m, sim.tolerance.reset();  // the command line wins
     else throw InputError("--method: expected auto or one of " + method_list() + ", found \"" + o.method + "\"");
   }
   if (o.dt_opt->count()) {
     if (!(o.dt > 0) || !std::isfinite(o.dt)) throw InputError("--dt: expected a finite number > 0 (s), found " + format_double(o.dt));
+    if (!sim.method && sim.tolerance)
+      throw InputError("--dt: method \"auto\" with a tolerance picks dt itself; add --method NAME to set dt");
     sim.dt = o.dt;
   }
   if (o.duration_opt->count()) {
@@ -57,6 +59,11 @@ void apply_overrides(const SimulateOptions& o, scene::Scene& s) {
   }
   if (sim.dt > sim.duration)
     throw InputError("dt (" + format_double(sim.dt) + " s) must be <= duration (" + format_double(sim.duration) + " s)");
+  if (sim.duration / sim.dt > scene::kMaxSteps)
+    throw InputError("duration / dt = " + format_double(sim.duration / sim.dt) + " steps exceeds the cap of 1e9; raise dt");
+  if (o.every_opt->count() && !sim.method && sim.tolerance)
+    throw InputError("--every counts steps of the scene's dt, but method \"auto\" with a tolerance picks each body's dt; "
+                     "drop --every (rows at the scene's fps) or add --method NAME");
   if (o.every_opt->count() && o.every < 1) throw InputError("--every: expected an integer >= 1, found " + std::to_string(o.every));
   const double samples = o.every_opt->count() ? sim.duration / (sim.dt * static_cast<double>(o.every))
                                               : sim.duration * sim.fps;
@@ -70,8 +77,11 @@ int run_simulate(const SimulateOptions& o) {
   scene::Scene s = load_scene_verbose(o.scene);
   apply_overrides(o, s);
   std::vector<std::unique_ptr<Propagator>> props;
-  for (const scene::Body& b : s.bodies)
-    props.push_back(std::make_unique<Propagator>(b.model, b.initial, scene::step_config(s.simulation, b.model)));
+  for (const scene::Body& b : s.bodies) {
+    const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
+    if (!plan.reason.empty()) std::cerr << "tumble: body '" << b.name << "': auto picked " << plan.reason << "\n";
+    props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
+  }
 
   AtomicFile out(o.csv);
   std::string buf = kHeader;

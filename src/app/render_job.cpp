@@ -47,9 +47,16 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
     sim.method = method;
     std::vector<std::unique_ptr<Propagator>> props;
     for (const scene::Body& b : s.bodies) {
-      props.push_back(std::make_unique<Propagator>(b.model, b.initial, scene::step_config(sim, b.model)));
+      const scene::MethodPlan plan = scene::plan_method(sim, b);
+      if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
+      props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
       run.energy0.push_back(total_energy(b.model, b.initial));
-      const std::string name(method_name(scene::resolve_method(method, b.model)));
+      const std::string name(method_name(plan.config.method));
+      char step[64];
+      if (plan.config.method == Method::rk45) std::snprintf(step, sizeof step, "rtol = %g", plan.config.rtol);
+      else if (plan.config.method == Method::exact && b.model.forces.empty()) std::snprintf(step, sizeof step, "closed form");
+      else std::snprintf(step, sizeof step, "dt = %g s", plan.config.dt);
+      if (run.step_label.find(step) == std::string::npos) run.step_label += (run.step_label.empty() ? "" : "/") + std::string(step);
       if (run.label.find(name) == std::string::npos) run.label += (run.label.empty() ? "" : "/") + name;
     }
     try {
@@ -159,10 +166,10 @@ viz::DrawList FrameBuilder::build(long k) const {
         // and the font in proportion to the viewport.
         char line[160];
         if (runs_.size() > 1)
-          std::snprintf(line, sizeof line, "t = %.2f s   dt = %g s   |dE/E| = %.1e", t, scene_.simulation.dt, rel);
+          std::snprintf(line, sizeof line, "t = %.2f s   %s   |dE/E| = %.1e", t, run.step_label.c_str(), rel);
         else
-          std::snprintf(line, sizeof line, "t = %6.2f s   %s   dt = %g s   |dE/E| = %.1e", t, run.label.c_str(),
-                        scene_.simulation.dt, rel);
+          std::snprintf(line, sizeof line, "t = %6.2f s   %s   %s   |dE/E| = %.1e", t, run.label.c_str(),
+                        run.step_label.c_str(), rel);
         v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 30.0f : 12.0f}, font_px_, ink});
       }
     }

@@ -17,9 +17,11 @@ namespace tumble::app {
 /// stored at every frame time t_k = k/fps.
 struct Run {
   std::string label;                        ///< method name(s)
+  std::string step_label;                   ///< "dt = 0.001 s", "rtol = 1e-08", "closed form" (per body, joined)
   std::vector<std::vector<BodyState>> frames;  ///< [frame][body]
   std::vector<double> energy0;              ///< per body, J
   std::optional<std::string> diverged;      ///< message, when the run stopped early
+  std::vector<std::string> auto_notes;      ///< "body 'x': <why auto picked its method>"
 };
 
 /// Simulates `runs` (one per method of [compare], else the scene's) up to
