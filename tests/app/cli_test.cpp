@@ -59,6 +59,25 @@ TEST_F(Cli, SimulateOverridesAndEvery) {
   EXPECT_EQ(split(l.back())[1], "major");
 }
 
+// auto with a tolerance says what it picked and why, and lists the candidates in info.
+TEST_F(Cli, AutoToleranceSaysWhatItPicked) {
+  const fs::path csv = dir_ / "thruster.csv";
+  const Result r = run("simulate " + scene("thruster.toml") + " --csv '" + csv.string() + "' --duration 3");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("body 'satellite': auto picked "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("<= tolerance 1e-06"), std::string::npos) << r.err;
+  EXPECT_EQ(lines(slurp(csv)).size(), 1u + 91u);  // t = 0, 1/30, ..., 3
+  const Result info = run("info " + scene("thruster.toml"));
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("<- picked"), std::string::npos) << info.out;
+  for (const char* m : {"splitting ", "rk4 ", "splitting4 ", "rk45 "}) EXPECT_NE(info.out.find(m), std::string::npos) << m;
+  // The tolerance picks dt: a --dt on top is refused; --method takes over and drops it.
+  EXPECT_EQ(run("simulate " + scene("thruster.toml") + " --csv '" + csv.string() + "' --dt 0.01").code, 2);
+  const Result named = run("simulate " + scene("thruster.toml") + " --csv '" + csv.string() + "' --method rk4 --dt 0.01 --duration 1");
+  EXPECT_EQ(named.code, 0) << named.err;
+  EXPECT_EQ(named.err.find("auto picked"), std::string::npos) << named.err;
+}
+
 TEST_F(Cli, InfoJsonForTheReferenceScene) {
   const Result r = run("info " + scene("reference.toml") + " --json");
   ASSERT_EQ(r.code, 0) << r.err;
