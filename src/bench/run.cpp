@@ -116,6 +116,8 @@ int run(const BenchOptions& opt, std::ostream& log) {
   write_drift_csv(dir / "drift.csv", drift);
   std::vector<FlipRow> flips = dzhanibekov(st, log);
   write_flips_csv(dir / "dzhanibekov.csv", flips);
+  std::vector<AutoRow> autos = auto_study(st, log);
+  write_auto_csv(dir / "auto.csv", autos);
 
   std::vector<std::filesystem::path> pngs;
   if (plot) {
@@ -159,7 +161,16 @@ int run(const BenchOptions& opt, std::ostream& log) {
     const DriftRow& r = last[std::string(method_name(m))];
     md << "| " << r.method << " | " << r.step << " | " << fmt(r.energy) << " | " << fmt(r.momentum) << " |\n";
   }
-  md << "\n## Files\n\n- work_precision.csv, convergence_orders.csv, stability_map.csv, drift.csv, dzhanibekov.csv\n";
+  md << "\n## method = \"auto\": the pick against the tolerance\n\nProblem: " << auto_problem_description()
+     << ". Auto measures each candidate on the body (the pilot) and runs the cheapest that meets the tolerance; "
+     << "the run is then timed (median CPU) and its end error measured against the reference.\n\n"
+     << "| tolerance (rad) | pick | at | predicted error | error | predicted CPU (ms) | CPU (ms) | pilot CPU (ms) |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (const AutoRow& a : autos)
+    md << "| " << fmt(a.tolerance) << " | " << a.method << " | " << a.param_name << " = " << fmt(a.param) << " | "
+       << fmt(a.predicted_error) << " | " << fmt(a.error) << " | " << fmt(a.predicted_cpu_s * 1e3) << " | "
+       << fmt(a.cpu_s * 1e3) << " | " << fmt(a.pilot_cpu_s * 1e3) << " |\n";
+  md << "\n## Files\n\n- work_precision.csv, convergence_orders.csv, stability_map.csv, drift.csv, dzhanibekov.csv, auto.csv\n";
   for (const auto& p : pngs) md << "- " << p.filename().string() << " (script " << p.stem().string() << ".gp)\n";
   if (!plot) md << "- no charts: gnuplot was not found\n";
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

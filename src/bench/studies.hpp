@@ -74,6 +74,17 @@ struct FlipRow {
 std::vector<FlipRow> dzhanibekov(const Settings& st, std::ostream& log);
 void write_flips_csv(const std::filesystem::path& file, const std::vector<FlipRow>& rows);
 
+/// method = "auto" over a sweep of tolerances on a forced body: the pick, its
+/// predicted and measured error (rad) and CPU (s), and the pilot's CPU (s).
+struct AutoRow {
+  double tolerance = 0;
+  std::string method, param_name;
+  double param = 0, predicted_error = 0, error = 0, predicted_cpu_s = 0, cpu_s = 0, pilot_cpu_s = 0;
+};
+std::string auto_problem_description();
+std::vector<AutoRow> auto_study(const Settings& st, std::ostream& log);
+void write_auto_csv(const std::filesystem::path& file, const std::vector<AutoRow>& rows);
+
 /// Writes `text` to `file`, throwing std::runtime_error naming the file on failure.
 void write_text(const std::filesystem::path& file, const std::string& text);
 

@@ -148,4 +148,20 @@ TEST_F(BenchQuick, EulerEnergyGrowsMidpointDoesNot) {
   for (const Row& r : by["implicit_midpoint"]) EXPECT_LT(num(r, "energy_rel_err"), 1e-12) << r.at("step");
 }
 
+// auto's picks meet their tolerance when run, and it predicted their error
+// within a factor of 30 (the prediction is an estimate, the check is not).
+TEST_F(BenchQuick, AutoPicksMeetTheirTolerance) {
+  ASSERT_EQ(rc_, 0);
+  const auto rows = read_csv(dir_ / "auto.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const Row& r : rows) {
+    EXPECT_TRUE(tumble::parse_method(r.at("method")).has_value()) << r.at("method");
+    EXPECT_LE(num(r, "error"), num(r, "tolerance")) << r.at("method");
+    EXPECT_LE(num(r, "predicted_error"), num(r, "tolerance"));
+    EXPECT_LT(num(r, "error"), 30 * num(r, "predicted_error")) << r.at("method");
+    EXPECT_GT(num(r, "cpu_s"), 0);
+    EXPECT_GT(num(r, "pilot_cpu_s"), 0);
+  }
+}
+
 }  // namespace
