@@ -21,8 +21,8 @@ constexpr double kRoundOff = 1e-13;       // end differences below this are roun
 // Candidates: the methods whose error stays bounded over long runs, plus rk4 and
 // rk45 (users' usual picks). The first-order methods are left out: wherever they
 // would be cheapest, splitting costs about the same and keeps |L| exactly.
-constexpr Method kCandidates[] = {Method::splitting, Method::rk4, Method::splitting4, Method::implicit_midpoint,
-                                  Method::exact, Method::rk45};
+constexpr Method kCandidates[] = {Method::rk4, Method::rk45, Method::splitting, Method::splitting4,
+                                  Method::implicit_midpoint, Method::exact};
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -52,7 +52,7 @@ double run_steps(const ChoiceRequest& r, double n) {
 }
 
 MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const BodyState& s0,
-                                   const ChoiceRequest& r) {
+                                   const ChoiceRequest& r, double budget_s) {
   MethodEstimate e;
   e.method = method;
   const int p = method == Method::exact ? 2 : method_order(method);  // exact + kicks: Strang, order 2
@@ -67,7 +67,7 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
   std::optional<BodyState> prev = run(m, s0, cfg(64), r.duration);
   double n = 64, spent = 64 * ns * 1e-9;
   n_k.push_back(n);
-  while (2 * n <= kMaxPilotSteps && spent + 2 * n * ns * 1e-9 <= kPilotBudgetS) {
+  while (2 * n <= kMaxPilotSteps && spent + 2 * n * ns * 1e-9 <= budget_s) {
     n *= 2;
     spent += n * ns * 1e-9;
     std::optional<BodyState> cur = run(m, s0, cfg(n), r.duration);
@@ -103,47 +103,50 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
   }
   if (!e.usable) {
     const double last = d_k.empty() ? 0 : d_k.back();
-    e.note = last <= kRoundOff ? "no change measured" :
-             "order " + std::to_string(p) + " not seen within the pilot (" + fmt("%.0f", n) +
-             " steps; last difference " + fmt("%.1e", last) + ")";
+    e.note = d_k.empty() ? "pilot budget (" + fmt("%.2g", budget_s * 1e3) + " ms) too small for a second run" :
+             last <= kRoundOff ? "no change measured" :
+             "order " + std::to_string(p) + " not seen within the pilot's budget (" + fmt("%.2g", budget_s * 1e3) +
+             " ms: up to " + fmt("%.0f", n) + " steps; last difference " + fmt("%.1e", last) + ")";
     return e;
   }
   e.cost_s = e.steps * ns * 1e-9;
   return e;
 }
 
-MethodEstimate rk45_estimate(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
+MethodEstimate rk45_estimate(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r, double budget_s) {
   MethodEstimate e;
   e.method = Method::rk45;
-  auto cfg = [&](double rtol) {
+  auto cfg = [&](int k) {
     StepConfig c;
     c.method = Method::rk45;
     c.dt = r.duration;
-    c.rtol = rtol;
-    c.atol = rtol * 1e-3;
+    c.rtol = std::pow(10.0, -k);
+    c.atol = c.rtol * 1e-3;
     return c;
   };
-  // rtol = 10^-k; the end state at rtol 10^-(k+2) is ~100× better, so their
-  // difference is the error at 10^-k.
-  constexpr int kFirst = 3, kLast = 11;
-  std::optional<BodyState> x[kLast + 3];
-  long steps[kLast + 3] = {};
-  auto at = [&](int k) -> const std::optional<BodyState>& {
-    if (!steps[k]) x[k] = run(m, s0, cfg(std::pow(10.0, -k)), r.duration, &steps[k]), steps[k] = std::max(1L, steps[k]);
-    return x[k];
-  };
-  for (int k = kFirst; k <= kLast; ++k) {
-    const double d = at(k) && at(k + 2) ? end_state_error(m, *at(k), *at(k + 2)) : std::numeric_limits<double>::infinity();
+  // rtol = 10^-k against 10^-(k+1): the finer run errs ~10× less, so the
+  // difference is ~0.9 of the coarser one's error; 10/9 of it is taken.
+  const double ns = step_cost_ns(Method::rk45, true);
+  long steps = 0, next_steps = 0;
+  std::optional<BodyState> x = run(m, s0, cfg(3), r.duration, &steps);
+  double spent = static_cast<double>(steps) * ns * 1e-9;
+  for (int k = 3; k <= 11 && spent <= budget_s; ++k) {
+    std::optional<BodyState> next = run(m, s0, cfg(k + 1), r.duration, &next_steps);
+    spent += static_cast<double>(next_steps) * ns * 1e-9;
+    const double d = x && next ? end_state_error(m, *x, *next) * 10 / 9 : std::numeric_limits<double>::infinity();
     if (d <= kSafety * r.tolerance) {
       e.usable = true;
-      e.config = cfg(std::pow(10.0, -k));
-      e.steps = static_cast<double>(steps[k]);
+      e.config = cfg(k);
+      e.steps = static_cast<double>(std::max(1L, steps));
       e.error = d;
-      e.cost_s = e.steps * step_cost_ns(Method::rk45, true) * 1e-9;
+      e.cost_s = e.steps * ns * 1e-9;
       return e;
     }
+    x = next;
+    steps = next_steps;
   }
-  e.note = "no rtol >= 1e-11 met the tolerance";
+  e.note = spent > budget_s ? "pilot stopped at its budget (" + fmt("%.2g", budget_s * 1e3) + " ms) before an rtol met the tolerance"
+                            : "no rtol >= 1e-11 met the tolerance";
   return e;
 }
 
@@ -178,8 +181,16 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
     c.reason = "exact: torque-free, so the closed form (error at round-off)";
     return c;
   }
-  for (Method method : kCandidates)
-    c.candidates.push_back(method == Method::rk45 ? rk45_estimate(m, s0, r) : fixed_step_estimate(method, m, s0, r));
+  // Once a run of cost C is known, a pilot costing many times C cannot pay
+  // off: budgets shrink to 4 C (a pilot ladder costs ~2–4 runs of its finest
+  // level, so a cheaper method still fits). The likely winners go first.
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (Method method : kCandidates) {
+    const double budget = r.prune ? std::min(kPilotBudgetS, 4 * best_cost) : kPilotBudgetS;
+    c.candidates.push_back(method == Method::rk45 ? rk45_estimate(m, s0, r, budget)
+                                                  : fixed_step_estimate(method, m, s0, r, budget));
+    if (c.candidates.back().usable) best_cost = std::min(best_cost, c.candidates.back().cost_s);
+  }
   const MethodEstimate* best = nullptr;
   for (const MethodEstimate& e : c.candidates)
     if (e.usable && (!best || e.cost_s < best->cost_s)) best = &e;

@@ -17,6 +17,7 @@ struct ChoiceRequest {
   double duration = 10;         ///< s, the run's length
   double sample_interval = 0;   ///< s between samples (frames); a run steps at most this far; 0 = none
   double tolerance = 1e-6;      ///< largest end error, rad (see end_state_error)
+  bool prune = true;            ///< false: measure every candidate in full (tests, bench)
 };
 
 /// One candidate's measured error model and predicted cost.
@@ -54,9 +55,10 @@ double step_cost_ns(Method method, bool forced);
 /// bodies: each candidate runs the whole duration at N, 2N, 4N, … steps; the
 /// differences of successive end states give its error (Richardson: e(h) ≈
 /// d/(2^p - 1) once two successive ratios match the order p), which fixes the
-/// step that meets half the tolerance. rk45 is run at rtol 1e-4, 1e-6, … and
-/// takes the first rtol whose difference to the next stays within it.
-/// The cheapest usable candidate wins. Throws InputError when none is usable.
+/// step that meets half the tolerance. rk45 is run at rtol 1e-3, 1e-4, … and
+/// takes the first rtol whose difference to the next stays within half of it.
+/// Each pilot has a CPU budget (0.2 s by step_cost_ns, less once a cheaper run
+/// is known). The cheapest usable candidate wins. Throws InputError when none is.
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& req);
 
 }  // namespace tumble

@@ -64,7 +64,12 @@ TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
   for (double tol : {1e-3, 1e-6, 1e-8}) {
     ChoiceRequest r = base;
     r.tolerance = tol;
+    r.prune = false;
     const MethodChoice c = choose_method(m, s0, r);
+    // Pruning only skips pilots that cannot pay off: the pick stays the same.
+    r.prune = true;
+    EXPECT_EQ(choose_method(m, s0, r).config.method, c.config.method) << "tolerance " << tol;
+    r.prune = false;
     int usable = 0;
     for (const MethodEstimate& e : c.candidates) {
       if (!e.usable) continue;
@@ -92,8 +97,8 @@ TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
 TEST(MethodChoice, TighterToleranceNeverTakesFewerSteps) {
   const RigidBodyModel m = thruster_model();
   const BodyState s0 = thruster_state(m);
-  const MethodChoice loose = choose_method(m, s0, {5, 1.0 / 30, 1e-4});
-  const MethodChoice tight = choose_method(m, s0, {5, 1.0 / 30, 1e-8});
+  const MethodChoice loose = choose_method(m, s0, {5, 1.0 / 30, 1e-4, false});
+  const MethodChoice tight = choose_method(m, s0, {5, 1.0 / 30, 1e-8, false});
   ASSERT_EQ(loose.candidates.size(), tight.candidates.size());
   for (size_t i = 0; i < loose.candidates.size(); ++i) {
     const MethodEstimate &a = loose.candidates[i], &b = tight.candidates[i];
@@ -108,7 +113,7 @@ TEST(MethodChoice, TighterToleranceNeverTakesFewerSteps) {
 // be credited with 4th order and vice versa.
 TEST(MethodChoice, ObservedOrdersMatchTheMethods) {
   const RigidBodyModel m = thruster_model();
-  const MethodChoice c = choose_method(m, thruster_state(m), {5, 1.0 / 30, 1e-7});
+  const MethodChoice c = choose_method(m, thruster_state(m), {5, 1.0 / 30, 1e-7, false});
   for (const MethodEstimate& e : c.candidates) {
     if (!e.usable || e.method == Method::rk45 || e.observed_order == 0) continue;
     const int p = e.method == Method::exact ? 2 : method_order(e.method);
