@@ -17,6 +17,7 @@ constexpr double kSafety = 0.5;           // aim at half the tolerance
 constexpr double kPilotBudgetS = 0.2;     // predicted CPU per candidate's pilot
 constexpr double kMaxPilotSteps = 1 << 22;
 constexpr double kRoundOff = 1e-13;       // end differences below this are round-off
+constexpr double kMaxRunSteps = 1e9;      // the scenes' step cap (scene::kMaxSteps)
 
 // Candidates: the methods whose error stays bounded over long runs, plus rk4 and
 // rk45 (users' usual picks). The first-order methods are left out: wherever they
@@ -107,6 +108,11 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
              last <= kRoundOff ? "no change measured" :
              "order " + std::to_string(p) + " not seen within the pilot's budget (" + fmt("%.2g", budget_s * 1e3) +
              " ms: up to " + fmt("%.0f", n) + " steps; last difference " + fmt("%.1e", last) + ")";
+    return e;
+  }
+  if (e.steps > kMaxRunSteps) {
+    e.usable = false;
+    e.note = "needs " + fmt("%.2g", e.steps) + " steps, beyond the cap of 1e9";
     return e;
   }
   e.cost_s = e.steps * ns * 1e-9;
