@@ -46,8 +46,8 @@ Quality parse_quality(const std::string& q) {
 }
 
 struct Manifest {
-  std::string scene_path, scene_hash, settings_hash, method, gl_version, gl_renderer, backend, video;
-  double dt = 0, fps = 0;
+  std::string scene_path, scene_hash, settings_hash, method, step, gl_version, gl_renderer, backend, video;
+  double dt = 0, fps = 0;  // dt: the scene's; `step` says what each run really used
   int width = 0, height = 0, msaa = 0;
   long frame_count = 0, first = 0, last = -1, written = 0;
   bool complete = false;
@@ -57,7 +57,8 @@ struct Manifest {
     o << "{\n  \"tool\": \"tumble\",\n  \"version\": \"" << TUMBLE_VERSION << "\",\n"
       << "  \"scene\": \"" << json_escape(scene_path) << "\",\n  \"scene_hash\": \"" << scene_hash << "\",\n"
       << "  \"settings_hash\": \"" << settings_hash << "\",\n"
-      << "  \"method\": \"" << json_escape(method) << "\",\n  \"dt\": " << format_double(dt) << ",\n"
+      << "  \"method\": \"" << json_escape(method) << "\",\n  \"step\": \"" << json_escape(step) << "\",\n"
+      << "  \"dt\": " << format_double(dt) << ",\n"
       << "  \"fps\": " << format_double(fps) << ",\n  \"width\": " << width << ",\n  \"height\": " << height
       << ",\n  \"msaa\": " << msaa << ",\n  \"frame_count\": " << frame_count << ",\n  \"frames\": [" << first
       << ", " << last << "],\n  \"frames_written\": " << written << ",\n  \"gl_backend\": \"" << backend
@@ -313,6 +314,7 @@ int run_render(const RenderOptions& o) {
   render::Renderer renderer(*ctx, out.width, out.height, out.msaa);
 
   for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
+  for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
   man.dt = s.simulation.dt;
   man.fps = fps;
   man.width = out.width;
