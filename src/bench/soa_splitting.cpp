@@ -28,8 +28,8 @@ BodyState BodiesSoA::state(size_t i) const {
 
 namespace {
 
-// One step of bodies [b0, b1) on raw arrays. `kSmall`: every half angle is
-// known to be ≤ π/4, so the kernel needs no libm call and the loop vectorises.
+// One step of bodies [b0, b1) on raw arrays. `kSmall`: every sub-flow angle is
+// known to be ≤ kSmallAngle, so the kernel needs no libm call and the loop vectorises.
 // __restrict: the arrays never overlap, which spares the vectoriser alias checks.
 template <bool kSmall>
 void step_block(size_t b0, size_t b1, double h, double* __restrict qw, double* __restrict qx,
@@ -53,13 +53,13 @@ void BodiesSoA::advance_range(size_t begin, size_t end, double h, long steps) {
   constexpr size_t kTile = 256;  // 17 doubles × 256 = 35 KB: stays in L1/L2 across steps
   for (size_t t0 = begin; t0 < end; t0 += kTile) {
     const size_t t1 = std::min(end, t0 + kTile);
-    // Largest half angle of any sub-flow is |h Πᵢ/(2Iᵢ)| ≤ |h| |L| max(1/Iᵢ)/2 (|Π| = |L|,
-    // L fixed); with a margin for rounding, the whole tile may skip the libm branch.
+    // Largest sub-flow angle is |h Π₃/I₃| ≤ |h| |L| max(1/Iᵢ) (|Π| = |L|, L fixed);
+    // with a margin for rounding, the whole tile may skip the libm branch.
     bool small = true;
     for (size_t b = t0; b < t1; ++b) {
       const double l = std::sqrt(Lx_[b] * Lx_[b] + Ly_[b] * Ly_[b] + Lz_[b] * Lz_[b]);
-      const double bound = 0.5 * std::abs(h) * l * std::max({ix_[b], iy_[b], iz_[b]});
-      small = small && bound <= 0.99 * kernel::kPiOver4;
+      const double bound = std::abs(h) * l * std::max({ix_[b], iy_[b], iz_[b]});
+      small = small && bound <= 0.99 * kernel::kSmallAngle;
     }
     const auto step = small ? step_block<true> : step_block<false>;
     for (long n = 0; n < steps; ++n)

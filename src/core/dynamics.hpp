@@ -22,27 +22,42 @@ struct Wrench {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
 };
 
-/// q' = ½ ω_world ⊗ q for world L, where ω_world = q I⁻¹ (q̄ L); q need not be
-/// unit (RK stages). Spelt out in scalars for speed, operation for operation as
-/// Eigen evaluates `q * v` (v + w·2(u×v) + u×2(u×v)) and its SSE2 quaternion
-/// product, so the bits match the Eigen expression (tests/core/rk_fast_path_test).
+/// q' = ½ ω_world ⊗ q for world L, ω_world = q I⁻¹ (q̄ L), evaluated in the
+/// body frame as ½ q ⊗ (0, ω_b), ω_b = I⁻¹ Π, Π = q̄ L — the product the seed's
+/// Q(q) forms, which is right exactly for this body-frame ω (README, erratum 1).
+/// One rotation fewer on the latency chain of an RK stage.
+///
+/// RK stages are not unit quaternions, and Eigen's rotation q v = v + 2w(u×v) +
+/// 2u×(u×v) is q v q̄ + (1 - |q|²) v there. Expanding ½ (0, q ω_b) ⊗ q with it
+/// gives ½ (-u·ω_b, w ω_b + (2|q|² - 1) u × ω_b): the same vector field on all
+/// of R⁴, not only on |q| = 1 (without the 2|q|² - 1 factor the RK4 result
+/// moves by O(h⁵) per step, not by round-off). Spelt out in scalars, operation
+/// for operation as the Eigen expression in tests/core/fast_path_test.cpp
+/// (2·(a×b) is formed as (2a)×b etc., exact doublings, one level shorter).
+/// The scalar overload is for hot loops (rk4_free): always inlined, no packing.
+struct QuatRate {
+  double x, y, z, w;  // Eigen's coefficient order
+};
+[[gnu::always_inline]] inline QuatRate quaternion_rate(const Eigen::Vector3d& inv_inertia, double x, double y,
+                                                      double z, double w, const Eigen::Vector3d& L) {
+  // Π = q̄ L (Eigen: L + w·2(v×L) + v×2(v×L), v = -u); the doublings move onto w
+  // and v, which are ready first.
+  const double vx = -x, vy = -y, vz = -z, w2 = w + w, vx2 = vx + vx, vy2 = vy + vy, vz2 = vz + vz;
+  const double ux = vy * L.z() - vz * L.y(), uy = vz * L.x() - vx * L.z(), uz = vx * L.y() - vy * L.x();
+  const double pix = L.x() + w2 * ux + (vy2 * uz - vz2 * uy), piy = L.y() + w2 * uy + (vz2 * ux - vx2 * uz),
+               piz = L.z() + w2 * uz + (vx2 * uy - vy2 * ux);
+  // ½ω_b: 0.5·I⁻¹ is exact and off the chain.
+  const double ox = (0.5 * inv_inertia.x()) * pix, oy = (0.5 * inv_inertia.y()) * piy,
+               oz = (0.5 * inv_inertia.z()) * piz;
+  // g u with g = 2|q|² - 1 (= u on the unit sphere), also off the chain.
+  const double g = 2 * ((x * x + z * z) + (y * y + w * w)) - 1, gx = g * x, gy = g * y, gz = g * z;
+  return {w * ox + (gy * oz - gz * oy), w * oy + (gz * ox - gx * oz), w * oz + (gx * oy - gy * ox),
+          -(x * ox + y * oy + z * oz)};
+}
 inline Eigen::Vector4d quaternion_rate(const RigidBodyModel& m, const Eigen::Quaterniond& q,
                                        const Eigen::Vector3d& L) {
-  const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
-  // Π = q̄ L (vector part -u).
-  double ux = -y * L.z() - -z * L.y(), uy = -z * L.x() - -x * L.z(), uz = -x * L.y() - -y * L.x();
-  ux += ux, uy += uy, uz += uz;
-  const double pix = L.x() + w * ux + (-y * uz - -z * uy), piy = L.y() + w * uy + (-z * ux - -x * uz),
-               piz = L.z() + w * uz + (-x * uy - -y * ux);
-  const double bx = m.inv_inertia.x() * pix, by = m.inv_inertia.y() * piy, bz = m.inv_inertia.z() * piz;
-  // ω = q ω_b.
-  double vx = y * bz - z * by, vy = z * bx - x * bz, vz = x * by - y * bx;
-  vx += vx, vy += vy, vz += vz;
-  const double ox = bx + w * vx + (y * vz - z * vy), oy = by + w * vy + (z * vx - x * vz),
-               oz = bz + w * vz + (x * vy - y * vx);
-  // (0, ω) ⊗ q in Eigen's SSE2 grouping; its terms in the zero w are exact zeros.
-  return 0.5 * Eigen::Vector4d(oy * z - (oz * y - ox * w), oy * w + (oz * x - ox * z),
-                               -(oy * x) + (oz * w + ox * y), -(oy * y) - (oz * z + ox * x));
+  const QuatRate r = quaternion_rate(m.inv_inertia, q.x(), q.y(), q.z(), q.w(), L);
+  return {r.x, r.y, r.z, r.w};
 }
 
 /// Pure: depends only on its arguments. `t` (s) is unused by the current force

@@ -1,5 +1,7 @@
 #include "core/explicit_rk.hpp"
 
+#include <array>
+
 namespace tumble {
 
 const ButcherTableau kEulerTableau{1, {{{0}}}, {1}, {0}};
@@ -44,20 +46,31 @@ BodyState rk4_unrolled(F&& f, const RigidBodyModel& m, const BodyState& s, doubl
 
 // Torque-free: P and L are constant and c' = P/M, so only q varies between
 // stages. c takes the same four increments as in rk_step; P, L are not touched.
+// In scalars (no packed Eigen temporaries to unpack on the stage chain), same
+// operations in the same order as rk_step, so the same bits.
+using Q4 = std::array<double, 4>;  // (x, y, z, w)
+
+[[gnu::always_inline]] inline Q4 rate4(const RigidBodyModel& m, const Q4& q, const Eigen::Vector3d& L) {
+  const QuatRate r = quaternion_rate(m.inv_inertia, q[0], q[1], q[2], q[3], L);
+  return {r.x, r.y, r.z, r.w};
+}
+
+[[gnu::always_inline]] inline Q4 axpy4(const Q4& a, double t, const Q4& k) {
+  return {a[0] + t * k[0], a[1] + t * k[1], a[2] + t * k[2], a[3] + t * k[3]};
+}
+
 BodyState rk4_free(const RigidBodyModel& m, const BodyState& s, double h) {
   const double ha = h * 0.5, b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
   const Eigen::Vector3d v = s.P / m.mass;
-  const auto rate = [&](const Eigen::Vector4d& q) {
-    return quaternion_rate(m, Eigen::Quaterniond(q), s.L);
-  };
-  const Eigen::Vector4d& q0 = s.q.coeffs();
-  const Eigen::Vector4d k1 = rate(q0);
-  const Eigen::Vector4d k2 = rate(q0 + ha * k1);
-  const Eigen::Vector4d k3 = rate(q0 + ha * k2);
-  const Eigen::Vector4d k4 = rate(q0 + h * k3);
+  const Q4 q0{s.q.x(), s.q.y(), s.q.z(), s.q.w()};
+  const Q4 k1 = rate4(m, q0, s.L);
+  const Q4 k2 = rate4(m, axpy4(q0, ha, k1), s.L);
+  const Q4 k3 = rate4(m, axpy4(q0, ha, k2), s.L);
+  const Q4 k4 = rate4(m, axpy4(q0, h, k3), s.L);
+  const Q4 q = axpy4(axpy4(axpy4(axpy4(q0, b1, k1), b2, k2), b2, k3), b1, k4);
   BodyState out = s;
   out.c = (((s.c + b1 * v) + b2 * v) + b2 * v) + b1 * v;
-  out.q.coeffs() = (((q0 + b1 * k1) + b2 * k2) + b2 * k3) + b1 * k4;
+  out.q = Eigen::Quaterniond(q[3], q[0], q[1], q[2]);
   out.q.normalize();
   return out;
 }

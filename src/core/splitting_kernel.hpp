@@ -9,10 +9,34 @@
 namespace tumble::kernel {
 
 inline constexpr double kPiOver4 = 0.78539816339744830962;
+/// Largest sub-flow angle |θ| of splitting_rotation_small (h|ω| ≲ 1/8, any
+/// sensible step): its errors grow by ~(1 + |θ|) per sub-flow, so they stay at
+/// round-off against the reference arithmetic (within 2e-15).
+inline constexpr double kSmallAngle = 0.125;
+
+/// sin and cos for |x| ≤ π/4 (FreeBSD msun k_sin.c / k_cos.c coefficients,
+/// error < 1 ulp): no range reduction, no branches, no libm call. The
+/// polynomials in z = x² go by Estrin's scheme (x³z²ⁿ powers formed alongside
+/// the coefficient pairs): depth 7 (sin) and 8 (cos) instead of msun's 10.
+[[gnu::always_inline]] inline void sincos_small(double x, double& s, double& c) {
+  constexpr double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+                   S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+                   S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+  constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+                   C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+                   C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+  const double z = x * x, w = z * z, w2 = w * w, xz = x * z;
+  // sin = x + x³(S1 + S2 z) + x³z²(S3 + S4 z) + x³z⁴(S5 + S6 z).
+  s = x + ((xz * (S1 + S2 * z) + (xz * w) * (S3 + S4 * z)) + (xz * w2) * (S5 + S6 * z));
+  // cos = 1 - z/2 + z²(C1 + C2 z) + z⁴(C3 + C4 z) + z⁶(C5 + C6 z).
+  const double tail = (w * (C1 + C2 * z) + w2 * (C3 + C4 * z)) + (w2 * w) * (C5 + C6 * z);
+  const double hz = 0.5 * z, a = 1.0 - hz;
+  c = a + (((1.0 - a) - hz) + tail);  // recovers the rounding of 1 - z/2 (k_cos.c)
+}
 
 /// sin and cos for |x| ≤ π/4 (FreeBSD msun k_sin.c / k_cos.c kernels, error
-/// < 1 ulp): no range reduction, no branches, no libm call.
-[[gnu::always_inline]] inline void sincos_small(double x, double& s, double& c) {
+/// < 1 ulp) in msun's own evaluation order: the general path keeps its bits.
+[[gnu::always_inline]] inline void sincos_msun(double x, double& s, double& c) {
   constexpr double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
                    S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
                    S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
@@ -29,7 +53,7 @@ inline constexpr double kPiOver4 = 0.78539816339744830962;
 
 /// sin and cos for any x: the kernel inside ±π/4, libm outside.
 inline void sincos_any(double x, double& s, double& c) {
-  if (std::abs(x) <= kPiOver4) return sincos_small(x, s, c);
+  if (std::abs(x) <= kPiOver4) return sincos_msun(x, s, c);
   s = std::sin(x);
   c = std::cos(x);
 }
@@ -56,12 +80,11 @@ template <int I>
 /// Flow of Tᵢ = Πᵢ²/(2Iᵢ) over τ: the body turns by θ = τ Πᵢ/Iᵢ about axis i, so
 /// Π turns by -θ; r picks up the half-angle rotation. One sincos of θ/2 serves
 /// both (cos θ = c² - s², sin θ = 2cs).
-template <int I, bool kSmall, bool kFirst>
+template <int I, bool kFirst>
 [[gnu::always_inline]] inline void axis_flow(double inv_i, double tau, double pi[3], Quat& r) {
   const double half = 0.5 * tau * pi[I] * inv_i;
   double sh, ch;
-  if constexpr (kSmall) sincos_small(half, sh, ch);
-  else sincos_any(half, sh, ch);
+  sincos_any(half, sh, ch);
   const double c = ch * ch - sh * sh, s = 2 * ch * sh;
   constexpr int J = (I + 1) % 3, K = (I + 2) % 3;
   const double pj = pi[J], pk = pi[K];
@@ -75,25 +98,93 @@ template <int I, bool kSmall, bool kFirst>
   }
 }
 
-/// NO_SQUISH / DLM symmetric splitting 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2) of the
-/// free rotation: q ← normalise(q ⊗ r) with world L (l) fixed. `kSmall` = the
-/// caller guarantees every half angle |hΠᵢ/(4Iᵢ)|, |hΠ₃/(2I₃)| ≤ π/4.
-template <bool kSmall>
-[[gnu::always_inline]] inline Quat splitting_rotation(const Quat& q, const double l[3], const double inv[3], double h) {
+/// The splitting map for any angle, sub-flow by sub-flow (the seed's arithmetic,
+/// as the Eigen/libm reference in tests/core/fast_path_test.cpp). Used beyond
+/// kSmallAngle: each sub-flow amplifies a 1-ulp difference by ~(1 + |θ|), so at
+/// h|ω| ~ 10 only the reference's own operations stay within 1e-14 of it.
+[[gnu::always_inline]] inline Quat splitting_rotation_general(const Quat& q, const double l[3], const double inv[3], double h) {
   // Π = q̄ L (Eigen's formula: L + 2w (v × L) + v × 2(v × L) with v = -q.vec).
   const double vx = -q.x, vy = -q.y, vz = -q.z;
   const double ux = 2 * (vy * l[2] - vz * l[1]), uy = 2 * (vz * l[0] - vx * l[2]), uz = 2 * (vx * l[1] - vy * l[0]);
   double pi[3] = {l[0] + q.w * ux + (vy * uz - vz * uy), l[1] + q.w * uy + (vz * ux - vx * uz),
                   l[2] + q.w * uz + (vx * uy - vy * ux)};
   Quat r;
-  axis_flow<0, kSmall, true>(inv[0], 0.5 * h, pi, r);
-  axis_flow<1, kSmall, false>(inv[1], 0.5 * h, pi, r);
-  axis_flow<2, kSmall, false>(inv[2], h, pi, r);
-  axis_flow<1, kSmall, false>(inv[1], 0.5 * h, pi, r);
-  axis_flow<0, kSmall, false>(inv[0], 0.5 * h, pi, r);
+  axis_flow<0, true>(inv[0], 0.5 * h, pi, r);
+  axis_flow<1, false>(inv[1], 0.5 * h, pi, r);
+  axis_flow<2, false>(inv[2], h, pi, r);
+  axis_flow<1, false>(inv[1], 0.5 * h, pi, r);
+  axis_flow<0, false>(inv[0], 0.5 * h, pi, r);
   const Quat o = mul(q, r);
   const double inv_norm = 1.0 / std::sqrt(o.w * o.w + o.x * o.x + o.y * o.y + o.z * o.z);
   return {o.w * inv_norm, o.x * inv_norm, o.y * inv_norm, o.z * inv_norm};
+}
+
+/// The same map when every sub-flow angle |θ| = |τ Πᵢ/Iᵢ| ≤ kSmallAngle, written
+/// for latency (one body's steps form one dependency chain, through the angles): Π takes sincos θ directly (no double angle from
+/// θ/2; the r factors are off the chain), the next angle kⱼ Πⱼ' is formed from
+/// pre-scaled components (c·(kⱼ Πⱼ) + s·(kⱼ Πₖ)), the last sub-flow's Π update
+/// is dead and omitted, and as |r| = 1, normalise(q ⊗ r) = (q ⊗ r)/|q| with
+/// 1/|q| and q ⊗ r₁…r₄ formed while the angles run. Each is an identity, so
+/// results move only by round-off (the output norm is 1 within a few ulps, and
+/// the next step divides by it again, so it does not drift).
+[[gnu::always_inline]] inline Quat splitting_rotation_small(const Quat& q, const double l[3], const double inv[3], double h) {
+  // Sub-flow angles are θ = kᵢ Πᵢ: per-step constants, off the chain.
+  const double k0 = 0.5 * h * inv[0], k1 = 0.5 * h * inv[1], k2 = h * inv[2], k0h = 0.5 * k0;
+  // Π = q̄ L (Eigen's formula: L + w·2(v×L) + v×2(v×L), v = -q.vec; the exact
+  // doublings go onto w and v, which are ready first).
+  const double vx = -q.x, vy = -q.y, vz = -q.z, w2 = q.w + q.w, vx2 = vx + vx, vy2 = vy + vy, vz2 = vz + vz;
+  const double ux = vy * l[2] - vz * l[1], uy = vz * l[0] - vx * l[2], uz = vx * l[1] - vy * l[0];
+  const double p0 = l[0] + w2 * ux + (vy2 * uz - vz2 * uy), p1 = l[1] + w2 * uy + (vz2 * ux - vx2 * uz),
+               p2 = l[2] + w2 * uz + (vx2 * uy - vy2 * ux);
+  const double inv_norm = 1.0 / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  double c, s, ch, sh;
+  // 1 (axis 0, h/2): Π₁, Π₂ turn.
+  const double tA = k0 * p0;
+  sincos_small(tA, s, c);
+  sincos_small(0.5 * tA, sh, ch);
+  Quat r{ch, sh, 0, 0};
+  const double p1a = c * p1 + s * p2, p2a = -s * p1 + c * p2;
+  // 2 (axis 1, h/2): Π₂, Π₀ turn.
+  const double tB = c * (k1 * p1) + s * (k1 * p2);
+  sincos_small(tB, s, c);
+  sincos_small(0.5 * tB, sh, ch);
+  r = mul_axis<1>(r, ch, sh);
+  const double p2b = c * p2a + s * p0, p0b = -s * p2a + c * p0;
+  // 3 (axis 2, h): Π₀, Π₁ turn.
+  const double tC = c * (k2 * p2a) + s * (k2 * p0);
+  sincos_small(tC, s, c);
+  sincos_small(0.5 * tC, sh, ch);
+  r = mul_axis<2>(r, ch, sh);
+  const double p0c = c * p0b + s * p1a;
+  // 4 (axis 1, h/2): only Π₀ is read again.
+  const double tD = -s * (k1 * p0b) + c * (k1 * p1a);
+  sincos_small(tD, s, c);
+  sincos_small(0.5 * tD, sh, ch);
+  r = mul_axis<1>(r, ch, sh);
+  // 5 (axis 0, h/2): only its half angle; q ⊗ r₁…r₄ / |q| is ready by now.
+  const double hE = -s * (k0h * p2b) + c * (k0h * p0c);
+  const Quat qr = mul(q, r), qn{qr.w * inv_norm, qr.x * inv_norm, qr.y * inv_norm, qr.z * inv_norm};
+  sincos_small(hE, sh, ch);
+  return mul_axis<0>(qn, ch, sh);
+}
+
+/// NO_SQUISH / DLM symmetric splitting 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2) of the
+/// free rotation: q ← normalise(q ⊗ r) with world L (l) fixed. `kSmall` = the
+/// caller guarantees every sub-flow angle |θ| = |τ Πᵢ/Iᵢ| ≤ kSmallAngle;
+/// otherwise |θ| ≤ |h| |Π| max(1/Iᵢ) picks the path (every sub-flow keeps |Π|;
+/// a predicted branch, so its test is off the chain).
+template <bool kSmall>
+[[gnu::always_inline]] inline Quat splitting_rotation(const Quat& q, const double l[3], const double inv[3], double h) {
+  if constexpr (kSmall) {
+    return splitting_rotation_small(q, l, inv, h);
+  } else {
+    // Eigen's q̄ L is q̄ L q + (1 - |q|²) L, so |Π| ≤ (|q|² + |1 - |q|²|) |L|.
+    const double nq = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z, g = nq + std::abs(1 - nq);
+    const double a = h * (inv[0] > inv[1] ? (inv[0] > inv[2] ? inv[0] : inv[2]) : (inv[1] > inv[2] ? inv[1] : inv[2]));
+    const double b = a * a * g * g * (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    if (b <= (0.99 * kSmallAngle) * (0.99 * kSmallAngle)) [[likely]] return splitting_rotation_small(q, l, inv, h);
+    return splitting_rotation_general(q, l, inv, h);
+  }
 }
 
 }  // namespace tumble::kernel
