@@ -165,16 +165,17 @@ double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodySt
 }
 
 double step_cost_ns(Method method, bool forced) {
-  // ns/step, AMD EPYC 2.6 GHz, g++ 12 -O2: `tumble_microbench --benchmark_filter='BM_Step/'`.
+  // ns/step, AMD EPYC 2.6 GHz, g++ 12 -O2, medians of 3: `tumble_microbench
+  // --benchmark_filter='BM_Step/' --benchmark_repetitions=3`.
   switch (method) {
-    case Method::euler: return forced ? 76 : 41;
-    case Method::semi_implicit_euler: return forced ? 124 : 78;
-    case Method::rk4: return forced ? 266 : 117;
-    case Method::rk45: return forced ? 560 : 307;
-    case Method::implicit_midpoint: return forced ? 424 : 269;
-    case Method::splitting: return forced ? 262 : 105;
-    case Method::splitting4: return forced ? 781 : 308;
-    case Method::exact: return forced ? 8829 : 8687;
+    case Method::euler: return forced ? 64 : 34;
+    case Method::semi_implicit_euler: return forced ? 125 : 75;
+    case Method::rk4: return forced ? 225 : 69;
+    case Method::rk45: return forced ? 520 : 266;
+    case Method::implicit_midpoint: return forced ? 420 : 263;
+    case Method::splitting: return forced ? 236 : 76;
+    case Method::splitting4: return forced ? 711 : 232;
+    case Method::exact: return forced ? 8871 : 8621;
   }
   return 1000;
 }
