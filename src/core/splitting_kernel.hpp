@@ -14,17 +14,22 @@ inline constexpr double kPiOver4 = 0.78539816339744830962;
 /// round-off against the reference arithmetic (within 2e-15).
 inline constexpr double kSmallAngle = 0.125;
 
+/// FreeBSD msun k_sin.c / k_cos.c minimax coefficients for |x| ≤ π/4.
+namespace msun {
+inline constexpr double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
+                        S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
+                        S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
+inline constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
+                        C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
+                        C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+}  // namespace msun
+
 /// sin and cos for |x| ≤ π/4 (FreeBSD msun k_sin.c / k_cos.c coefficients,
 /// error < 1 ulp): no range reduction, no branches, no libm call. The
 /// polynomials in z = x² go by Estrin's scheme (x³z²ⁿ powers formed alongside
 /// the coefficient pairs): depth 7 (sin) and 8 (cos) instead of msun's 10.
 [[gnu::always_inline]] inline void sincos_small(double x, double& s, double& c) {
-  constexpr double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
-                   S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
-                   S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
-  constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
-                   C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
-                   C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+  using namespace msun;
   const double z = x * x, w = z * z, w2 = w * w, xz = x * z;
   // sin = x + x³(S1 + S2 z) + x³z²(S3 + S4 z) + x³z⁴(S5 + S6 z).
   s = x + ((xz * (S1 + S2 * z) + (xz * w) * (S3 + S4 * z)) + (xz * w2) * (S5 + S6 * z));
@@ -37,12 +42,7 @@ inline constexpr double kSmallAngle = 0.125;
 /// sin and cos for |x| ≤ π/4 (FreeBSD msun k_sin.c / k_cos.c kernels, error
 /// < 1 ulp) in msun's own evaluation order: the general path keeps its bits.
 [[gnu::always_inline]] inline void sincos_msun(double x, double& s, double& c) {
-  constexpr double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
-                   S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,
-                   S5 = -2.50507602534068634195e-08, S6 = 1.58969099521155010221e-10;
-  constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-03,
-                   C3 = 2.48015872894767294178e-05, C4 = -2.75573143513906633035e-07,
-                   C5 = 2.08757232129817482790e-09, C6 = -1.13596475577881948265e-11;
+  using namespace msun;
   const double z = x * x, w = z * z;
   const double rs = S2 + z * (S3 + z * S4) + z * w * (S5 + z * S6);
   s = x + z * x * (S1 + z * rs);
