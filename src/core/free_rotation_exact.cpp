@@ -5,8 +5,8 @@
 
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
 
+#include "core/jacobi_elliptic.hpp"
 #include "core/quaternion.hpp"
 #include "core/rotation_steps.hpp"
 
@@ -18,8 +18,8 @@ constexpr double kSymmetricTol = 1e-13;  // relative moment difference treated a
 
 // k'² = 1 - k² for the modulus k as stored, formed as (1 - k)(1 + k) so it keeps
 // full relative precision as k → 1 (near the separatrix), where 1 - k² sin²φ
-// would cancel. Boost's jacobi_elliptic forms k' the same way, so K, F, G and
-// sn/cn/dn all refer to one modulus.
+// would cancel. sn/cn/dn get k' = √(this) too, so K, F, G and sn/cn/dn all
+// refer to one modulus.
 double complementary(double k) { return (1 - k) * (1 + k); }
 
 // F(φ, k) = s R_F(c², c² + k'² s², 1) for s = sin φ, c = cos φ ≥ 0 (DLMF 19.25.5),
@@ -93,6 +93,7 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   k_ = std::sqrt(k2);
   periodic_ = k_ < 1.0;  // k2 just below 1 can round to k = 1, where K is infinite
   const double kc2 = complementary(k_);
+  kc_ = std::sqrt(kc2);
   K_ = periodic_ ? boost::math::ellint_rf(0.0, kc2, 1.0) : std::numeric_limits<double>::infinity();
   mu_ = (J2_ - J1_) / (J3_ - J2_);
   nu_ = mu_ * J3_ / J1_;
@@ -128,7 +129,10 @@ FreeRotationExact::Phase FreeRotationExact::phase(double tau) const {
   }
   const double m4 = std::round(tau / (4 * K_));
   const double r = tau - 4 * K_ * m4;  // in [-2K, 2K]
-  ph.sn = boost::math::jacobi_elliptic(k_, r, &ph.cn, &ph.dn);
+  const JacobiSnCnDn j = jacobi_sn_cn_dn(r, k_, kc_);
+  ph.sn = j.sn;
+  ph.cn = j.cn;
+  ph.dn = j.dn;
   // Shift r into [-K, K] by ±2K, where sn and cn change sign.
   double m2 = 2 * m4, sn2 = ph.sn, cn2 = ph.cn;
   if (r > K_ || r < -K_) {
