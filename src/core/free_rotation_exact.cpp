@@ -107,13 +107,21 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   const double sigma = J3_ > J1_ ? 1.0 : -1.0;
   s3_ = p[2] < 0 ? -1.0 : 1.0;
   s2_ = sigma * s3_;
-  // Phase: am(τ0) = atan2(sn, cn) with the amplitude divided out.
   // Phase: (sn τ0, cn τ0) with the amplitudes divided out; τ0 = F(am τ0).
   const double sn_a = p[1] / (J2_ * s2_ * rho_), cn_a = p[0] / J1_, r0 = std::hypot(sn_a, cn_a);
   const double sn0 = r0 > 0 ? sn_a / r0 : 0.0, cn0 = r0 > 0 ? cn_a / r0 : 1.0;
   tau0_ = periodic_ ? ellint_f_any(kc2, sn0, cn0, K_) : std::atanh(sn0);
   G_K_ = periodic_ ? g_reduced(kc2, nu_, 1.0, 0.0) : 0;
-  const Phase ph0 = phase(tau0_);
+  // sn, cn at τ0 are (sn0, cn0) by construction, so no Jacobi evaluation; G(τ0)
+  // as phase() reduces it: τ0 = ±(2K - F) when cn0 < 0, and G(2K) = 2 G(K).
+  Phase ph0;
+  if (periodic_) {
+    ph0 = {sn0, cn0, std::sqrt(cn0 * cn0 + kc2 * sn0 * sn0),
+           cn0 >= 0 ? g_reduced(kc2, nu_, sn0, cn0)
+                    : std::copysign(2 * G_K_, sn0) + g_reduced(kc2, nu_, -sn0, -cn0)};
+  } else {
+    ph0 = phase(tau0_);
+  }
   G_tau0_ = ph0.g;
   // world ← L-frame at φ = 0: R0 = R_frame · B(τ0)·P.
   q_frame0_ = q0_ * body_from_elliptic(ph0).conjugate();
