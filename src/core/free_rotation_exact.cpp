@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
@@ -47,6 +48,19 @@ double g_reduced(double kc2, double nu, double s, double c) {
   if (s == 0) return 0;
   const double s2 = s * s;
   return s * s2 / 3.0 * boost::math::ellint_rj(c * c, c * c + kc2 * s2, 1.0, 1 + nu * s2, DoubleEval());
+}
+
+// (cos α/2, sin α/2) for α = atan2(y, x) ∈ (-π, π], from the half-angle formulas
+// cos²(α/2) = (1 + cos α)/2, sin α = 2 sin(α/2) cos(α/2), taking the root that
+// does not cancel: no atan2, sin, cos. y = x = 0 does not occur here (l > 0, sn² + cn² = 1).
+std::pair<double, double> half_angle(double y, double x) {
+  const double r = std::sqrt(x * x + y * y);
+  if (x >= 0) {
+    const double c = std::sqrt(0.5 + 0.5 * (x / r));
+    return {c, y / (2 * r * c)};
+  }
+  const double sh = std::sqrt(0.5 - 0.5 * (x / r));
+  return {std::abs(y) / (2 * r * sh), std::copysign(sh, y)};
 }
 
 }  // namespace
@@ -167,10 +181,8 @@ Eigen::Vector3d FreeRotationExact::primed_momentum(const Phase& ph) const {
 // it stays defined for a pure spin about axis 3'.
 Eigen::Quaterniond FreeRotationExact::body_from_elliptic(const Phase& ph) const {
   const Eigen::Vector3d p = primed_momentum(ph);
-  const double theta = std::atan2(std::hypot(p[0], p[1]), p[2]);
-  const double psi = std::atan2(J1_ * ph.cn, J2_ * s2_ * rho_ * ph.sn);
-  const double ct = std::cos(0.5 * theta), st = std::sin(0.5 * theta);
-  const double cp = std::cos(0.5 * psi), sp = std::sin(0.5 * psi);
+  const auto [ct, st] = half_angle(std::hypot(p[0], p[1]), p[2]);
+  const auto [cp, sp] = half_angle(J1_ * ph.cn, J2_ * s2_ * rho_ * ph.sn);
   const Eigen::Quaterniond qb(ct * cp, st * cp, -st * sp, ct * sp);  // Rx(θ) ⊗ Rz(ψ)
   return qb * q_perm_;
 }
