@@ -8,6 +8,7 @@
 
 #include "bench/problems.hpp"
 #include "bench/soa_splitting.hpp"
+#include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/mass_properties.hpp"
 
@@ -31,6 +32,19 @@ void BM_Step(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations());
 }
 BENCHMARK(BM_Step)->ArgsProduct({benchmark::CreateDenseRange(0, 7, 1), {0, 1}});
+
+// The closed form alone: construct FreeRotationExact for the T-handle and
+// evaluate orientation(t), t varied over the problem's 10 s so nothing is hoisted.
+void BM_ExactConstructEval(benchmark::State& st) {
+  const bench::Problem p = bench::t_handle_problem();
+  double t = 0;
+  for (auto _ : st) {
+    const FreeRotationExact ex(p.model.inertia, p.s0.q, p.s0.L);
+    benchmark::DoNotOptimize(ex.orientation(t));
+    t = t < 10 ? t + 1e-3 : 0;
+  }
+}
+BENCHMARK(BM_ExactConstructEval);
 
 // Scalar core splitting_step over many bodies on one thread: the SoA baseline.
 void BM_ScalarSplittingManyBodies(benchmark::State& st) {

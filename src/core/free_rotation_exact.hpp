@@ -62,6 +62,7 @@ class FreeRotationExact {
   Eigen::Quaterniond q_frame0_;    // q0 ⊗ (qB(τ0) ⊗ qP)⁻¹: world ← (L-aligned frame at φ = 0)
   double J1_ = 0, J2_ = 0, J3_ = 0, A1_ = 0, A2_ = 0, A3_ = 0, s2_ = 1, s3_ = 1;
   double rho_ = 1;                 // A2/A1, amplitude free
+  double kc_ = 1;                  // k' = √((1 - k)(1 + k))
   double k_ = 0, K_ = 0, wp_ = 0, tau0_ = 0, nu_ = 0, mu_ = 0, G_K_ = 0, G_tau0_ = 0;
   bool periodic_ = true;
 };
