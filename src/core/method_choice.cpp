@@ -175,7 +175,7 @@ double step_cost_ns(Method method, bool forced) {
     case Method::implicit_midpoint: return forced ? 420 : 263;
     case Method::splitting: return forced ? 236 : 76;
     case Method::splitting4: return forced ? 711 : 232;
-    case Method::exact: return forced ? 8871 : 8621;
+    case Method::exact: return forced ? 1087 : 929;
   }
   return 1000;
 }
