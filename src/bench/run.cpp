@@ -150,7 +150,7 @@ int run(const BenchOptions& opt, std::ostream& log) {
     md << "| " << f.problem << " | " << f.method << " | " << fmt(f.order_angle) << " | " << fmt(f.order_energy) << " |\n";
   md << "\n## Stability map (T-handle moments, spin Ω about the intermediate axis for ≈ 10 s ending between flips, "
      << "plus major/minor-axis spins with a 1e-3 tilt)\n\nok: error ≤ 1 % (max of orientation rad and relative energy); "
-     << "inaccurate: > 1 %; wrong: flip count differs from the closed form or a stable axis tilts > 0.1 rad; "
+     << "inaccurate: > 1 %; wrong: flip count differs from the closed form's (both seen at the method's step times, so a step longer than half a flip interval is not blamed for aliasing) or a stable axis tilts > 0.1 rad; "
      << "diverged: non-finite or energy × 10. rk45 here is the fixed-step Dormand–Prince step.\n\n"
      << stability_table(stab) << "\n";
   md << "## Long-run drift (T-handle, dt = 1 ms)\n\nWorld L is a state variable with L' = 0 when torque-free, so every method keeps "

@@ -49,7 +49,8 @@ const char* cell_name(Cell c);
 struct StabilityRow {
   std::string method;
   double dt = 0, spin = 0, duration = 0, error = 0;
-  int flips = 0, flips_exact = 0;
+  int flips = 0;        ///< Π₂ sign changes seen at the method's step times
+  int flips_exact = 0;  ///< the closed form's, seen at the same step times
   bool tipped = false;
   Cell cell = Cell::ok;
 };
