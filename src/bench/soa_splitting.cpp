@@ -28,10 +28,10 @@ BodyState BodiesSoA::state(size_t i) const {
 
 namespace {
 
-// One step of bodies [b0, b1) on raw arrays. `kSmall`: every sub-flow angle is
-// known to be ≤ kSmallAngle, so the kernel needs no libm call and the loop vectorises.
+// One step of bodies [b0, b1) on raw arrays. `kTier` ≥ 1: every sub-flow angle
+// is known to be small, so the kernel needs no libm call and the loop vectorises.
 // __restrict: the arrays never overlap, which spares the vectoriser alias checks.
-template <bool kSmall>
+template <int kTier>  // 2: every angle ≤ kTinyAngle, 1: ≤ kSmallAngle, 0: any
 void step_block(size_t b0, size_t b1, double h, double* __restrict qw, double* __restrict qx,
                 double* __restrict qy, double* __restrict qz, double* __restrict cx, double* __restrict cy,
                 double* __restrict cz, const double* __restrict Lx, const double* __restrict Ly,
@@ -42,7 +42,11 @@ void step_block(size_t b0, size_t b1, double h, double* __restrict qw, double* _
     // c += hP/M, as core's strang step writes it.
     cx[b] += h * Px[b] / mass[b], cy[b] += h * Py[b] / mass[b], cz[b] += h * Pz[b] / mass[b];
     const double l[3] = {Lx[b], Ly[b], Lz[b]}, inv[3] = {ix[b], iy[b], iz[b]};
-    const kernel::Quat q = kernel::splitting_rotation<kSmall>({qw[b], qx[b], qy[b], qz[b]}, l, inv, h);
+    const kernel::Quat q0{qw[b], qx[b], qy[b], qz[b]};
+    kernel::Quat q;
+    if constexpr (kTier == 2) q = kernel::splitting_rotation_small<true>(q0, l, inv, h);
+    else if constexpr (kTier == 1) q = kernel::splitting_rotation_small<false>(q0, l, inv, h);
+    else q = kernel::splitting_rotation<false>(q0, l, inv, h);
     qw[b] = q.w, qx[b] = q.x, qy[b] = q.y, qz[b] = q.z;
   }
 }
@@ -53,15 +57,18 @@ void BodiesSoA::advance_range(size_t begin, size_t end, double h, long steps) {
   constexpr size_t kTile = 256;  // 17 doubles × 256 = 35 KB: stays in L1/L2 across steps
   for (size_t t0 = begin; t0 < end; t0 += kTile) {
     const size_t t1 = std::min(end, t0 + kTile);
-    // Largest sub-flow angle is |h Π₃/I₃| ≤ |h| |L| max(1/Iᵢ) (|Π| = |L|, L fixed);
+    // Every sub-flow angle is ≤ |L| sub_flow_angle_factor (|Π| = |L|, L fixed);
     // with a margin for rounding, the whole tile may skip the libm branch.
-    bool small = true;
+    double largest = 0;
     for (size_t b = t0; b < t1; ++b) {
       const double l = std::sqrt(Lx_[b] * Lx_[b] + Ly_[b] * Ly_[b] + Lz_[b] * Lz_[b]);
-      const double bound = std::abs(h) * l * std::max({ix_[b], iy_[b], iz_[b]});
-      small = small && bound <= 0.99 * kernel::kSmallAngle;
+      const double inv[3] = {ix_[b], iy_[b], iz_[b]};
+      largest = std::max(largest, l * kernel::sub_flow_angle_factor(inv, h));
     }
-    const auto step = small ? step_block<true> : step_block<false>;
+    // The same tiers as the scalar kernel's per-body choice, so the bits agree.
+    const auto step = largest <= 0.99 * kernel::kTinyAngle    ? step_block<2>
+                      : largest <= 0.99 * kernel::kSmallAngle ? step_block<1>
+                                                              : step_block<0>;
     for (long n = 0; n < steps; ++n)
       step(t0, t1, h, qw_.data(), qx_.data(), qy_.data(), qz_.data(), cx_.data(), cy_.data(), cz_.data(),
            Lx_.data(), Ly_.data(), Lz_.data(), Px_.data(), Py_.data(), Pz_.data(), mass_.data(), ix_.data(),

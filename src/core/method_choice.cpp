@@ -173,8 +173,8 @@ double step_cost_ns(Method method, bool forced) {
     case Method::rk4: return forced ? 225 : 69;
     case Method::rk45: return forced ? 520 : 266;
     case Method::implicit_midpoint: return forced ? 420 : 263;
-    case Method::splitting: return forced ? 236 : 76;
-    case Method::splitting4: return forced ? 711 : 232;
+    case Method::splitting: return forced ? 221 : 63;
+    case Method::splitting4: return forced ? 651 : 198;
     case Method::exact: return forced ? 1087 : 929;
   }
   return 1000;

@@ -39,6 +39,22 @@ inline constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.388888888887410
   c = a + (((1.0 - a) - hz) + tail);  // recovers the rounding of 1 - z/2 (k_cos.c)
 }
 
+/// Largest |x| for sincos_tiny, and the largest sub-flow angle of its path
+/// (h|ω| ≲ 1/32: dt ≤ 3 ms at 10 rad/s).
+inline constexpr double kTinyAngle = 1.0 / 64;
+
+/// sin and cos for |x| ≤ 1/64 by their Taylor series, cut where the next term is
+/// below 1e-19 relative (x⁹/9!, x⁸/8!), in depth 6 instead of 7–8: for the
+/// latency of one body's chain of sub-flows. cos = 1 + (z²/24 - z/2 - z³/720)
+/// rounds once at the end, so it is as accurate as msun's 1 - z/2 correction.
+[[gnu::always_inline]] inline void sincos_tiny(double x, double& s, double& c) {
+  constexpr double S1 = -1.0 / 6, S2 = 1.0 / 120, S3 = -1.0 / 5040;
+  constexpr double C1 = 1.0 / 24, C2 = -1.0 / 720;
+  const double z = x * x, w = z * z, xz = x * z;
+  s = x + xz * ((S1 + z * S2) + w * S3);
+  c = 1.0 + ((w * C1 - 0.5 * z) + (w * z) * C2);
+}
+
 /// sin and cos for |x| ≤ π/4 (FreeBSD msun k_sin.c / k_cos.c kernels, error
 /// < 1 ulp) in msun's own evaluation order: the general path keeps its bits.
 [[gnu::always_inline]] inline void sincos_msun(double x, double& s, double& c) {
@@ -127,7 +143,12 @@ template <int I, bool kFirst>
 /// 1/|q| and q ⊗ r₁…r₄ formed while the angles run. Each is an identity, so
 /// results move only by round-off (the output norm is 1 within a few ulps, and
 /// the next step divides by it again, so it does not drift).
+template <bool kTiny = false>
 [[gnu::always_inline]] inline Quat splitting_rotation_small(const Quat& q, const double l[3], const double inv[3], double h) {
+  const auto sincos_small = [](double x, double& s, double& c) {
+    if constexpr (kTiny) kernel::sincos_tiny(x, s, c);
+    else kernel::sincos_small(x, s, c);
+  };
   // Sub-flow angles are θ = kᵢ Πᵢ: per-step constants, off the chain.
   const double k0 = 0.5 * h * inv[0], k1 = 0.5 * h * inv[1], k2 = h * inv[2], k0h = 0.5 * k0;
   // Π = q̄ L (Eigen's formula: L + w·2(v×L) + v×2(v×L), v = -q.vec; the exact
@@ -171,8 +192,14 @@ template <int I, bool kFirst>
 /// NO_SQUISH / DLM symmetric splitting 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2) of the
 /// free rotation: q ← normalise(q ⊗ r) with world L (l) fixed. `kSmall` = the
 /// caller guarantees every sub-flow angle |θ| = |τ Πᵢ/Iᵢ| ≤ kSmallAngle;
-/// otherwise |θ| ≤ |h| |Π| max(1/Iᵢ) picks the path (every sub-flow keeps |Π|;
-/// a predicted branch, so its test is off the chain).
+/// otherwise the bound sub_flow_angle_factor·|Π| picks the path (every sub-flow
+/// keeps |Π|; a predicted branch, so its test is off the chain).
+/// f with every sub-flow angle |θ| ≤ f |Π| (|Π| = |L| for a unit q).
+[[gnu::always_inline]] inline double sub_flow_angle_factor(const double inv[3], double h) {
+  const double a0 = 0.5 * inv[0], a1 = 0.5 * inv[1], a2 = inv[2];
+  return std::abs(h) * (a0 > a1 ? (a0 > a2 ? a0 : a2) : (a1 > a2 ? a1 : a2));
+}
+
 template <bool kSmall>
 [[gnu::always_inline]] inline Quat splitting_rotation(const Quat& q, const double l[3], const double inv[3], double h) {
   if constexpr (kSmall) {
@@ -180,9 +207,11 @@ template <bool kSmall>
   } else {
     // Eigen's q̄ L is q̄ L q + (1 - |q|²) L, so |Π| ≤ (|q|² + |1 - |q|²|) |L|.
     const double nq = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z, g = nq + std::abs(1 - nq);
-    const double a = h * (inv[0] > inv[1] ? (inv[0] > inv[2] ? inv[0] : inv[2]) : (inv[1] > inv[2] ? inv[1] : inv[2]));
+    // Sub-flows 1 and 2 run for h/2, sub-flow 3 for h: |θ| ≤ |Π| max(h/(2I₁), h/(2I₂), h/I₃).
+    const double a = sub_flow_angle_factor(inv, h);
     const double b = a * a * g * g * (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    if (b <= (0.99 * kSmallAngle) * (0.99 * kSmallAngle)) [[likely]] return splitting_rotation_small(q, l, inv, h);
+    if (b <= (0.99 * kTinyAngle) * (0.99 * kTinyAngle)) [[likely]] return splitting_rotation_small<true>(q, l, inv, h);
+    if (b <= (0.99 * kSmallAngle) * (0.99 * kSmallAngle)) return splitting_rotation_small(q, l, inv, h);
     return splitting_rotation_general(q, l, inv, h);
   }
 }

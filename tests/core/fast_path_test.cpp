@@ -110,6 +110,17 @@ TEST(FastPath, SincosKernelWithinOneUlpOfLibm) {
     worst_s = std::max(worst_s, ulps(s, std::sin(x)));
     worst_c = std::max(worst_c, ulps(c, std::cos(x)));
   }
+  // The tiny-angle series on its own range |x| ≤ 1/64.
+  std::uniform_real_distribution<double> t(-kernel::kTinyAngle, kernel::kTinyAngle);
+  std::vector<double> tiny = {0.0, -0.0, 1e-300, 1e-9, kernel::kTinyAngle, -kernel::kTinyAngle};
+  for (int i = 0; i < 200000; ++i) tiny.push_back(t(rng));
+  for (int e = -40; e < -6; ++e) tiny.push_back(std::ldexp(0.9, e));
+  for (double x : tiny) {
+    double s, c;
+    kernel::sincos_tiny(x, s, c);
+    worst_s = std::max(worst_s, ulps(s, std::sin(x)));
+    worst_c = std::max(worst_c, ulps(c, std::cos(x)));
+  }
   EXPECT_LE(worst_s, 1.0);
   EXPECT_LE(worst_c, 1.0);
   RecordProperty("worst_ulps_sin", std::to_string(worst_s));
