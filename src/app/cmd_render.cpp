@@ -14,6 +14,7 @@
 #include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "app/progress.hpp"
+#include "app/render_output.hpp"
 #include "app/render_job.hpp"
 #include "app/video.hpp"
 #include "render/frame_encoder.hpp"
@@ -43,37 +44,6 @@ Quality parse_quality(const std::string& q) {
   if (q == "medium") return {2, 23};
   if (q == "high") return {4, 18};
   throw InputError("--quality: expected low, medium or high, found '" + q + "'");
-}
-
-struct Manifest {
-  std::string scene_path, scene_hash, settings_hash, method, step, gl_version, gl_renderer, backend, video;
-  double dt = 0, fps = 0;  // dt: the scene's; `step` says what each run really used
-  int width = 0, height = 0, msaa = 0;
-  long frame_count = 0, first = 0, last = -1, written = 0;
-  bool complete = false;
-
-  std::string json() const {
-    std::ostringstream o;
-    o << "{\n  \"tool\": \"tumble\",\n  \"version\": \"" << TUMBLE_VERSION << "\",\n"
-      << "  \"scene\": \"" << json_escape(scene_path) << "\",\n  \"scene_hash\": \"" << scene_hash << "\",\n"
-      << "  \"settings_hash\": \"" << settings_hash << "\",\n"
-      << "  \"method\": \"" << json_escape(method) << "\",\n  \"step\": \"" << json_escape(step) << "\",\n"
-      << "  \"dt\": " << format_double(dt) << ",\n"
-      << "  \"fps\": " << format_double(fps) << ",\n  \"width\": " << width << ",\n  \"height\": " << height
-      << ",\n  \"msaa\": " << msaa << ",\n  \"frame_count\": " << frame_count << ",\n  \"frames\": [" << first
-      << ", " << last << "],\n  \"frames_written\": " << written << ",\n  \"gl_backend\": \"" << backend
-      << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"gl_renderer\": \""
-      << json_escape(gl_renderer) << "\",\n  \"video\": \"" << json_escape(video) << "\",\n  \"complete\": "
-      << (complete ? "true" : "false") << "\n}\n";
-    return o.str();
-  }
-};
-
-
-fs::path frame_path(const fs::path& dir, long k) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%06ld.png", k);
-  return dir / name;
 }
 
 void apply_overrides(const RenderOptions& o, scene::Scene& s) {
@@ -135,125 +105,6 @@ class StopSignals {
   struct sigaction old_int_ {}, old_term_ {};
 };
 
-// ---- The output folder ---------------------------------------------------------
-
-/// A field of a manifest we wrote ("key": value on its own line); strings unquoted.
-std::optional<std::string> manifest_field(const std::string& json, const std::string& key) {
-  const std::string tag = "\"" + key + "\": ";
-  const auto at = json.find(tag);
-  if (at == std::string::npos) return std::nullopt;
-  const auto start = at + tag.size();
-  const auto end = json.find_first_of(",\n", start);
-  std::string v = json.substr(start, end == std::string::npos ? std::string::npos : end - start);
-  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
-  return v;
-}
-
-bool is_frame_file(const std::string& name) {
-  return name.size() == 16 && name.rfind("frame_", 0) == 0 && name.compare(12, 4, ".png") == 0 &&
-         std::all_of(name.begin() + 6, name.begin() + 12, [](char c) { return c >= '0' && c <= '9'; });
-}
-
-/// Leftovers of a process killed mid-write: `frame_*.png.tmp.<pid>`,
-/// `manifest.json.tmp-<pid>`, `<video>.tmp.mp4`. Never a finished file.
-bool is_stale_temp(const std::string& name) {
-  return (name.rfind("frame_", 0) == 0 || name.rfind("manifest.json", 0) == 0 ||
-          name.find(".tmp.mp4") != std::string::npos || name.find(".tmp.gif") != std::string::npos) &&
-         (name.find(".tmp.") != std::string::npos || name.find(".tmp-") != std::string::npos);
-}
-
-std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::string&)) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (pred(it->path().filename().string())) out.push_back(it->path());
-  if (ec) throw IoError("cannot list output folder '" + dir.string() + "': " + ec.message());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-void remove_file(const fs::path& p) {
-  std::error_code ec;
-  fs::remove(p, ec);
-  if (ec) throw IoError("cannot remove '" + p.string() + "': " + ec.message());
-}
-
-/// Hash of everything that changes a frame's pixels (not the frame range:
-/// --frames A:B writes the same bytes as a full run).
-std::string settings_hash(const scene::Scene& s, const std::string& method) {
-  const scene::OutputConfig& out = s.render.output;
-  std::ostringstream k;
-  k << s.content_hash << '|' << method << '|' << format_double(s.simulation.dt) << '|' << format_double(out.fps)
-    << '|' << out.width << 'x' << out.height << '|' << out.msaa;
-  return scene::fnv1a_hex(k.str());
-}
-
-/// What is already in the output folder, and what we may do with it.
-struct Existing {
-  bool resumable = false;       ///< a manifest of this scene with these settings
-  long first = 0, last = -1;    ///< its frame range
-};
-
-/// Refuses (InputError) to write over another render unless --force; with
-/// --force, removes that render's frames, video and manifest first.
-Existing inspect_output(const fs::path& dir, const Manifest& want, const RenderOptions& o) {
-  Existing ex;
-  const fs::path mpath = dir / "manifest.json";
-  std::error_code ec;
-  const bool has_manifest = fs::exists(mpath, ec);
-  const std::vector<fs::path> frames = list_dir(dir, is_frame_file);
-  std::string problem;
-  std::optional<std::string> old_video;
-  if (has_manifest) {
-    std::ifstream in(mpath, std::ios::binary);
-    std::stringstream buf;
-    buf << in.rdbuf();
-    const std::string m = buf.str();
-    const auto hash = manifest_field(m, "scene_hash"), settings = manifest_field(m, "settings_hash");
-    old_video = manifest_field(m, "video");
-    if (!in || manifest_field(m, "tool") != std::optional<std::string>("tumble") || !hash) {
-      problem = "holds a manifest.json that tumble did not write";
-    } else if (*hash != want.scene_hash) {
-      problem = "holds a render of another scene (" + manifest_field(m, "scene").value_or("?") + ", hash " + *hash +
-                "; this scene's hash is " + want.scene_hash + ")";
-    } else if (settings != want.settings_hash) {
-      problem = "holds a render of this scene with other settings (size, fps, msaa, method or dt)";
-    } else {
-      ex.resumable = true;
-      if (auto r = manifest_field(m, "frames")) {  // "[A, B]"
-        long a = 0, b = -1;
-        if (std::sscanf(r->c_str(), "[%ld", &a) == 1) {
-          const auto comma = m.find(", ", m.find("\"frames\": ["));
-          if (comma != std::string::npos && std::sscanf(m.c_str() + comma + 2, "%ld", &b) == 1) ex.first = a, ex.last = b;
-        }
-      }
-    }
-  } else if (!frames.empty()) {
-    problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";
-  }
-  if (problem.empty()) return ex;
-  if (!o.force)
-    throw InputError("tumble: output folder " + dir.string() + " " + problem +
-                     ".\ntumble: choose another folder with -o, or add --force to replace that render");
-  // --force: the old render goes, so none of its frames can pass for ours later
-  // (a resumed run trusts every frame file in the folder).
-  std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
-            << " frames)\n";
-  for (const fs::path& f : frames) remove_file(f);
-  if (old_video && !old_video->empty() && fs::path(*old_video).filename() == *old_video &&
-      *old_video != "manifest.json")
-    remove_file(dir / *old_video);
-  if (has_manifest) remove_file(mpath);
-  return {};
-}
-
-std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) {
-  // The loader restricts names to [A-Za-z0-9_.-]; still, never leave the folder.
-  std::string base = s.name;
-  if (base.empty() || fs::path(base).filename() != base || base == "." || base == "..") base = "video";
-  return base + (f == scene::VideoFormat::mp4 ? ".mp4" : ".gif");
-}
-
 std::string quote_arg(const std::string& a) {
   if (a.find_first_of(" '\"\\$`") == std::string::npos) return a;
   std::string q = "'";
@@ -292,7 +143,7 @@ int run_render(const RenderOptions& o) {
     for (const auto& l : labels) key += l + ",";
     man.settings_hash = settings_hash(s, key);
   }
-  const Existing existing = inspect_output(dir, man, o);
+  const Existing existing = inspect_output(dir, man, o.force);
   std::pair<long, long> range{0, count - 1};
   if (!o.frames.empty()) range = parse_frame_range(o.frames, count);
   else if (o.resume && existing.resumable && existing.first >= 0 && existing.last < count && existing.first <= existing.last)
