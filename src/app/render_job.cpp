@@ -155,9 +155,14 @@ viz::DrawList FrameBuilder::build(long k) const {
         v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
       }
       if (scene_.render.draw.overlay) {
-        // Largest relative energy error over the bodies: the failure users look for.
+        // Largest relative energy error over the bodies: the failure users look
+        // for. Only where energy is conserved (gravity is in it, as potential):
+        // a thruster, torque or damping does work, and its change is no error.
         double rel = 0;
+        bool conserved = true;
         for (size_t i = 0; i < snaps.size(); ++i) {
+          const ForceSet& f = snaps[i].model->forces;
+          conserved = conserved && !f.has_torque() && f.linear_damping == 0;
           const double e0 = run.energy0[i];
           const double e = total_energy(*snaps[i].model, snaps[i].state);
           rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
@@ -166,8 +171,9 @@ viz::DrawList FrameBuilder::build(long k) const {
         // and the font in proportion to the viewport.
         // Below 1e-13 the digits are round-off: they would change with the
         // compiler and break golden images for no physical reason.
-        char energy[32];
-        if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
+        char energy[40];
+        if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
+        else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
         else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
         char line[160];
         if (runs_.size() > 1)

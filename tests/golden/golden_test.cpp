@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "app/frame_renderer.hpp"
+#include "app/render_job.hpp"
 #include "cli_fixture.hpp"
 #include "golden/compare.hpp"
 #include "golden/trajectory.hpp"
@@ -59,6 +60,26 @@ INSTANTIATE_TEST_SUITE_P(Golden, Scenes, testing::ValuesIn(kScenes),
                          [](const testing::TestParamInfo<GoldenScene>& i) { return std::string(i.param.name); });
 
 // ---- determinism: identical bytes ----
+
+// The overlay's |dE/E| is an error only where energy is conserved (gravity
+// counts, as potential energy); a thruster's work is labelled, not reported.
+TEST(Overlay, EnergyErrorOnlyWhereEnergyIsConserved) {
+  auto overlay = [](const char* name) {
+    const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes" / (std::string(name) + ".toml"));
+    const std::vector<tumble::app::Run> runs = tumble::app::simulate_runs(s, 3, 30);
+    const tumble::viz::DrawList dl = tumble::app::FrameBuilder(s, runs, 30, 320, 240).build(2);
+    std::string all;
+    for (const auto& v : dl.views)
+      for (const auto& t : v.texts) all += t.text + "\n";
+    return all;
+  };
+  const std::string thruster = overlay("thruster"), thrown = overlay("thrown_box");
+  EXPECT_NE(thruster.find("(forces do work)"), std::string::npos) << thruster;
+  EXPECT_EQ(thruster.find("|dE/E|"), std::string::npos) << thruster;
+  EXPECT_NE(thruster.find("rk45   rtol = 1e-08"), std::string::npos) << thruster;  // auto's pick, its real step
+  EXPECT_NE(thrown.find("|dE/E|"), std::string::npos) << thrown;
+  EXPECT_NE(thrown.find("splitting   dt = 0.001 s"), std::string::npos) << thrown;
+}
 
 TEST(Determinism, SameFrameRenderedTwiceInOneProcess) {
   const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes/stable_spin.toml");
