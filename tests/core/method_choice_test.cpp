@@ -56,6 +56,22 @@ TEST(MethodChoice, TorqueFreeBodyGetsTheClosedForm) {
   EXPECT_NE(c.reason.find("torque-free"), std::string::npos) << c.reason;
 }
 
+// Under gravity alone the rotation is free and the kicks are exact, so `exact`
+// is right at any step: its runs agree to round-off, no order shows, and it
+// must still qualify (at the coarsest step) and win.
+TEST(MethodChoice, ExactWithKicksWinsUnderGravityAlone) {
+  RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 0.5, "thrown");
+  m.forces.has_gravity = true;
+  m.forces.gravity = {0, 0, -9.81};
+  BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {2, 9, 1});
+  s0.P = m.mass * Eigen::Vector3d(0.8, 0, 8.8);
+  const ChoiceRequest r{1.8, 1.0 / 30, 1e-9, false};
+  const MethodChoice c = choose_method(m, s0, r);
+  EXPECT_EQ(c.config.method, Method::exact) << c.reason;
+  const double err = end_state_error(m, run_like_a_scene(m, s0, c.config, r), reference_end(m, s0, r.duration));
+  EXPECT_LE(err, r.tolerance) << c.reason;
+}
+
 TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
   const RigidBodyModel m = thruster_model();
   const BodyState s0 = thruster_state(m);
