@@ -89,9 +89,7 @@ std::string to_text(const scene::Scene& s) {
       << "  box centre        " << row(i.box_center) << " m\n"
       << "  box half extents  " << row(i.half_extents) << " m (along the principal axes)\n";
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
-    o << "  method            " << method_name(plan.config.method);
-    if (plan.config.method == Method::rk45) o << ", rtol " << format_double(plan.config.rtol);
-    else if (!(plan.config.method == Method::exact && b.model.forces.empty())) o << ", dt " << format_double(plan.config.dt) << " s";
+    o << "  method            " << method_name(plan.config.method) << ", " << scene::step_label(plan.config, b.model);
     o << (plan.reason.empty() ? " (set by the scene)" : " (auto: " + plan.reason + ")") << "\n";
     for (const MethodEstimate& e : plan.candidates) {
       char line[200];

@@ -52,11 +52,8 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
       props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
       run.energy0.push_back(total_energy(b.model, b.initial));
       const std::string name(method_name(plan.config.method));
-      char step[64];
-      if (plan.config.method == Method::rk45) std::snprintf(step, sizeof step, "rtol = %g", plan.config.rtol);
-      else if (plan.config.method == Method::exact && b.model.forces.empty()) std::snprintf(step, sizeof step, "closed form");
-      else std::snprintf(step, sizeof step, "dt = %g s", plan.config.dt);
-      if (run.step_label.find(step) == std::string::npos) run.step_label += (run.step_label.empty() ? "" : "/") + std::string(step);
+      const std::string step = scene::step_label(plan.config, b.model);
+      if (run.step_label.find(step) == std::string::npos) run.step_label += (run.step_label.empty() ? "" : "/") + step;
       if (run.label.find(name) == std::string::npos) run.label += (run.label.empty() ? "" : "/") + name;
     }
     try {

@@ -161,6 +161,14 @@ MethodPlan plan_method(const SimulationConfig& sim, const Body& body) {
   return p;
 }
 
+std::string step_label(const StepConfig& c, const RigidBodyModel& m) {
+  char buf[64];
+  if (c.method == Method::rk45) std::snprintf(buf, sizeof buf, "rtol = %g", c.rtol);
+  else if (c.method == Method::exact && m.forces.empty()) std::snprintf(buf, sizeof buf, "closed form");
+  else std::snprintf(buf, sizeof buf, "dt = %g s", c.dt);
+  return buf;
+}
+
 Scene load_scene(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");

@@ -53,6 +53,9 @@ struct MethodPlan {
 /// step_config, except that "auto" with a tolerance measures the candidates on
 /// this body (choose_method) and picks the cheapest that meets it.
 MethodPlan plan_method(const SimulationConfig& sim, const Body& body);
+/// The step a config really takes, for people: "dt = 0.001 s", "rtol = 1e-08",
+/// or "closed form" (`exact` on a torque-free body ignores dt).
+std::string step_label(const StepConfig& c, const RigidBodyModel& m);
 
 enum class VideoFormat { mp4, gif, none };
 
