@@ -120,6 +120,20 @@ TEST_F(Cli, DivergenceExits3AndKeepsRows) {
   EXPECT_EQ(split(l[1])[0], "0");
 }
 
+// A forced body's blow-up (damping only removes energy) is caught by the energy
+// balance, not only non-finite numbers; the coarse step is warned about first.
+TEST_F(Cli, DampedBlowUpExits3WithTimeStepBodyAndMethod) {
+  const fs::path csv = dir_ / "damped.csv";
+  const Result r = run("simulate '" + (kSource / "tests/app/data/damped_blowup_euler.toml").string() + "' --csv '" +
+                       csv.string() + "'");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("warning: body 'reference': dt = 0.5 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("diverged at t=0.5 s, step 1, body 'reference', method euler"), std::string::npos) << r.err;
+  const auto l = lines(slurp(csv));
+  ASSERT_EQ(l.size(), 1u + 15u);  // frames k/30 for t < 0.5 s, as computed before the failure
+  EXPECT_EQ(split(l[1])[0], "0");
+}
+
 TEST_F(Cli, UnwritableCsvIsAnIoError) {
   const Result r = run("simulate " + scene("reference.toml") + " --csv '" + (dir_ / "no/such/dir/x.csv").string() + "'");
   EXPECT_EQ(r.code, 1);
