@@ -10,6 +10,7 @@ PACKAGES=(
   libtomlplusplus-dev libcli11-dev               # scenes, command line
   libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev  # headless GL (OSMesa / EGL), camera maths
   libstb-dev libdeflate-dev fonts-dejavu-core    # PNG in/out, text overlay
+  nlohmann-json3-dev                             # JSON (manifest, golden sidecars, info --json)
   libgtest-dev libgmock-dev libbenchmark-dev     # tests, microbenchmarks
   ffmpeg gnuplot-nox                             # videos, charts (run as programs)
   libbullet-dev libode-dev                       # optional peers for `tumble bench`

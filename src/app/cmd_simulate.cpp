@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
-#include "core/dynamics.hpp"
 #include "core/propagator.hpp"
+#include "io/atomic_file.hpp"
+#include "io/trajectory_csv.hpp"
 
 namespace tumble::app {
 
@@ -21,22 +21,10 @@ struct SimulateOptions {
   CLI::Option *method_opt = nullptr, *dt_opt = nullptr, *duration_opt = nullptr, *every_opt = nullptr;
 };
 
-constexpr const char* kHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy\n";
 constexpr double kMaxRows = 1e8;  // guards --every 1 with a tiny dt
 
 void append_row(std::string& out, double t, const RigidBodyModel& m, const BodyState& s) {
-  const Eigen::Quaterniond q = cloud_orientation(m, s);
-  const Eigen::Vector3d v = velocity(m, s), w = omega_world(m, s);
-  const double cols[] = {s.c.x(), s.c.y(), s.c.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(), v.z(),
-                         w.x(),   w.y(),   w.z(),   s.L.x(), s.L.y(), s.L.z(), total_energy(m, s)};
-  out += format_double(t);
-  out += ',';
-  out += m.name;
-  for (double c : cols) {
-    out += ',';
-    out += format_double(c);
-  }
-  out += '\n';
+  io::append_trajectory_row(out, t, m.name, m, s);
 }
 
 void apply_overrides(const SimulateOptions& o, scene::Scene& s) {
@@ -83,8 +71,8 @@ int run_simulate(const SimulateOptions& o) {
     props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
   }
 
-  AtomicFile out(o.csv);
-  std::string buf = kHeader;
+  io::AtomicFile out(o.csv);
+  std::string buf = std::string(io::kTrajectoryHeader) + "\n";
   auto flush = [&] {
     out.write(buf);
     buf.clear();
