@@ -186,19 +186,11 @@ int run_golden(const GoldenOptions& o) {
           }
         }
         if (o.update) {
-          io::Json j;
-          j["scene"] = s.path.filename().string();
-          j["t"] = static_cast<double>(k) / fps;
-          j["frame"] = k;
-          j["fps"] = fps;
-          j["width"] = o.width;
-          j["height"] = o.height;
-          j["msaa"] = msaa;
-          j["samples"] = samples;
-          j["gl_backend"] = render::to_string(backend);
-          j["gl_renderer"] = gl_renderer;
-          j["gl_version"] = gl_version;
-          j["tumble_version"] = TUMBLE_VERSION;
+          const io::Json j{{"scene", s.path.filename().string()}, {"t", static_cast<double>(k) / fps},
+                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", msaa},
+                           {"samples", samples}, {"gl_backend", render::to_string(backend)},
+                           {"gl_renderer", gl_renderer}, {"gl_version", gl_version},
+                           {"tumble_version", TUMBLE_VERSION}};
           const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
                             expected->rgb == actual.rgb;
           const std::optional<io::Json> old_side = io::read_json_file(side);

@@ -15,28 +15,12 @@ namespace tumble::app {
 namespace fs = std::filesystem;
 
 std::string Manifest::json() const {
-  io::Json j;
-  j["tool"] = "tumble";
-  j["version"] = TUMBLE_VERSION;
-  j["scene"] = scene_path;
-  j["scene_hash"] = scene_hash;
-  j["settings_hash"] = settings_hash;
-  j["method"] = method;
-  j["step"] = step;
-  j["dt"] = dt;
-  j["fps"] = fps;
-  j["width"] = width;
-  j["height"] = height;
-  j["msaa"] = msaa;
-  j["frame_count"] = frame_count;
-  j["frames"] = {first, last};
-  j["frames_written"] = written;
-  j["gl_backend"] = backend;
-  j["gl_version"] = gl_version;
-  j["gl_renderer"] = gl_renderer;
-  j["video"] = video;
-  j["complete"] = complete;
-  return io::json_text(j);
+  return io::json_text(io::Json{
+      {"tool", "tumble"}, {"version", TUMBLE_VERSION}, {"scene", scene_path}, {"scene_hash", scene_hash},
+      {"settings_hash", settings_hash}, {"method", method}, {"step", step}, {"dt", dt}, {"fps", fps},
+      {"width", width}, {"height", height}, {"msaa", msaa}, {"frame_count", frame_count},
+      {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
+      {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", video}, {"complete", complete}});
 }
 
 namespace {
