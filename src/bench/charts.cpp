@@ -173,18 +173,21 @@ std::vector<std::filesystem::path> chart_stability(const std::filesystem::path& 
   }
   const size_t panel_cols = b.names.size() > 8 ? 6 : 4, panel_rows = (b.names.size() + panel_cols - 1) / panel_cols;
   std::string gp =
-      "set terminal pngcairo size " + std::to_string(panel_cols * 400) + "," + std::to_string(panel_rows * 420 + 60) +
+      "set terminal pngcairo size " + std::to_string(panel_cols * 400 + 200) + "," + std::to_string(panel_rows * 420 + 60) +
       " font 'sans,11'\nset logscale xy\nset format x '10^{%L}'\n"
       "set cbrange [-0.5:3.5]\nset palette maxcolors 4\n"
       "set palette defined (0 '#2ca02c', 1 '#f2c80f', 2 '#ff7f0e', 3 '#d62728')\n"
       "set cbtics ('ok' 0, 'inaccurate (>1%%)' 1, 'wrong (flips/axis)' 2, 'diverged' 3)\nunset key\n"
       "set xrange [3e-5:1]\nset yrange [0.5:200]\n"
       "set xlabel 'step dt (s)'\nset ylabel 'spin rate {/Symbol W} (rad/s)'\nset style fill solid 1.0 border lc 'white'\n"
-      "set multiplot layout " + std::to_string(panel_rows) + "," + std::to_string(panel_cols) + " title 'Stability map: T-handle (moments 1, 2, 3 kg m^2) spun at {/Symbol W} about "
+      "set multiplot layout " + std::to_string(panel_rows) + "," + std::to_string(panel_cols) +
+      " margins 0.04,0.9,0.06,0.93 spacing 0.045,0.1 title 'Stability map: T-handle (moments 1, 2, 3 kg m^2) spun at {/Symbol W} about "
       "the intermediate axis (flip count, error at about 10 s) and the major/minor axes (tip-over)'\n";
   for (size_t i = 0; i < b.names.size(); ++i) {
     gp += "set title '" + b.names[i] + "' noenhanced\n";
-    gp += i + 1 == b.names.size() ? "set colorbox\nset rmargin 14\n" : "unset colorbox\n";
+    // The colour key sits in the right margin, so every panel keeps its size.
+    gp += i + 1 == b.names.size() ? "set colorbox user origin screen 0.915, screen 0.3 size screen 0.012, screen 0.4\n"
+                                  : "unset colorbox\n";
     gp += "plot 'stability_map.dat' index " + std::to_string(i) + " using 1:2:3:4:5:6:7 with boxxyerror lc palette\n";
   }
   gp += "unset multiplot\n";

@@ -29,6 +29,13 @@ std::string sci(double v) {
   return s;
 }
 
+// CPU figures: whole nanoseconds from 100 on (3.1e+02 reads badly).
+std::string ns(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, v < 100 ? "%.3g" : "%.0f", v);
+  return buf;
+}
+
 constexpr double kDts[] = {1e-1, 1e-2, 1e-3};
 constexpr double kRtol = 1e-9;
 
@@ -45,7 +52,7 @@ Line fixed_line(const std::string& name, const Problem& p,
   for (int i = 0; i < 3; ++i) l.err[i] = errors(p, run(p, kDts[i])).angle;
   if (std::isfinite(l.err[2])) {
     const double cpu = median_cpu_seconds([&] { run(p, kDts[2]); }, 0.02, 5);
-    l.cost = sci(1e9 * cpu / std::round(p.duration / kDts[2]));
+    l.cost = ns(1e9 * cpu / std::round(p.duration / kDts[2]));
   }
   return l;
 }
@@ -74,7 +81,7 @@ std::string readme_accuracy_table(std::ostream& log) {
       once();
       const double e = errors(p, s).angle, cpu = median_cpu_seconds(once, 0.02, 5);
       lines.push_back({name + " (adaptive: rtol 1e-9, atol 1e-12)", {e, e, e},
-                       sci(1e9 * cpu / static_cast<double>(steps)) + " (" + std::to_string(steps) + " steps)"});
+                       ns(1e9 * cpu / static_cast<double>(steps)) + " (" + std::to_string(steps) + " steps)"});
     }
     log << "  readme table: " << lines.back().name << "\n";
   }
@@ -86,7 +93,7 @@ std::string readme_accuracy_table(std::ostream& log) {
     } else {
       const double e = errors(p, c.run(p.model, p.s0, p.duration, kRtol)).angle;
       const double cpu = median_cpu_seconds([&] { c.run(p.model, p.s0, p.duration, kRtol); }, 0.02, 5);
-      lines.push_back({"peer " + c.label + " (adaptive: rtol = atol = 1e-9)", {e, e, e}, sci(1e6 * cpu) + " µs per run"});
+      lines.push_back({"peer " + c.label + " (adaptive: rtol = atol = 1e-9)", {e, e, e}, ns(1e6 * cpu) + " µs per run"});
     }
     log << "  readme table: " << lines.back().name << "\n";
   }

@@ -79,6 +79,7 @@ std::string cheapest_markdown(const std::vector<CheapestRow>& rows, const std::s
   for (size_t i = 0; i < tols.size(); ++i) o << "---|";
   o << "\n";
   std::map<double, std::string> winner;
+  std::map<double, const CheapestRow*> best_peer;
   for (const std::string& w : who) {
     o << "| " << w << " |";
     for (double t : tols) {
@@ -87,15 +88,22 @@ std::string cheapest_markdown(const std::vector<CheapestRow>& rows, const std::s
         o << " — |";
         continue;
       }
-      const std::string cpu = fmt(c->cpu_s * 1e6) + " µs";
+      const double us = c->cpu_s * 1e6;
+      const std::string cpu = (us < 1000 ? fmt(us) : std::to_string(std::lround(us))) + " µs";
       o << " " << (c->winner ? "**" + cpu + "**" : cpu) << " (" << c->param_name << " " << fmt(c->param) << ") |";
       if (c->winner) winner[t] = w;
+      if (c->kind == "peer" && (!best_peer[t] || c->cpu_s < best_peer[t]->cpu_s)) best_peer[t] = c;
     }
     o << "\n";
   }
   o << "| **cheapest** |";
   for (double t : tols) o << " " << (winner.count(t) ? "**" + winner[t] + "**" : std::string("none")) << " |";
   o << "\n";
+  if (std::any_of(rows.begin(), rows.end(), [&](const CheapestRow& r) { return r.problem == problem && r.kind == "peer"; })) {
+    o << "| cheapest peer |";
+    for (double t : tols) o << " " << (best_peer[t] ? best_peer[t]->who : std::string("none")) << " |";
+    o << "\n";
+  }
   return o.str();
 }
 

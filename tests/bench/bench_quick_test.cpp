@@ -158,7 +158,7 @@ TEST_F(BenchQuick, OdeintPeersOnEveryStudy) {
   auto at = [&](const std::string& l, double dt) {
     for (auto [p, e] : err[l])
       if (std::abs(p / dt - 1) < 1e-9) return e;
-    return NAN;
+    return std::nan("");
   };
   const double body = at("odeint_rk4_body", 1e-3), world = at("odeint_rk4_world", 1e-3);
   EXPECT_LT(body, 1e-7);
