@@ -68,6 +68,7 @@ int run_simulate(const SimulateOptions& o) {
   for (const scene::Body& b : s.bodies) {
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
     if (!plan.reason.empty()) std::cerr << "tumble: body '" << b.name << "': auto picked " << plan.reason << "\n";
+    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) std::cerr << "tumble: warning: " << *w << "\n";
     props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
   }
 
@@ -110,6 +111,10 @@ int run_simulate(const SimulateOptions& o) {
   }
   flush();
   out.commit();
+  // The step each body actually took (fixed-step methods step on the grid n·dt).
+  for (const auto& p : props)
+    std::cerr << "tumble: body '" << p->model().name << "': " << method_name(p->config().method) << ", "
+              << scene::step_label(p->config(), p->model()) << ", " << p->steps() << " steps\n";
   return kOk;
 }
 

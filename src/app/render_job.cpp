@@ -46,15 +46,25 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
     scene::SimulationConfig sim = s.simulation;
     sim.method = method;
     std::vector<std::unique_ptr<Propagator>> props;
+    // Labels list each method and step once, compared whole (by enum for the
+    // methods): rk45 and rk4 are two entries, not one substring of the other.
+    std::vector<Method> used;
+    std::vector<std::string> steps;
     for (const scene::Body& b : s.bodies) {
       const scene::MethodPlan plan = scene::plan_method(sim, b);
       if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
+      if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) run.auto_notes.push_back("warning: " + *w);
       props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
       run.energy0.push_back(total_energy(b.model, b.initial));
-      const std::string name(method_name(plan.config.method));
       const std::string step = scene::step_label(plan.config, b.model);
-      if (run.step_label.find(step) == std::string::npos) run.step_label += (run.step_label.empty() ? "" : "/") + step;
-      if (run.label.find(name) == std::string::npos) run.label += (run.label.empty() ? "" : "/") + name;
+      if (std::find(steps.begin(), steps.end(), step) == steps.end()) {
+        steps.push_back(step);
+        run.step_label += (run.step_label.empty() ? "" : "/") + step;
+      }
+      if (std::find(used.begin(), used.end(), plan.config.method) == used.end()) {
+        used.push_back(plan.config.method);
+        run.label += (run.label.empty() ? "" : "/") + std::string(method_name(plan.config.method));
+      }
     }
     try {
       for (long k = 0; k < frames; ++k) {
@@ -158,8 +168,7 @@ viz::DrawList FrameBuilder::build(long k) const {
         double rel = 0;
         bool conserved = true;
         for (size_t i = 0; i < snaps.size(); ++i) {
-          const ForceSet& f = snaps[i].model->forces;
-          conserved = conserved && !f.has_torque() && f.linear_damping == 0;
+          conserved = conserved && snaps[i].model->forces.conserves_energy();
           const double e0 = run.energy0[i];
           const double e = total_energy(*snaps[i].model, snaps[i].state);
           rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));

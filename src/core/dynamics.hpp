@@ -90,6 +90,15 @@ inline double total_energy(const RigidBodyModel& m, const BodyState& s) {
   return kinetic_energy(m, s) + potential_energy(m, s);
 }
 
+/// Where energy goes (W): `driving` is the power of the declared terms that
+/// are neither conservative nor dissipative (point forces, constant torques);
+/// `scale` adds |power| of gravity, the size against which an energy balance
+/// is judged. Damping only removes energy, so it is in neither.
+struct EnergyFlow {
+  double driving = 0, scale = 0;
+};
+EnergyFlow energy_flow(const RigidBodyModel& m, const BodyState& s);
+
 /// Diagnostics (seed §3, §5): a = f/M and α = J⁻¹(τ - ω × Jω), world frame.
 Eigen::Vector3d linear_acceleration(const RigidBodyModel& m, const BodyState& s, double t);
 Eigen::Vector3d angular_acceleration(const RigidBodyModel& m, const BodyState& s, double t);
