@@ -11,11 +11,12 @@
 namespace tumble::app {
 
 SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
-    : scene_(s), fps_(s.render.output.fps), count_(frame_count(s.simulation.duration, s.render.output.fps)) {
+    : scene_(s), fps_(s.render.output.fps), count_(scene::frame_clock(s, s.render.output.fps).count()) {
   if (last_needed < 0 || last_needed >= count_)
     throw InputError("frame " + std::to_string(last_needed) + " is past the end of the scene (frames 0:" +
                      std::to_string(count_ - 1) + ")");
-  const long frames = s.render.camera.automatic ? count_ : last_needed + 1;
+  // Laid-out views (a plot's value axis) also depend on the whole run.
+  const long frames = s.render.camera.automatic || !s.render.explain.views.empty() ? count_ : last_needed + 1;
   runs_ = simulate_runs(s, frames, fps_);
 }
 
@@ -37,6 +38,7 @@ std::vector<render::Image> SceneFrames::render(render::GlContext& ctx, const std
 
 std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
   std::string out = std::string(golden::kTrajectoryHeader) + "\n";
+  const scene::FrameClock clock = scene::frame_clock(scene_, fps_);
   for (long k : ks) {
     for (const Run& run : runs_) {
       if (k >= static_cast<long>(run.frames.size())) continue;  // diverged: the row count shows it
@@ -49,7 +51,7 @@ std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
         const double cols[] = {st.c.x(), st.c.y(), st.c.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(),
                                v.z(),    w.x(),    w.y(),    w.z(),    st.L.x(), st.L.y(), st.L.z(),
                                total_energy(m, st)};
-        out += format_double(static_cast<double>(k) / fps_);
+        out += format_double(clock.time(k));
         out += ',';
         out += runs_.size() > 1 ? run.label + ":" + m.name : m.name;
         for (double c : cols) out += "," + format_double(c);
