@@ -12,15 +12,16 @@
 #include <set>
 #include <sstream>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "app/frame_renderer.hpp"
 #include "core/error.hpp"
 #include "golden/compare.hpp"
 #include "golden/report.hpp"
 #include "golden/trajectory.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json.hpp"
+#include "io/png.hpp"
 #include "render/gl_context.hpp"
-#include "render/png_io.hpp"
 
 namespace tumble::app {
 
@@ -97,13 +98,11 @@ std::string slurp(const fs::path& p, bool& ok) {
   return s.str();
 }
 
-/// The value of "key": "..." in our own sidecar JSON (no general parser needed).
-std::string sidecar_field(const std::string& json, const std::string& key) {
-  const std::string pat = "\"" + key + "\": \"";
-  const auto a = json.find(pat);
-  if (a == std::string::npos) return "?";
-  const auto b = json.find('"', a + pat.size());
-  return b == std::string::npos ? "?" : json.substr(a + pat.size(), b - a - pat.size());
+/// A string field of a sidecar, or "?".
+std::string sidecar_field(const std::optional<io::Json>& j, const char* key) {
+  if (!j) return "?";
+  const auto it = j->find(key);
+  return it != j->end() && it->is_string() ? it->get<std::string>() : "?";
 }
 
 int run_golden(const GoldenOptions& o) {
@@ -126,7 +125,7 @@ int run_golden(const GoldenOptions& o) {
   const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
+  if (ec) throw io::IoError("cannot create " + dir.string() + ": " + ec.message());
 
   const SceneFrames frames(s, ks.back());
   golden::Report report(report_dir, "tumble golden: " + s.name + " (" + s.path.string() + ")");
@@ -148,7 +147,7 @@ int run_golden(const GoldenOptions& o) {
     const std::string what = "physics " + path.filename().string();
     if (o.update) {
       if (!ok || expected != actual) {
-        atomic_write_file(path, actual);
+        io::atomic_write_file(path, actual);
         ++written;
         std::cout << (ok ? "updated  " : "created  ") << path.string()
                   << (ok ? "  (was: " + golden::compare_trajectories(actual, expected, o.tol).summary + ")" : "") << "\n";
@@ -170,7 +169,7 @@ int run_golden(const GoldenOptions& o) {
     const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
     for (int msaa : msaas) {
       int samples = 0;
-      const std::vector<render::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
+      const std::vector<io::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
       for (std::size_t i = 0; i < ks.size(); ++i) {
         const long k = ks[i];
         char base[160];
@@ -179,45 +178,41 @@ int run_golden(const GoldenOptions& o) {
         char what[200];
         std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) msaa %d %dx%d", s.name.c_str(),
                       clock.time(k), k, msaa, o.width, o.height);
-        const render::Image& actual = images[i];
-        std::optional<render::Image> expected;
+        const io::Image& actual = images[i];
+        std::optional<io::Image> expected;
         std::string read_error;
         if (fs::exists(png)) {
           try {
-            expected = render::read_png(png);
+            expected = io::read_png(png);
           } catch (const std::exception& e) {
             read_error = e.what();
           }
         }
         if (o.update) {
-          std::ostringstream j;
-          j << "{\n  \"scene\": \"" << json_escape(s.path.filename().string()) << "\",\n  \"t\": "
-            << format_double(clock.time(k)) << ",\n  \"frame\": " << k << ",\n  \"fps\": "
-            << format_double(fps) << ",\n  \"width\": " << o.width << ",\n  \"height\": " << o.height
-            << ",\n  \"msaa\": " << msaa << ",\n  \"samples\": " << samples << ",\n  \"gl_backend\": \""
-            << render::to_string(backend) << "\",\n  \"gl_renderer\": \"" << json_escape(gl_renderer)
-            << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"tumble_version\": \""
-            << TUMBLE_VERSION << "\"\n}\n";
+          const io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
+                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", msaa},
+                           {"samples", samples}, {"gl_backend", render::to_string(backend)},
+                           {"gl_renderer", gl_renderer}, {"gl_version", gl_version},
+                           {"tumble_version", TUMBLE_VERSION}};
           const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
                             expected->rgb == actual.rgb;
-          bool side_ok = false;
-          const bool side_same = slurp(side, side_ok) == j.str();
+          const std::optional<io::Json> old_side = io::read_json_file(side);
+          const bool side_same = old_side && *old_side == j;  // by value: 30 and 30.0 are one fps
           if (!same) {
-            render::write_png_atomic(png, actual);
+            io::write_png_atomic(png, actual);
             std::cout << (expected ? "updated  " : "created  ") << png.string()
                       << (expected ? "  (was: " + golden::compare_images(actual, *expected, o.cmp).summary + ")" : "")
                       << "\n";
           }
           if (!same || !side_same) {
-            atomic_write_file(side, j.str());
+            io::write_json_atomic(side, j);
             ++written;
           }
           continue;
         }
-        bool side_ok = false;
-        const std::string sidecar = slurp(side, side_ok);
+        const std::optional<io::Json> sidecar = io::read_json_file(side);
         const std::string note = "expected made with " +
-                                 (side_ok ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
+                                 (sidecar ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
                                           : std::string("? (no sidecar ") + side.filename().string() + ")") +
                                  "; actual with " + gl_renderer + ", " + gl_version;
         if (!fs::exists(png)) {

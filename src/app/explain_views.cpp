@@ -133,8 +133,14 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   }
   if (vc.viewport) v.viewport = glm::dvec4((*vc.viewport)[0], (*vc.viewport)[1], (*vc.viewport)[2], (*vc.viewport)[3]);
   else v.viewport = glm::dvec4(0, 0, 1, 1);
-  if (!vc.title.empty() && (vc.kind == scene::ViewKind::world || vc.kind == scene::ViewKind::body_frame))
+  if (!vc.title.empty() && (vc.kind == scene::ViewKind::world || vc.kind == scene::ViewKind::body_frame)) {
+    // The renderer draws the label in the top-left corner (its size: renderer.cpp's
+    // draw_text); the overlay line moves below it.
     v.label = vc.title;
+    const float label_px = std::clamp(static_cast<float>(slot.height_px) * 0.055f, 11.0f, 26.0f);
+    for (viz::TextItem& t : v.texts)
+      if (t.position_px.y < label_px) t.position_px.y += 1.6f * label_px;
+  }
   return v;
 }
 

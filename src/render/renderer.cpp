@@ -38,7 +38,7 @@ class Renderer::Impl {
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
-  void render(const viz::DrawList& frame, Image& out);
+  void render(const viz::DrawList& frame, io::Image& out);
   const OffscreenTarget& target() const { return target_; }
 
  private:
@@ -68,13 +68,13 @@ Renderer::Renderer(GlContext& context, int width, int height, int msaa,
 
 Renderer::~Renderer() = default;
 
-Image Renderer::render(const viz::DrawList& frame) {
-  Image img;
+io::Image Renderer::render(const viz::DrawList& frame) {
+  io::Image img;
   impl_->render(frame, img);
   return img;
 }
 
-void Renderer::render(const viz::DrawList& frame, Image& out) { impl_->render(frame, out); }
+void Renderer::render(const viz::DrawList& frame, io::Image& out) { impl_->render(frame, out); }
 
 int Renderer::width() const { return impl_->target().width(); }
 int Renderer::height() const { return impl_->target().height(); }
@@ -110,7 +110,7 @@ void Renderer::Impl::set_viewport(const PixelRect& rect) {
   gl_.Scissor(rect.x, gl_y, rect.width, rect.height);
 }
 
-void Renderer::Impl::render(const viz::DrawList& frame, Image& out) {
+void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);

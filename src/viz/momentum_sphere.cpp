@@ -65,7 +65,9 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in, float font
   const Eigen::Vector3d& I = in.inertia;
   const double L = in.momentum.norm();
   view.camera = Camera{};
-  view.camera.position = glm::dvec3(2.6, 3.4, 2.2);  // sees +e1, +e2 and +e3 and the separatrix crossing at +e2
+  // From the -e1, +e2, +e3 side: +e2 (where a near-intermediate spin starts)
+  // and the separatrix arcs towards ±e3 face the viewer.
+  view.camera.position = glm::dvec3(-2.9, 3.2, 2.9);
   view.camera.target = {0, 0, 0};
   view.camera.up = {0, 0, 1};
   view.camera.fov_y_deg = 30;
@@ -107,9 +109,9 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in, float font
     }
     view.polylines.push_back(std::move(e));
   }
+  // The body's own polhode under the separatrix, which stays visible on top of it.
+  add(polhodes(I, L, in.two_E, 192), {0.95f, 0.6f, 0.05f, 0.9f}, 1.5f);
   add(separatrix(I, L, 192), sep_color, 2.5f);
-  // The body's own polhode and its path so far.
-  add(polhodes(I, L, in.two_E, 192), {0.95f, 0.6f, 0.05f, 0.9f}, 2.0f);
   PolylineItem path{{}, {0.1f, 0.1f, 0.15f, 1.0f}, 2.5f, true};
   for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
   if (path.points.size() >= 2) view.polylines.push_back(std::move(path));
