@@ -7,7 +7,7 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "golden/compare.hpp"
-#include "render/png_io.hpp"
+#include "io/png.hpp"
 
 namespace tumble::app {
 
@@ -26,10 +26,10 @@ void check_tolerance(const golden::CompareOptions& c) {
 
 int run_compare(const CompareCliOptions& o) {
   check_tolerance(o.cmp);
-  render::Image a, b;
+  io::Image a, b;
   try {
-    a = render::read_png(o.a);
-    b = render::read_png(o.b);
+    a = io::read_png(o.a);
+    b = io::read_png(o.b);
   } catch (const std::exception& e) {
     std::cerr << "tumble compare: " << e.what() << "\n";
     return kInputError;
@@ -37,7 +37,7 @@ int run_compare(const CompareCliOptions& o) {
   const golden::Comparison c = golden::compare_images(a, b, o.cmp);
   std::cout << (c.pass ? "same: " : "different: ") << c.summary << "\n";
   if (!o.diff.empty() && !c.size_mismatch) {
-    render::write_png_atomic(o.diff, golden::amplified_difference(a, b));
+    io::write_png_atomic(o.diff, golden::amplified_difference(a, b));
     std::cout << "difference x16 written to " << o.diff << "\n";
   }
   return c.pass ? kOk : 1;

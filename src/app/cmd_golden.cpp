@@ -12,15 +12,16 @@
 #include <set>
 #include <sstream>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "app/frame_renderer.hpp"
 #include "core/error.hpp"
 #include "golden/compare.hpp"
 #include "golden/report.hpp"
 #include "golden/trajectory.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json.hpp"
+#include "io/png.hpp"
 #include "render/gl_context.hpp"
-#include "render/png_io.hpp"
 
 namespace tumble::app {
 
@@ -63,24 +64,27 @@ double parse_num(const std::string& what, const std::string& s) {
   return v;
 }
 
-/// Times -> frame numbers; each time must be a frame time k/fps of the scene.
-std::vector<long> frames_at(const std::string& at, double fps, long count) {
+/// Times -> frame numbers; each time must be a frame time of the scene (k/fps,
+/// or the simulated time frame k shows under [output] time_scale / slow motion).
+std::vector<long> frames_at(const std::string& at, const scene::FrameClock& clock) {
+  const double fps = clock.fps();
+  const long count = clock.count();
   std::set<long> ks;
   const auto items = split_list(at);
   if (items.empty()) throw InputError("--at: expected times in s, e.g. --at 0.5,2");
   for (const std::string& item : items) {
     const double t = parse_num("--at", item);
-    const long k = std::lround(t * fps);
-    if (t < 0 || std::abs(static_cast<double>(k) / fps - t) > 1e-9 * std::max(1.0, std::abs(t))) {
-      const long lo = static_cast<long>(std::floor(t * fps));
+    const long k = t < 0 ? -1 : std::lround(clock.video_time(t) * fps);
+    if (t < 0 || std::abs(clock.time(k) - t) > 1e-9 * std::max(1.0, std::abs(t))) {
+      const long lo = t < 0 ? 0 : static_cast<long>(std::floor(clock.video_time(t) * fps));
       char buf[200];
       std::snprintf(buf, sizeof buf, "--at %s: not a frame time of the scene (t = k/fps, fps %g); nearest: %.6g s and %.6g s",
-                    item.c_str(), fps, std::max(0L, lo) / fps, std::max(0L, lo + 1) / fps);
+                    item.c_str(), fps, clock.time(std::max(0L, lo)), clock.time(std::max(0L, lo + 1)));
       throw InputError(buf);
     }
     if (k >= count)
       throw InputError("--at " + item + ": past the end of the scene (last frame t = " +
-                       format_double(static_cast<double>(count - 1) / fps) + " s)");
+                       format_double(clock.time(count - 1)) + " s)");
     ks.insert(k);
   }
   return {ks.begin(), ks.end()};
@@ -94,13 +98,11 @@ std::string slurp(const fs::path& p, bool& ok) {
   return s.str();
 }
 
-/// The value of "key": "..." in our own sidecar JSON (no general parser needed).
-std::string sidecar_field(const std::string& json, const std::string& key) {
-  const std::string pat = "\"" + key + "\": \"";
-  const auto a = json.find(pat);
-  if (a == std::string::npos) return "?";
-  const auto b = json.find('"', a + pat.size());
-  return b == std::string::npos ? "?" : json.substr(a + pat.size(), b - a - pat.size());
+/// A string field of a sidecar, or "?".
+std::string sidecar_field(const std::optional<io::Json>& j, const char* key) {
+  if (!j) return "?";
+  const auto it = j->find(key);
+  return it != j->end() && it->is_string() ? it->get<std::string>() : "?";
 }
 
 int run_golden(const GoldenOptions& o) {
@@ -117,13 +119,13 @@ int run_golden(const GoldenOptions& o) {
     msaas.push_back(std::stoi(m));
   }
   const double fps = s.render.output.fps;
-  const long count = frame_count(s.simulation.duration, fps);
-  const std::vector<long> ks = frames_at(o.at, fps, count);
+  const scene::FrameClock clock = scene::frame_clock(s, fps);
+  const std::vector<long> ks = frames_at(o.at, clock);
   const fs::path dir = o.dir;
   const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
+  if (ec) throw io::IoError("cannot create " + dir.string() + ": " + ec.message());
 
   const SceneFrames frames(s, ks.back());
   golden::Report report(report_dir, "tumble golden: " + s.name + " (" + s.path.string() + ")");
@@ -145,7 +147,7 @@ int run_golden(const GoldenOptions& o) {
     const std::string what = "physics " + path.filename().string();
     if (o.update) {
       if (!ok || expected != actual) {
-        atomic_write_file(path, actual);
+        io::atomic_write_file(path, actual);
         ++written;
         std::cout << (ok ? "updated  " : "created  ") << path.string()
                   << (ok ? "  (was: " + golden::compare_trajectories(actual, expected, o.tol).summary + ")" : "") << "\n";
@@ -167,7 +169,7 @@ int run_golden(const GoldenOptions& o) {
     const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
     for (int msaa : msaas) {
       int samples = 0;
-      const std::vector<render::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
+      const std::vector<io::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
       for (std::size_t i = 0; i < ks.size(); ++i) {
         const long k = ks[i];
         char base[160];
@@ -175,46 +177,42 @@ int run_golden(const GoldenOptions& o) {
         const fs::path png = dir / (std::string(base) + ".png"), side = dir / (std::string(base) + ".json");
         char what[200];
         std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) msaa %d %dx%d", s.name.c_str(),
-                      static_cast<double>(k) / fps, k, msaa, o.width, o.height);
-        const render::Image& actual = images[i];
-        std::optional<render::Image> expected;
+                      clock.time(k), k, msaa, o.width, o.height);
+        const io::Image& actual = images[i];
+        std::optional<io::Image> expected;
         std::string read_error;
         if (fs::exists(png)) {
           try {
-            expected = render::read_png(png);
+            expected = io::read_png(png);
           } catch (const std::exception& e) {
             read_error = e.what();
           }
         }
         if (o.update) {
-          std::ostringstream j;
-          j << "{\n  \"scene\": \"" << json_escape(s.path.filename().string()) << "\",\n  \"t\": "
-            << format_double(static_cast<double>(k) / fps) << ",\n  \"frame\": " << k << ",\n  \"fps\": "
-            << format_double(fps) << ",\n  \"width\": " << o.width << ",\n  \"height\": " << o.height
-            << ",\n  \"msaa\": " << msaa << ",\n  \"samples\": " << samples << ",\n  \"gl_backend\": \""
-            << render::to_string(backend) << "\",\n  \"gl_renderer\": \"" << json_escape(gl_renderer)
-            << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"tumble_version\": \""
-            << TUMBLE_VERSION << "\"\n}\n";
+          const io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
+                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", msaa},
+                           {"samples", samples}, {"gl_backend", render::to_string(backend)},
+                           {"gl_renderer", gl_renderer}, {"gl_version", gl_version},
+                           {"tumble_version", TUMBLE_VERSION}};
           const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
                             expected->rgb == actual.rgb;
-          bool side_ok = false;
-          const bool side_same = slurp(side, side_ok) == j.str();
+          const std::optional<io::Json> old_side = io::read_json_file(side);
+          const bool side_same = old_side && *old_side == j;  // by value: 30 and 30.0 are one fps
           if (!same) {
-            render::write_png_atomic(png, actual);
+            io::write_png_atomic(png, actual);
             std::cout << (expected ? "updated  " : "created  ") << png.string()
                       << (expected ? "  (was: " + golden::compare_images(actual, *expected, o.cmp).summary + ")" : "")
                       << "\n";
           }
           if (!same || !side_same) {
-            atomic_write_file(side, j.str());
+            io::write_json_atomic(side, j);
             ++written;
           }
           continue;
         }
-        bool side_ok = false;
-        const std::string sidecar = slurp(side, side_ok);
+        const std::optional<io::Json> sidecar = io::read_json_file(side);
         const std::string note = "expected made with " +
-                                 (side_ok ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
+                                 (sidecar ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
                                           : std::string("? (no sidecar ") + side.filename().string() + ")") +
                                  "; actual with " + gl_renderer + ", " + gl_version;
         if (!fs::exists(png)) {

@@ -1,6 +1,8 @@
 // The seed's ODE as one pure function, and the quantities derived from a state.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -80,6 +82,18 @@ inline Eigen::Vector3d omega_world(const RigidBodyModel& m, const BodyState& s) 
 /// ω in the cloud's own axes (the scene's `omega_body`), rad/s.
 inline Eigen::Vector3d omega_body(const RigidBodyModel& m, const BodyState& s) {
   return m.cloud_from_principal * omega_principal(m, s);
+}
+
+/// Angle between each principal axis (I1 ≤ I2 ≤ I3) and L, rad in [0, π];
+/// atan2 keeps it accurate near 0 and π. Zero when L = 0.
+inline Eigen::Vector3d principal_axis_angles_to_L(const BodyState& s) {
+  const Eigen::Vector3d p = momentum_body(s);
+  Eigen::Vector3d out;
+  for (int i = 0; i < 3; ++i) {
+    const double along = p[i], across = std::hypot(p[(i + 1) % 3], p[(i + 2) % 3]);
+    out[i] = std::atan2(across, along);
+  }
+  return out;
 }
 
 /// Kinetic energy ½|P|²/M + ½ Π·I⁻¹Π, J.

@@ -10,18 +10,18 @@ namespace tumble::golden {
 
 namespace {
 
-bool same_size(const render::Image& a, const render::Image& b) {
+bool same_size(const io::Image& a, const io::Image& b) {
   return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
          a.rgb.size() == static_cast<std::size_t>(a.width) * static_cast<std::size_t>(a.height) * 3;
 }
 
-void require_same_size(const render::Image& a, const render::Image& b) {
+void require_same_size(const io::Image& a, const io::Image& b) {
   if (!same_size(a, b)) throw std::invalid_argument("images of different sizes");
 }
 
 }  // namespace
 
-Comparison compare_images(const render::Image& actual, const render::Image& expected, const CompareOptions& o) {
+Comparison compare_images(const io::Image& actual, const io::Image& expected, const CompareOptions& o) {
   Comparison c;
   c.width = actual.width;
   c.height = actual.height;
@@ -55,17 +55,17 @@ Comparison compare_images(const render::Image& actual, const render::Image& expe
   return c;
 }
 
-render::Image amplified_difference(const render::Image& actual, const render::Image& expected, int gain) {
+io::Image amplified_difference(const io::Image& actual, const io::Image& expected, int gain) {
   require_same_size(actual, expected);
-  render::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
+  io::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
   for (std::size_t i = 0; i < actual.rgb.size(); ++i)
     out.rgb[i] = static_cast<std::uint8_t>(std::min(255, std::abs(int(actual.rgb[i]) - int(expected.rgb[i])) * gain));
   return out;
 }
 
-render::Image over_threshold_mask(const render::Image& actual, const render::Image& expected, int max_delta) {
+io::Image over_threshold_mask(const io::Image& actual, const io::Image& expected, int max_delta) {
   require_same_size(actual, expected);
-  render::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
+  io::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
   for (std::size_t i = 0; i < actual.rgb.size(); i += 3) {
     int m = 0;
     for (int ch = 0; ch < 3; ++ch) m = std::max(m, std::abs(int(actual.rgb[i + ch]) - int(expected.rgb[i + ch])));

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "render/image.hpp"
+#include "io/image.hpp"
 
 namespace tumble::golden {
 
@@ -29,15 +29,15 @@ struct Comparison {
 
 /// Compares `actual` with `expected`. Never throws for valid Images;
 /// different sizes give size_mismatch (and pass = false).
-Comparison compare_images(const render::Image& actual, const render::Image& expected,
+Comparison compare_images(const io::Image& actual, const io::Image& expected,
                           const CompareOptions& options = {});
 
 /// |actual - expected| per channel times `gain` (clamped to 255) on black:
 /// differences of a few levels become visible. Sizes must match.
-render::Image amplified_difference(const render::Image& actual, const render::Image& expected, int gain = 16);
+io::Image amplified_difference(const io::Image& actual, const io::Image& expected, int gain = 16);
 
 /// The pixels over the threshold in magenta, on the expected image darkened
 /// to a quarter for context. Sizes must match.
-render::Image over_threshold_mask(const render::Image& actual, const render::Image& expected, int max_delta);
+io::Image over_threshold_mask(const io::Image& actual, const io::Image& expected, int max_delta);
 
 }  // namespace tumble::golden
