@@ -64,24 +64,27 @@ double parse_num(const std::string& what, const std::string& s) {
   return v;
 }
 
-/// Times -> frame numbers; each time must be a frame time k/fps of the scene.
-std::vector<long> frames_at(const std::string& at, double fps, long count) {
+/// Times -> frame numbers; each time must be a frame time of the scene (k/fps,
+/// or the simulated time frame k shows under [output] time_scale / slow motion).
+std::vector<long> frames_at(const std::string& at, const scene::FrameClock& clock) {
+  const double fps = clock.fps();
+  const long count = clock.count();
   std::set<long> ks;
   const auto items = split_list(at);
   if (items.empty()) throw InputError("--at: expected times in s, e.g. --at 0.5,2");
   for (const std::string& item : items) {
     const double t = parse_num("--at", item);
-    const long k = std::lround(t * fps);
-    if (t < 0 || std::abs(static_cast<double>(k) / fps - t) > 1e-9 * std::max(1.0, std::abs(t))) {
-      const long lo = static_cast<long>(std::floor(t * fps));
+    const long k = t < 0 ? -1 : std::lround(clock.video_time(t) * fps);
+    if (t < 0 || std::abs(clock.time(k) - t) > 1e-9 * std::max(1.0, std::abs(t))) {
+      const long lo = t < 0 ? 0 : static_cast<long>(std::floor(clock.video_time(t) * fps));
       char buf[200];
       std::snprintf(buf, sizeof buf, "--at %s: not a frame time of the scene (t = k/fps, fps %g); nearest: %.6g s and %.6g s",
-                    item.c_str(), fps, std::max(0L, lo) / fps, std::max(0L, lo + 1) / fps);
+                    item.c_str(), fps, clock.time(std::max(0L, lo)), clock.time(std::max(0L, lo + 1)));
       throw InputError(buf);
     }
     if (k >= count)
       throw InputError("--at " + item + ": past the end of the scene (last frame t = " +
-                       format_double(static_cast<double>(count - 1) / fps) + " s)");
+                       format_double(clock.time(count - 1)) + " s)");
     ks.insert(k);
   }
   return {ks.begin(), ks.end()};
@@ -116,8 +119,8 @@ int run_golden(const GoldenOptions& o) {
     msaas.push_back(std::stoi(m));
   }
   const double fps = s.render.output.fps;
-  const long count = frame_count(s.simulation.duration, fps);
-  const std::vector<long> ks = frames_at(o.at, fps, count);
+  const scene::FrameClock clock = scene::frame_clock(s, fps);
+  const std::vector<long> ks = frames_at(o.at, clock);
   const fs::path dir = o.dir;
   const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
   std::error_code ec;
@@ -174,7 +177,7 @@ int run_golden(const GoldenOptions& o) {
         const fs::path png = dir / (std::string(base) + ".png"), side = dir / (std::string(base) + ".json");
         char what[200];
         std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) msaa %d %dx%d", s.name.c_str(),
-                      static_cast<double>(k) / fps, k, msaa, o.width, o.height);
+                      clock.time(k), k, msaa, o.width, o.height);
         const io::Image& actual = images[i];
         std::optional<io::Image> expected;
         std::string read_error;
@@ -186,7 +189,7 @@ int run_golden(const GoldenOptions& o) {
           }
         }
         if (o.update) {
-          const io::Json j{{"scene", s.path.filename().string()}, {"t", static_cast<double>(k) / fps},
+          const io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
                            {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", msaa},
                            {"samples", samples}, {"gl_backend", render::to_string(backend)},
                            {"gl_renderer", gl_renderer}, {"gl_version", gl_version},

@@ -118,7 +118,7 @@ int run_render(const RenderOptions& o) {
   apply_overrides(o, s);
   const scene::OutputConfig& out = s.render.output;
   const double fps = out.fps;
-  const long count = frame_count(s.simulation.duration, fps);
+  const long count = scene::frame_clock(s, fps).count();
   const fs::path dir = o.out_dir.empty() ? fs::path("out") / s.name : fs::path(o.out_dir);
   std::error_code ec;
   fs::create_directories(dir, ec);

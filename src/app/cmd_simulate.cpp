@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "core/dynamics.hpp"
 #include "core/propagator.hpp"
 #include "io/atomic_file.hpp"
 #include "io/trajectory_csv.hpp"
@@ -21,10 +22,20 @@ struct SimulateOptions {
   CLI::Option *method_opt = nullptr, *dt_opt = nullptr, *duration_opt = nullptr, *every_opt = nullptr;
 };
 
+// After the golden trajectory columns (appended, so readers by position keep
+// working): ω in the cloud's own axes and the angle of each principal axis to L.
+constexpr const char* kExtraColumns = ",wbx,wby,wbz,axis1_L,axis2_L,axis3_L";
 constexpr double kMaxRows = 1e8;  // guards --every 1 with a tiny dt
 
 void append_row(std::string& out, double t, const RigidBodyModel& m, const BodyState& s) {
   io::append_trajectory_row(out, t, m.name, m, s);
+  out.pop_back();  // its '\n'
+  const Eigen::Vector3d wb = omega_body(m, s), a = principal_axis_angles_to_L(s);
+  for (double c : {wb.x(), wb.y(), wb.z(), a.x(), a.y(), a.z()}) {
+    out += ',';
+    out += io::format_double(c);
+  }
+  out += '\n';
 }
 
 void apply_overrides(const SimulateOptions& o, scene::Scene& s) {
@@ -68,11 +79,12 @@ int run_simulate(const SimulateOptions& o) {
   for (const scene::Body& b : s.bodies) {
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
     if (!plan.reason.empty()) std::cerr << "tumble: body '" << b.name << "': auto picked " << plan.reason << "\n";
+    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) std::cerr << "tumble: warning: " << *w << "\n";
     props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
   }
 
   io::AtomicFile out(o.csv);
-  std::string buf = std::string(io::kTrajectoryHeader) + "\n";
+  std::string buf = std::string(io::kTrajectoryHeader) + kExtraColumns + "\n";
   auto flush = [&] {
     out.write(buf);
     buf.clear();
@@ -110,6 +122,10 @@ int run_simulate(const SimulateOptions& o) {
   }
   flush();
   out.commit();
+  // The step each body actually took (fixed-step methods step on the grid n·dt).
+  for (const auto& p : props)
+    std::cerr << "tumble: body '" << p->model().name << "': " << method_name(p->config().method) << ", "
+              << scene::step_label(p->config(), p->model()) << ", " << p->steps() << " steps\n";
   return kOk;
 }
 

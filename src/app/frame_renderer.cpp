@@ -9,11 +9,12 @@
 namespace tumble::app {
 
 SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
-    : scene_(s), fps_(s.render.output.fps), count_(frame_count(s.simulation.duration, s.render.output.fps)) {
+    : scene_(s), fps_(s.render.output.fps), count_(scene::frame_clock(s, s.render.output.fps).count()) {
   if (last_needed < 0 || last_needed >= count_)
     throw InputError("frame " + std::to_string(last_needed) + " is past the end of the scene (frames 0:" +
                      std::to_string(count_ - 1) + ")");
-  const long frames = s.render.camera.automatic ? count_ : last_needed + 1;
+  // Laid-out views (a plot's value axis) also depend on the whole run.
+  const long frames = s.render.camera.automatic || !s.render.explain.views.empty() ? count_ : last_needed + 1;
   runs_ = simulate_runs(s, frames, fps_);
 }
 
@@ -35,13 +36,14 @@ std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::ve
 
 std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
   std::string out = std::string(io::kTrajectoryHeader) + "\n";
+  const scene::FrameClock clock = scene::frame_clock(scene_, fps_);
   for (long k : ks) {
     for (const Run& run : runs_) {
       if (k >= static_cast<long>(run.frames.size())) continue;  // diverged: the row count shows it
       const auto& states = run.frames[static_cast<std::size_t>(k)];
       for (std::size_t i = 0; i < states.size() && i < scene_.bodies.size(); ++i) {
         const RigidBodyModel& m = scene_.bodies[i].model;
-        io::append_trajectory_row(out, static_cast<double>(k) / fps_, runs_.size() > 1 ? run.label + ":" + m.name : m.name,
+        io::append_trajectory_row(out, clock.time(k), runs_.size() > 1 ? run.label + ":" + m.name : m.name,
                                   m, states[i]);
       }
     }

@@ -24,7 +24,7 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   s.render.output.height = 720;
   s.render.output.msaa = 4;
   const double fps = s.render.output.fps;
-  frames = std::min(frames, frame_count(s.simulation.duration, fps));
+  frames = std::min(frames, scene::frame_clock(s, fps).count());
   std::filesystem::create_directories(out_dir);
   auto ctx = render::create_gl_context(render::default_gl_backend());
   render::Renderer renderer(*ctx, 1280, 720, 4);

@@ -127,7 +127,7 @@ void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   const int count = static_cast<int>(frame.views.size());
   std::vector<PixelRect> rects;
   for (int i = 0; i < count; ++i) {
-    rects.push_back(view_rect(i, count, frame.columns, target_.width(), target_.height()));
+    rects.push_back(view_rect(frame.views[i], i, count, frame.columns, target_.width(), target_.height()));
     if (rects.back().width > 0 && rects.back().height > 0) {
       draw_view(frame.views[i], rects.back(), background);
     }

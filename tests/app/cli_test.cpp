@@ -1,6 +1,8 @@
 // `tumble` end to end: output formats, exit codes, atomic CSV.
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,7 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy";
+constexpr const char* kHeader =
+    "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy,wbx,wby,wbz,axis1_L,axis2_L,axis3_L";
 
 TEST_F(Cli, Version) {
   const Result r = run("--version");
@@ -34,7 +37,7 @@ TEST_F(Cli, SimulateWritesHeaderAndEndsAtDuration) {
   ASSERT_EQ(l.size(), 1u + 301u);  // header + frames k/30 for k = 0..300
   EXPECT_EQ(l[0], kHeader);
   const auto first = split(l[1]), last = split(l.back());
-  ASSERT_EQ(first.size(), 19u);
+  ASSERT_EQ(first.size(), 25u);
   EXPECT_EQ(first[0], "0");
   EXPECT_EQ(first[1], "reference");
   EXPECT_EQ(last[0], "10");
@@ -42,6 +45,23 @@ TEST_F(Cli, SimulateWritesHeaderAndEndsAtDuration) {
   EXPECT_EQ(first[16], "20");
   EXPECT_NEAR(std::stod(first[18]), 100.0002, 1e-10);  // energy ½ Σ I ω²
   EXPECT_NEAR(std::stod(last[18]), 100.0002, 1e-4);    // splitting: bounded energy error
+  // ω in the cloud's axes starts as the scene's omega_body; axis 2 starts
+  // atan2(|(0.01, 0.03)|, 20) from L, axis 1 and 3 close to a right angle.
+  EXPECT_NEAR(std::stod(first[19]), 0.01, 1e-12);
+  EXPECT_NEAR(std::stod(first[20]), 10.0, 1e-12);
+  EXPECT_NEAR(std::stod(first[21]), 0.01, 1e-12);
+  EXPECT_NEAR(std::stod(first[23]), std::atan2(std::hypot(0.01, 0.03), 20.0), 1e-12);
+  EXPECT_NEAR(std::stod(first[22]), std::acos(0.01 / std::sqrt(0.01 * 0.01 + 400 + 0.03 * 0.03)), 1e-12);
+  // The flip: the intermediate axis turns from along L to against it (≈ π) and
+  // back; ω_body's y component changes sign with it.
+  double max_angle2 = 0, min_wby = 1e9;
+  for (std::size_t i = 1; i < l.size(); ++i) {
+    const auto f = split(l[i]);
+    max_angle2 = std::max(max_angle2, std::stod(f[23]));
+    min_wby = std::min(min_wby, std::stod(f[20]));
+  }
+  EXPECT_GT(max_angle2, 3.0);
+  EXPECT_LT(min_wby, -9.0);
   for (const auto& e : fs::directory_iterator(dir_))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "temp file left: " << e.path();
 }
