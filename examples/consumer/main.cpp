@@ -1,7 +1,8 @@
 // Builds a body from eight point masses at the corners of a box, spins it
 // near its intermediate axis and steps it with RK4. Prints figures a reader
 // can check by hand: the principal moments of 8 masses m at (±a, ±b, ±c) are
-// 8m(b²+c²), 8m(a²+c²), 8m(a²+b²), and a free body keeps its energy and L.
+// 8m(b²+c²), 8m(a²+c²), 8m(a²+b²), and a free body keeps its energy and L
+// (RK4 at dt = 1 ms: to ~1e-12 here; the bounds, 1e-9, leave room for round-off).
 #include <cmath>
 #include <cstdio>
 
@@ -35,7 +36,7 @@ int main() {
   const double e0 = tumble::total_energy(model, s0), e1 = tumble::total_energy(model, s);
   const double dL = (s.L - s0.L).norm() / s0.L.norm();
   std::printf("stepped %ld steps to t = %g s\n", p.steps(), p.time());
-  std::printf("relative energy change %.1e (%s)\n", std::abs(e1 - e0) / e0, std::abs(e1 - e0) / e0 < 1e-8 ? "ok" : "BAD");
-  std::printf("relative change of L %.1e (%s)\n", dL, dL < 1e-12 ? "ok" : "BAD");
+  std::printf("relative energy change %.1e (%s)\n", std::abs(e1 - e0) / e0, std::abs(e1 - e0) / e0 < 1e-9 ? "ok" : "BAD");
+  std::printf("relative change of L %.1e (%s)\n", dL, dL < 1e-9 ? "ok" : "BAD");
   return 0;
 }
