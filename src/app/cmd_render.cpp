@@ -258,7 +258,7 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)");
   cmd->add_option("--width", o->width, "Frame width, px");
   cmd->add_option("--height", o->height, "Frame height, px");
-  cmd->add_option("--fps", o->fps, "Frames per second (frame k shows t = k/fps)");
+  cmd->add_option("--fps", o->fps, "Frames per second (frame k shows t = k·time_scale/fps)");
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
   cmd->add_option("--quality", o->quality, "low (no MSAA, CRF 28), medium (2x, CRF 23), high (4x, CRF 18)");
