@@ -10,7 +10,10 @@ PACKAGES=(
   libtomlplusplus-dev libcli11-dev               # scenes, command line
   libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev  # headless GL (OSMesa / EGL), camera maths
   libstb-dev libdeflate-dev fonts-dejavu-core    # PNG in/out, text overlay
+  libassimp-dev                                  # mesh shapes (OBJ, STL, PLY, ...)
   libgtest-dev libgmock-dev libbenchmark-dev     # tests, microbenchmarks
+  assimp-testmodels                              # tests: real and malformed meshes
+  openscad                                       # scenes/: regenerates the shipped STL from .scad
   ffmpeg gnuplot-nox                             # videos, charts (run as programs)
   libbullet-dev libode-dev                       # optional peers for `tumble bench`
   clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)
