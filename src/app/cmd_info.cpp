@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/mesh_info.hpp"
 
 namespace tumble::app {
 
@@ -64,7 +65,14 @@ std::string to_json(const scene::Scene& s) {
       << "      \"principal_moments\": " << vec_json(i.moments) << ",\n"
       << "      \"principal_axes\": " << mat_json(i.axes) << ",\n"
       << "      \"box\": {\"center\": " << vec_json(i.box_center)
-      << ", \"half_extents\": " << vec_json(i.half_extents) << "}\n    }";
+      << ", \"half_extents\": " << vec_json(i.half_extents) << "}";
+    const auto& meshes = s.bodies[k].meshes;
+    if (!meshes.empty()) {
+      o << ",\n      \"meshes\": [";
+      for (std::size_t j = 0; j < meshes.size(); ++j) o << (j ? ",\n        " : "\n        ") << mesh_json(meshes[j], 8);
+      o << "]";
+    }
+    o << "\n    }";
   }
   o << "\n  ]\n}\n";
   return o.str();
@@ -88,6 +96,7 @@ std::string to_text(const scene::Scene& s) {
       << "                    " << row(i.axes.col(2)) << " (3, largest)\n"
       << "  box centre        " << row(i.box_center) << " m\n"
       << "  box half extents  " << row(i.half_extents) << " m (along the principal axes)\n";
+    for (const scene::MeshSource& m : b.meshes) o << mesh_text(m);
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
     o << "  method            " << method_name(plan.config.method) << ", " << scene::step_label(plan.config, b.model);
     o << (plan.reason.empty() ? " (set by the scene)" : " (auto: " + plan.reason + ")") << "\n";

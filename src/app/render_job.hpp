@@ -43,6 +43,7 @@ class FrameBuilder {
   viz::DrawOptions draw_;
   viz::Camera camera_;
   std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
+  std::vector<viz::BodyLook> looks_;        // per body: surfaces, visible particles
 };
 
 /// Number of frames of a run: t_k = k/fps for k = 0 … ⌊duration·fps⌋.
