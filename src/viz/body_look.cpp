@@ -15,9 +15,10 @@ std::vector<std::uint32_t> visible_particles(const ParticleCloud& cloud) {
   Eigen::Vector3d lo = cloud.front().position, hi = lo;
   for (const Particle& p : cloud) lo = lo.cwiseMin(p.position), hi = hi.cwiseMax(p.position);
   // Spacing estimate from the bounding box: at least the lattice spacing of a
-  // box-filling lattice, more for other shapes (a thicker shell, still correct).
+  // box-filling lattice (whose points span (n - 1) spacings: hence 1.1), more
+  // for other shapes (a thicker shell, still correct).
   const Eigen::Vector3d ext = (hi - lo).cwiseMax(1e-12 * (hi - lo).maxCoeff() + 1e-300);
-  const double cell = 1.0001 * std::cbrt(ext.prod() / static_cast<double>(cloud.size()));
+  const double cell = 1.1 * std::cbrt(ext.prod() / static_cast<double>(cloud.size()));
   const Eigen::Vector3d n = (ext / cell).array().floor() + 1;
   auto key = [&](const Eigen::Vector3d& p) {
     const Eigen::Vector3d c = ((p - lo) / cell).array().floor();
