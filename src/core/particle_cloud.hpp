@@ -22,7 +22,9 @@ void append_cloud(ParticleCloud& dst, const ParticleCloud& src, const Eigen::Vec
 
 /// Reads a plain-text cloud: one `x y z m` per line (m, kg), `#` starts a comment.
 /// Throws InputError naming `path:line` and what was expected.
-ParticleCloud read_cloud_file(const std::filesystem::path& path);
+/// Only a regular file of at most `max_bytes` is read (core/input_file.hpp);
+/// a file without particles is an InputError.
+ParticleCloud read_cloud_file(const std::filesystem::path& path, std::size_t max_bytes = std::size_t{1} << 30);
 
 /// Parses the same format from a string; `source_name` labels errors.
 ParticleCloud parse_cloud_text(const std::string& text, const std::string& source_name);
