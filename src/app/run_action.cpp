@@ -1,9 +1,12 @@
+#include <charconv>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace tumble::app {
 
@@ -16,7 +19,13 @@ int run_action(const Action& action) {
   } catch (const Diverged& e) {
     std::cerr << "tumble: " << e.what() << "\n";
     return kDiverged;
+  } catch (const UnreadableFile& e) {  // a directory, device, FIFO or permission denied
+    std::cerr << "tumble: " << e.what() << "\n";
+    return kRuntimeError;
   } catch (const IoError& e) {
+    std::cerr << "tumble: " << e.what() << "\n";
+    return kRuntimeError;
+  } catch (const std::filesystem::filesystem_error& e) {  // a folder we could not create or list
     std::cerr << "tumble: " << e.what() << "\n";
     return kRuntimeError;
   } catch (const std::exception& e) {
@@ -25,8 +34,8 @@ int run_action(const Action& action) {
   }
 }
 
-scene::Scene load_scene_verbose(const std::filesystem::path& path) {
-  scene::Scene s = scene::load_scene(path);
+scene::Scene load_scene_verbose(const std::filesystem::path& path, const std::vector<scene::Override>& overrides) {
+  scene::Scene s = scene::load_scene(path, overrides);
   for (const std::string& w : s.warnings) std::cerr << w << "\n";
   return s;
 }
@@ -35,6 +44,12 @@ std::string format_double(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
+}
+
+std::string format_short(double v) {
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general);
+  return std::string(buf, r.ptr);
 }
 
 std::string json_escape(const std::string& s) {
