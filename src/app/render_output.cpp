@@ -14,10 +14,15 @@ namespace tumble::app {
 
 namespace fs = std::filesystem;
 
+namespace {
+std::string quoted_or_null(const std::string& v) { return v.empty() ? "null" : "\"" + json_escape(v) + "\""; }
+}  // namespace
+
 std::string Manifest::json() const {
   std::ostringstream o;
   o << "{\n  \"tool\": \"tumble\",\n  \"version\": \"" << TUMBLE_VERSION << "\",\n"
-    << "  \"scene\": \"" << json_escape(scene_path) << "\",\n  \"scene_hash\": \"" << scene_hash << "\",\n"
+    << "  \"scene\": \"" << json_escape(scene_path) << "\",\n  \"scene_name\": \"" << json_escape(scene_name)
+    << "\",\n  \"scene_hash\": \"" << scene_hash << "\",\n"
     << "  \"settings_hash\": \"" << settings_hash << "\",\n"
     << "  \"method\": \"" << json_escape(method) << "\",\n  \"step\": \"" << json_escape(step) << "\",\n"
     << "  \"dt\": " << format_double(dt) << ",\n"
@@ -25,7 +30,8 @@ std::string Manifest::json() const {
     << ",\n  \"msaa\": " << msaa << ",\n  \"frame_count\": " << frame_count << ",\n  \"frames\": [" << first
     << ", " << last << "],\n  \"frames_written\": " << written << ",\n  \"gl_backend\": \"" << backend
     << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"gl_renderer\": \""
-    << json_escape(gl_renderer) << "\",\n  \"video\": \"" << json_escape(video) << "\",\n  \"complete\": "
+    << json_escape(gl_renderer) << "\",\n  \"video\": " << quoted_or_null(video)
+    << ",\n  \"video_error\": " << quoted_or_null(video_error) << ",\n  \"replacing\": " << (replacing ? "true" : "false") << ",\n  \"complete\": "
     << (complete ? "true" : "false") << "\n}\n";
   return o.str();
 }
@@ -46,6 +52,16 @@ std::optional<std::string> manifest_field(const std::string& json, const std::st
   if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
   return v;
 }
+
+namespace {
+bool is_video_name(const std::string& name) {
+  const auto ends = [&](const char* ext) {
+    const std::string e(ext);
+    return name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
+  };
+  return ends(".mp4") || ends(".gif");
+}
+}  // namespace
 
 bool is_frame_file(const std::string& name) {
   return name.size() == 16 && name.rfind("frame_", 0) == 0 && name.compare(12, 4, ".png") == 0 &&
@@ -82,6 +98,21 @@ std::string settings_hash(const scene::Scene& s, const std::string& method) {
   return scene::fnv1a_hex(k.str());
 }
 
+namespace {
+
+/// The manifest's scene is this one's file: the same path (after resolving
+/// links and ..) or the same scene name.
+bool same_scene_file(const std::optional<std::string>& path, const std::optional<std::string>& name,
+                     const Manifest& want) {
+  if (name && !name->empty() && *name == want.scene_name) return true;
+  if (!path) return false;
+  std::error_code ec1, ec2;
+  const fs::path a = fs::weakly_canonical(*path, ec1), b = fs::weakly_canonical(want.scene_path, ec2);
+  return !ec1 && !ec2 && a == b;
+}
+
+}  // namespace
+
 Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
   Existing ex;
   const fs::path mpath = dir / "manifest.json";
@@ -97,13 +128,19 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
     const std::string m = buf.str();
     const auto hash = manifest_field(m, "scene_hash"), settings = manifest_field(m, "settings_hash");
     old_video = manifest_field(m, "video");
+    const bool same_file = same_scene_file(manifest_field(m, "scene"), manifest_field(m, "scene_name"), want);
     if (!in || manifest_field(m, "tool") != std::optional<std::string>("tumble") || !hash) {
       problem = "holds a manifest.json that tumble did not write";
-    } else if (*hash != want.scene_hash) {
+    } else if (*hash != want.scene_hash && !same_file) {
       problem = "holds a render of another scene (" + manifest_field(m, "scene").value_or("?") + ", hash " + *hash +
                 "; this scene's hash is " + want.scene_hash + ")";
-    } else if (settings != want.settings_hash) {
-      problem = "holds a render of this scene with other settings (size, fps, msaa, method or dt)";
+    } else if (*hash != want.scene_hash || settings != want.settings_hash ||
+               manifest_field(m, "replacing") == std::optional<std::string>("true")) {
+      // The edit loop: the same scene file, changed (or other settings, or a
+      // replacement that was interrupted). Its frames are replaced, not trusted.
+      ex.replacing = true;
+      if (old_video && *old_video != "null") ex.old_video = *old_video;
+      return ex;
     } else {
       ex.resumable = true;
       if (auto r = manifest_field(m, "frames")) {  // "[A, B]"
@@ -126,11 +163,22 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
   std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
             << " frames)\n";
   for (const fs::path& f : frames) remove_file(f);
-  if (old_video && !old_video->empty() && fs::path(*old_video).filename() == *old_video &&
+  if (old_video && !old_video->empty() && *old_video != "null" && fs::path(*old_video).filename() == *old_video &&
       *old_video != "manifest.json")
     remove_file(dir / *old_video);
   if (has_manifest) remove_file(mpath);
   return {};
+}
+
+void remove_stale(const fs::path& dir, const Existing& ex, long first, long last, const std::string& keep_video) {
+  if (!ex.replacing) return;
+  for (const fs::path& f : list_dir(dir, is_frame_file)) {
+    const long k = std::atol(f.filename().string().c_str() + 6);
+    if (k < first || k > last) remove_file(f);
+  }
+  if (!ex.old_video.empty() && ex.old_video != keep_video && fs::path(ex.old_video).filename() == ex.old_video &&
+      ex.old_video != "manifest.json" && is_video_name(ex.old_video))
+    remove_file(dir / ex.old_video);
 }
 
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) {
