@@ -1,8 +1,14 @@
 // `tumble bench`: the method studies (src/bench), or with --render the frame
 // throughput of the demo.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "bench/bench.hpp"
 #ifdef TUMBLE_HAVE_RENDER
@@ -13,6 +19,15 @@
 namespace tumble::app {
 
 namespace {
+/// Creates `dir` (and parents) now, so an unwritable folder fails before minutes of work.
+void check_output_folder(const std::string& option, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw IoError(option + " " + dir.string() + ": cannot create the folder: " + ec.message());
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw IoError(option + " " + dir.string() + ": cannot write in the folder: " + std::strerror(errno));
+}
+
 struct BenchCliOptions {
   bench::BenchOptions studies;
   bool render = false;
@@ -31,6 +46,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("--scene", o->scene, "With --render: scene (default scenes/dzhanibekov.toml)");
   cmd->callback([o, &action] {
     action = [o]() -> int {
+      check_output_folder("bench -o", o->studies.out_dir);
       if (!o->render) return bench::run(o->studies, std::cout);
 #ifdef TUMBLE_HAVE_RENDER
       const std::filesystem::path scene =
