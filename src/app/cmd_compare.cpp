@@ -51,7 +51,7 @@ void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c) {
                       std::to_string(golden::CompareOptions{}.max_delta) + ")");
   cmd->add_option("--max-fraction", c.max_fraction,
                   "Fail when more than this fraction of pixels differ (default " +
-                      format_double(golden::CompareOptions{}.max_fraction) + ")");
+                      format_short(golden::CompareOptions{}.max_fraction) + ")");
 }
 
 void check_golden_tolerance(const golden::CompareOptions& c) { check_tolerance(c); }

@@ -31,8 +31,8 @@ namespace fs = std::filesystem;
 
 struct RenderOptions {
   std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl;
-  int width = 0, height = 0, msaa = -1;
-  double fps = 0;
+  std::optional<int> width, height, msaa;
+  std::optional<double> fps;
   bool resume = false, force = false;
 };
 
@@ -47,28 +47,46 @@ Quality parse_quality(const std::string& q) {
   throw InputError("--quality: expected low, medium or high, found '" + q + "'");
 }
 
-void apply_overrides(const RenderOptions& o, scene::Scene& s) {
-  scene::OutputConfig& out = s.render.output;
-  if (o.width) out.width = o.width;
-  if (o.height) out.height = o.height;
-  for (int v : {out.width, out.height})
-    if (v < 16 || v > 16384) throw InputError("--width/--height: expected 16..16384 px, found " + std::to_string(v));
-  if (o.fps != 0) {
-    if (!(o.fps > 0) || !std::isfinite(o.fps)) throw InputError("--fps: expected a number > 0");
-    out.fps = o.fps;
+render::GlBackend parse_backend_option(const std::string& gl) {
+  const std::string where = gl.empty() ? "TUMBLE_GL" : "--gl";
+  try {
+    return gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(gl);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where + ": " + e.what());
   }
+}
+
+/// The options that are scene keys go into the scene before it is validated,
+/// so the loader's checks (sizes, frame cap, names) cover them too.
+std::vector<scene::Override> scene_overrides(const RenderOptions& o) {
+  std::vector<scene::Override> v;
+  if (o.width) v.push_back({"--width", "output.width", static_cast<long long>(*o.width)});
+  if (o.height) v.push_back({"--height", "output.height", static_cast<long long>(*o.height)});
+  if (o.fps) v.push_back({"--fps", "output.fps", *o.fps});
+  if (o.msaa) v.push_back({"--msaa", "output.msaa", static_cast<long long>(*o.msaa)});
+  if (!o.video.empty()) v.push_back({"--video", "output.video", o.video});
+  return v;
+}
+
+/// The run configuration, every option checked before any work.
+struct RenderPlan {
+  scene::Scene scene;
+  Quality quality;
+  render::GlBackend backend;
+  long count;
+};
+
+RenderPlan plan_render(const RenderOptions& o) {
   const Quality q = parse_quality(o.quality);
-  if (o.quality != "high" || o.msaa < 0) out.msaa = std::min(out.msaa, q.msaa);
-  if (o.msaa >= 0) {
-    if (o.msaa != 0 && o.msaa != 2 && o.msaa != 4) throw InputError("--msaa: expected 0, 2 or 4");
-    out.msaa = o.msaa;
-  }
-  if (!o.video.empty()) {
-    if (o.video == "mp4") out.video = scene::VideoFormat::mp4;
-    else if (o.video == "gif") out.video = scene::VideoFormat::gif;
-    else if (o.video == "none") out.video = scene::VideoFormat::none;
-    else throw InputError("--video: expected mp4, gif or none, found '" + o.video + "'");
-  }
+  if (o.progress != "auto" && o.progress != "none")
+    throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
+  const render::GlBackend backend = parse_backend_option(o.gl);
+  scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  scene::OutputConfig& out = s.render.output;
+  if (o.quality != "high" || !o.msaa) out.msaa = std::min(out.msaa, q.msaa);
+  if (o.msaa) out.msaa = *o.msaa;
+  const long count = scene::frame_clock(s, out.fps).count();
+  return {std::move(s), q, backend, count};
 }
 
 // ---- Interruption -----------------------------------------------------------
@@ -114,11 +132,13 @@ std::string quote_arg(const std::string& a) {
 }
 
 int run_render(const RenderOptions& o) {
-  scene::Scene s = load_scene_verbose(o.scene);
-  apply_overrides(o, s);
+  RenderPlan plan = plan_render(o);
+  const scene::Scene& s = plan.scene;
   const scene::OutputConfig& out = s.render.output;
   const double fps = out.fps;
-  const long count = scene::frame_clock(s, fps).count();
+  const long count = plan.count;
+  const std::pair<long, long> asked =
+      o.frames.empty() ? std::pair<long, long>{0, count - 1} : parse_frame_range(o.frames, count);
   const fs::path dir = o.out_dir.empty() ? fs::path("out") / s.name : fs::path(o.out_dir);
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -127,6 +147,7 @@ int run_render(const RenderOptions& o) {
 
   Manifest man;
   man.scene_path = s.path.string();
+  man.scene_name = s.name;
   man.scene_hash = s.content_hash;
   {
     std::vector<std::string> labels;
@@ -145,12 +166,16 @@ int run_render(const RenderOptions& o) {
     man.settings_hash = settings_hash(s, key);
   }
   const Existing existing = inspect_output(dir, man, o.force);
-  std::pair<long, long> range{0, count - 1};
-  if (!o.frames.empty()) range = parse_frame_range(o.frames, count);
-  else if (o.resume && existing.resumable && existing.first >= 0 && existing.last < count && existing.first <= existing.last)
+  std::pair<long, long> range = asked;
+  if (o.frames.empty() && o.resume && existing.resumable && existing.first >= 0 && existing.last < count &&
+      existing.first <= existing.last)
     range = {existing.first, existing.last};  // continue the range that was being rendered
   const auto [first, last] = range;
   const bool resume = o.resume && existing.resumable;
+  man.replacing = existing.replacing;
+  if (existing.replacing)
+    std::cerr << "tumble: replacing the earlier render of " << s.name << " in " << dir.string()
+              << " (scene or settings changed): frames are overwritten one by one, the rest removed at the end\n";
   // A process killed mid-write leaves its temp files; they are never valid output.
   for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
 
@@ -161,7 +186,7 @@ int run_render(const RenderOptions& o) {
   long good = count;  // frames every run could reach (single run: stop at divergence)
   if (runs.size() == 1) good = static_cast<long>(runs[0].frames.size());
 
-  const render::GlBackend backend = o.gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(o.gl);
+  const render::GlBackend backend = plan.backend;
   auto ctx = render::create_gl_context(backend);
   render::Renderer renderer(*ctx, out.width, out.height, out.msaa);
 
@@ -182,7 +207,9 @@ int run_render(const RenderOptions& o) {
   // From here on, files change: Ctrl-C / SIGTERM stop between frames instead
   // of killing the process, so the manifest tells what is on disk.
   const StopSignals stop;
+  long drawn = 0;  // frames this run submitted (whole on disk once the encoder is flushed)
   auto on_disk = [&] {
+    if (man.replacing) return drawn;  // the earlier render's frames are not ours
     long n = 0;
     for (long k = first; k <= last; ++k) n += fs::exists(io::frame_path(dir, k), ec) ? 1 : 0;
     return n;
@@ -204,6 +231,7 @@ int run_render(const RenderOptions& o) {
         io::Image img = encoder.recycle();
         renderer.render(builder.build(k), img);
         encoder.submit(io::frame_path(dir, k), std::move(img));
+        ++drawn;
       }
       progress.update(k - first + 1);
     }
@@ -234,13 +262,32 @@ int run_render(const RenderOptions& o) {
               << "tumble: kept " << man.written << " frames in " << dir.string() << "\n";
     return kDiverged;
   }
+  // Every new frame exists: the earlier render's other frames can go (before
+  // the encode, which would read a stale frame past the last as one of ours).
+  remove_stale(dir, existing, first, last,
+               out.video == scene::VideoFormat::none ? std::string() : video_file_name(s, out.video));
+  man.replacing = false;
   const bool full = first == 0 && last == count - 1;
   if (full && out.video != scene::VideoFormat::none) {
+    // The video is part of a complete render: until it exists the manifest says
+    // "complete": false, and --resume (every frame already on disk) makes it.
     const fs::path video = dir / video_file_name(s, out.video);
-    const std::string err = encode_video(dir, static_cast<int>(std::lround(fps)), out.video,
-                                         parse_quality(o.quality).crf, video);
-    if (err.empty()) man.video = video.filename().string();
-    else std::cerr << "tumble: " << err << "\n";
+    if (o.progress != "none") std::cerr << "tumble: encoding " << video.filename().string() << " from " << count << " frames\n";
+    Progress encoding(count, o.progress != "none");
+    const VideoResult v = encode_video(
+        dir, static_cast<int>(std::lround(fps)), out.video, plan.quality.crf, video, [&] { return stop.received(); },
+        [&](long n) { encoding.update(std::min(n, count)); });
+    encoding.finish();
+    if (!v.ok()) {
+      man.complete = false;
+      man.video_error = v.message;
+      atomic_write_file(dir / "manifest.json", man.json());
+      std::cerr << "tumble: " << v.message << "\n"
+                << "tumble: all " << count << " frames are in " << dir.string() << "; make the video with: tumble render "
+                << quote_arg(o.scene) << " -o " << quote_arg(dir.string()) << " --resume\n";
+      return v.status == VideoResult::interrupted ? 128 + v.signal : kRuntimeError;
+    }
+    man.video = video.filename().string();
   }
   io::atomic_write_file(dir / "manifest.json", man.json());
   std::cout << "rendered frames " << first << ".." << last << " of " << count << " into " << dir.string()

@@ -1,5 +1,10 @@
 // `tumble simulate SCENE --csv FILE`: one CSV row per body per sample.
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -38,28 +43,23 @@ void append_row(std::string& out, double t, const RigidBodyModel& m, const BodyS
   out += '\n';
 }
 
-void apply_overrides(const SimulateOptions& o, scene::Scene& s) {
-  scene::SimulationConfig& sim = s.simulation;
+/// --method, --dt and --duration are scene keys: they go into the scene before
+/// it is validated, so the loader's checks (dt <= duration, step cap, auto
+/// with a tolerance) cover them and name the option.
+std::vector<scene::Override> scene_overrides(const SimulateOptions& o) {
+  std::vector<scene::Override> v;
   if (o.method_opt->count()) {
-    if (o.method == "auto") sim.method.reset();
-    else if (auto m = parse_method(o.method)) sim.method = *m, sim.tolerance.reset();  // the command line wins
-    else throw InputError("--method: expected auto or one of " + method_list() + ", found \"" + o.method + "\"");
+    v.push_back({"--method", "simulation.method", o.method});
+    if (o.method != "auto") v.push_back({"--method", "simulation.tolerance", {}});  // the command line wins
   }
-  if (o.dt_opt->count()) {
-    if (!(o.dt > 0) || !std::isfinite(o.dt)) throw InputError("--dt: expected a finite number > 0 (s), found " + format_double(o.dt));
-    if (!sim.method && sim.tolerance)
-      throw InputError("--dt: method \"auto\" with a tolerance picks dt itself; add --method NAME to set dt");
-    sim.dt = o.dt;
-  }
-  if (o.duration_opt->count()) {
-    if (!(o.duration > 0) || !std::isfinite(o.duration))
-      throw InputError("--duration: expected a finite number > 0 (s), found " + format_double(o.duration));
-    sim.duration = o.duration;
-  }
-  if (sim.dt > sim.duration)
-    throw InputError("dt (" + format_double(sim.dt) + " s) must be <= duration (" + format_double(sim.duration) + " s)");
-  if (sim.duration / sim.dt > scene::kMaxSteps)
-    throw InputError("duration / dt = " + format_double(sim.duration / sim.dt) + " steps exceeds the cap of 1e9; raise dt");
+  if (o.dt_opt->count()) v.push_back({"--dt", "simulation.dt", o.dt});
+  if (o.duration_opt->count()) v.push_back({"--duration", "simulation.duration", o.duration});
+  return v;
+}
+
+/// What only `simulate` has: --every and the row cap.
+void check_sampling(const SimulateOptions& o, const scene::Scene& s) {
+  const scene::SimulationConfig& sim = s.simulation;
   if (o.every_opt->count() && !sim.method && sim.tolerance)
     throw InputError("--every counts steps of the scene's dt, but method \"auto\" with a tolerance picks each body's dt; "
                      "drop --every (rows at the scene's fps) or add --method NAME");
@@ -68,13 +68,26 @@ void apply_overrides(const SimulateOptions& o, scene::Scene& s) {
                                               : sim.duration * sim.fps;
   if (samples * static_cast<double>(s.bodies.size()) > kMaxRows)
     throw InputError("the run would write more than 1e8 rows; raise --every or lower the scene's fps");
-  if (!o.every_opt->count() && samples > scene::kMaxFrames)
-    throw InputError("duration × fps exceeds the frame cap of 1e6");
+}
+
+/// --csv must name a file in an existing folder: found now, not after the run
+/// (and the message names the file asked for, not its temp name).
+void check_csv_path(const std::string& csv) {
+  const std::filesystem::path p(csv);
+  const std::filesystem::path parent = p.parent_path().empty() ? "." : p.parent_path();
+  std::error_code ec;
+  if (p.filename().empty() || std::filesystem::is_directory(p, ec))
+    throw InputError("--csv " + csv + ": expected a file name, found a folder");
+  if (!std::filesystem::is_directory(parent, ec))
+    throw IoError("--csv " + csv + ": cannot write there: folder '" + parent.string() + "' does not exist");
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw IoError("--csv " + csv + ": cannot write in folder '" + parent.string() + "': " + std::strerror(errno));
 }
 
 int run_simulate(const SimulateOptions& o) {
-  scene::Scene s = load_scene_verbose(o.scene);
-  apply_overrides(o, s);
+  check_csv_path(o.csv);
+  scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  check_sampling(o, s);
   std::vector<std::unique_ptr<Propagator>> props;
   for (const scene::Body& b : s.bodies) {
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);

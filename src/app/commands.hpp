@@ -27,9 +27,12 @@ void add_bench_command(CLI::App& app, Action& action);
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);
 
-/// load_scene plus its warnings printed to stderr.
-scene::Scene load_scene_verbose(const std::filesystem::path& path);
+/// load_scene (with command-line overrides) plus its warnings printed to stderr.
+scene::Scene load_scene_verbose(const std::filesystem::path& path, const std::vector<scene::Override>& overrides = {});
 
 using io::format_double;
+
+/// The shortest text that reads back as `v` (0.0005, not 0.00050000000000000001): for help texts.
+std::string format_short(double v);
 
 }  // namespace tumble::app

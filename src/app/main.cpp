@@ -1,7 +1,13 @@
 // tumble: simulate free rigid bodies given as particle clouds.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <iostream>
+#include <string>
+#include <vector>
+
 #include "app/commands.hpp"
+#include "scene/reader.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tumble: free rigid bodies from particle clouds", "tumble"};
@@ -16,6 +22,23 @@ int main(int argc, char** argv) {
   tumble::app::add_golden_command(app, action);
 #endif
   tumble::app::add_bench_command(app, action);
+  if (argc < 2) {  // no command: say what there is
+    std::cout << app.help();
+    return tumble::app::kOk;
+  }
+  if (const std::string first = argv[1]; !first.empty() && first[0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), first) == names.end()) {
+      const std::vector<std::string_view> views(names.begin(), names.end());
+      const std::string hint = tumble::scene::detail::closest(first, views);
+      std::cerr << "tumble: unknown command '" << first << "'"
+                << (hint.empty() ? std::string() : "; did you mean '" + hint + "'?") << "\ncommands:";
+      for (const std::string& n : names) std::cerr << " " << n;
+      std::cerr << "\nRun with --help for more information.\n";
+      return tumble::app::kInputError;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -33,7 +33,10 @@ std::pair<long, long> parse_frame_range(const std::string& spec, long count) {
     return v;
   };
   const long a = num(spec.substr(0, colon), 0), b = num(spec.substr(colon + 1), count - 1);
-  if (a > b || b >= count)
+  if (a > b)
+    throw InputError("--frames " + spec + ": the first frame (" + std::to_string(a) + ") is after the last (" +
+                     std::to_string(b) + "); expected A <= B");
+  if (b >= count)
     throw InputError("--frames " + spec + ": the scene has frames 0:" + std::to_string(count - 1));
   return {a, b};
 }

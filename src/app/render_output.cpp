@@ -15,12 +15,14 @@ namespace tumble::app {
 namespace fs = std::filesystem;
 
 std::string Manifest::json() const {
+  auto or_null = [](const std::string& v) { return v.empty() ? io::Json(nullptr) : io::Json(v); };
   return io::json_text(io::Json{
-      {"tool", "tumble"}, {"version", TUMBLE_VERSION}, {"scene", scene_path}, {"scene_hash", scene_hash},
-      {"settings_hash", settings_hash}, {"method", method}, {"step", step}, {"dt", dt}, {"fps", fps},
-      {"width", width}, {"height", height}, {"msaa", msaa}, {"frame_count", frame_count},
+      {"tool", "tumble"}, {"version", TUMBLE_VERSION}, {"scene", scene_path}, {"scene_name", scene_name},
+      {"scene_hash", scene_hash}, {"settings_hash", settings_hash}, {"method", method}, {"step", step}, {"dt", dt},
+      {"fps", fps}, {"width", width}, {"height", height}, {"msaa", msaa}, {"frame_count", frame_count},
       {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
-      {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", video}, {"complete", complete}});
+      {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", or_null(video)},
+      {"video_error", or_null(video_error)}, {"replacing", replacing}, {"complete", complete}});
 }
 
 namespace {
@@ -64,6 +66,28 @@ std::string settings_hash(const scene::Scene& s, const std::string& method) {
   return scene::fnv1a_hex(k.str());
 }
 
+namespace {
+
+bool is_video_name(const std::string& name) {
+  const auto ends = [&](std::string_view e) {
+    return name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
+  };
+  return ends(".mp4") || ends(".gif");
+}
+
+/// The manifest's scene is this one's file: the same path (after resolving
+/// links and ..) or the same scene name.
+bool same_scene_file(const std::optional<std::string>& path, const std::optional<std::string>& name,
+                     const Manifest& want) {
+  if (name && !name->empty() && *name == want.scene_name) return true;
+  if (!path) return false;
+  std::error_code ec1, ec2;
+  const fs::path a = fs::weakly_canonical(*path, ec1), b = fs::weakly_canonical(want.scene_path, ec2);
+  return !ec1 && !ec2 && a == b;
+}
+
+}  // namespace
+
 Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
   Existing ex;
   const fs::path mpath = dir / "manifest.json";
@@ -76,13 +100,19 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
     const std::optional<io::Json> m = io::read_json_file(mpath);
     const std::optional<std::string> hash = m ? string_field(*m, "scene_hash") : std::nullopt;
     if (m) old_video = string_field(*m, "video");
+    const bool same_file = m && same_scene_file(string_field(*m, "scene"), string_field(*m, "scene_name"), want);
+    const bool was_replacing = m && m->contains("replacing") && (*m)["replacing"] == true;
     if (!m || string_field(*m, "tool") != std::optional<std::string>("tumble") || !hash) {
       problem = "holds a manifest.json that tumble did not write";
-    } else if (*hash != want.scene_hash) {
+    } else if (*hash != want.scene_hash && !same_file) {
       problem = "holds a render of another scene (" + string_field(*m, "scene").value_or("?") + ", hash " + *hash +
                 "; this scene's hash is " + want.scene_hash + ")";
-    } else if (string_field(*m, "settings_hash") != want.settings_hash) {
-      problem = "holds a render of this scene with other settings (size, fps, msaa, method or dt)";
+    } else if (*hash != want.scene_hash || string_field(*m, "settings_hash") != want.settings_hash || was_replacing) {
+      // The edit loop: the same scene file, changed (or other settings, or a
+      // replacement that was interrupted). Its frames are replaced, not trusted.
+      ex.replacing = true;
+      if (old_video) ex.old_video = *old_video;
+      return ex;
     } else {
       ex.resumable = true;
       const auto r = m->find("frames");  // [A, B]
@@ -102,11 +132,22 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
   std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
             << " frames)\n";
   for (const fs::path& f : frames) remove_file(f);
-  if (old_video && !old_video->empty() && fs::path(*old_video).filename() == *old_video &&
+  if (old_video && !old_video->empty() && *old_video != "null" && fs::path(*old_video).filename() == *old_video &&
       *old_video != "manifest.json")
     remove_file(dir / *old_video);
   if (has_manifest) remove_file(mpath);
   return {};
+}
+
+void remove_stale(const fs::path& dir, const Existing& ex, long first, long last, const std::string& keep_video) {
+  if (!ex.replacing) return;
+  for (const fs::path& f : list_dir(dir, io::is_frame_file)) {
+    const long k = std::atol(f.filename().string().c_str() + 6);
+    if (k < first || k > last) remove_file(f);
+  }
+  if (!ex.old_video.empty() && ex.old_video != keep_video && fs::path(ex.old_video).filename() == ex.old_video &&
+      ex.old_video != "manifest.json" && is_video_name(ex.old_video))
+    remove_file(dir / ex.old_video);
 }
 
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) {

@@ -13,11 +13,16 @@ namespace tumble::app {
 
 /// manifest.json: what was rendered, how, and whether it finished.
 struct Manifest {
-  std::string scene_path, scene_hash, settings_hash, method, step, gl_version, gl_renderer, backend, video;
+  std::string scene_path, scene_name, scene_hash, settings_hash, method, step, gl_version, gl_renderer, backend;
+  std::string video;        ///< file name in the folder; empty = none made ("video": null)
+  std::string video_error;  ///< why a wanted video is missing (ffmpeg missing, failed, interrupted)
   double dt = 0, fps = 0;  // dt: the scene's; `step` says what each run really used
   int width = 0, height = 0, msaa = 0;
   long frame_count = 0, first = 0, last = -1, written = 0;
   bool complete = false;
+  /// Replacing an earlier render of this scene (edited): until the last frame
+  /// is written, the folder mixes its frames with ours, so --resume trusts none.
+  bool replacing = false;
 
   std::string json() const;  ///< the file's text
 };
@@ -36,10 +41,19 @@ std::string settings_hash(const scene::Scene& s, const std::string& method);
 struct Existing {
   bool resumable = false;       ///< a manifest of this scene with these settings
   long first = 0, last = -1;    ///< its frame range
+  /// An earlier render of the same scene file (same path or name), edited or
+  /// with other settings: its frames are overwritten one by one (each
+  /// atomically) and the rest removed once ours exist (remove_stale).
+  bool replacing = false;
+  std::string old_video;        ///< its video file name, if any
 };
-/// Refuses (InputError) to write over another render unless `force`; with
-/// `force`, removes that render's frames, video and manifest first.
+/// Refuses (InputError) to write over another scene's render unless `force`;
+/// with `force`, removes that render's frames, video and manifest first.
 Existing inspect_output(const std::filesystem::path& dir, const Manifest& want, bool force);
+/// After a replacing render wrote frames first..last: removes the earlier
+/// render's other frames and its video (unless it is `keep_video`).
+void remove_stale(const std::filesystem::path& dir, const Existing& ex, long first, long last,
+                  const std::string& keep_video);
 /// "<scene name>.mp4" / ".gif", never a path out of the folder.
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f);
 

@@ -1,7 +1,10 @@
+#include <charconv>
+#include <filesystem>
 #include <iostream>
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace tumble::app {
@@ -15,7 +18,13 @@ int run_action(const Action& action) {
   } catch (const Diverged& e) {
     std::cerr << "tumble: " << e.what() << "\n";
     return kDiverged;
+  } catch (const UnreadableFile& e) {  // a directory, device, FIFO or permission denied
+    std::cerr << "tumble: " << e.what() << "\n";
+    return kRuntimeError;
   } catch (const io::IoError& e) {
+    std::cerr << "tumble: " << e.what() << "\n";
+    return kRuntimeError;
+  } catch (const std::filesystem::filesystem_error& e) {  // a folder we could not create or list
     std::cerr << "tumble: " << e.what() << "\n";
     return kRuntimeError;
   } catch (const std::exception& e) {
@@ -24,10 +33,16 @@ int run_action(const Action& action) {
   }
 }
 
-scene::Scene load_scene_verbose(const std::filesystem::path& path) {
-  scene::Scene s = scene::load_scene(path);
+scene::Scene load_scene_verbose(const std::filesystem::path& path, const std::vector<scene::Override>& overrides) {
+  scene::Scene s = scene::load_scene(path, overrides);
   for (const std::string& w : s.warnings) std::cerr << w << "\n";
   return s;
+}
+
+std::string format_short(double v) {
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general);
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace tumble::app

@@ -1,7 +1,9 @@
 // Videos from PNG frame sequences, by running ffmpeg as a program.
 #pragma once
 
+#include <csignal>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "scene/scene.hpp"
@@ -13,11 +15,26 @@ using scene::VideoFormat;
 /// True when an `ffmpeg` executable is on PATH.
 bool ffmpeg_available();
 
+/// How an encode ended. `signal` is SIGINT/SIGTERM when it was interrupted
+/// (tumble asked to stop, or ffmpeg itself got the terminal's Ctrl-C).
+struct VideoResult {
+  enum Status { made, not_wanted, missing_ffmpeg, failed, interrupted } status = made;
+  int signal = 0;
+  std::string message;  ///< what went wrong, empty when made
+  bool ok() const { return status == made || status == not_wanted; }
+};
+
+/// Polled while ffmpeg runs: returns the stop signal received (0 = none).
+using StopPoll = std::function<int()>;
+/// Called with the number of frames encoded so far.
+using EncodeProgress = std::function<void(long)>;
+
 /// Encodes DIR/frame_%06d.png (frames 0..count-1) at `fps` into `output`
 /// (written to a temporary name, then renamed). H.264 yuv420p, CRF `crf`,
 /// +faststart, padded to even dimensions; GIF with palettegen/paletteuse.
-/// Returns an empty string on success, else what went wrong.
-std::string encode_video(const std::filesystem::path& frame_dir, int fps, VideoFormat format, int crf,
-                         const std::filesystem::path& output);
+/// A stop signal seen by `stop` kills ffmpeg and removes its temp file.
+VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoFormat format, int crf,
+                         const std::filesystem::path& output, const StopPoll& stop = {},
+                         const EncodeProgress& progress = {});
 
 }  // namespace tumble::app

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace tumble {
 
@@ -109,12 +110,14 @@ ParticleCloud parse_cloud_text(const std::string& text, const std::string& sourc
   return cloud;
 }
 
-ParticleCloud read_cloud_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open cloud file (does it exist? paths are relative to the scene file)");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_cloud_text(ss.str(), path.string());
+ParticleCloud read_cloud_file(const std::filesystem::path& path, std::size_t max_bytes) {
+  const std::string text = read_input_file(path, max_bytes, "cloud file");
+  ParticleCloud c = parse_cloud_text(text, path.string());
+  if (c.empty())
+    throw InputError(path.string() + ": cloud file holds no particles (" +
+                     (text.empty() ? std::string("it is empty") : "only comments and blank lines") +
+                     "); expected one `x y z m` per line");
+  return c;
 }
 
 }  // namespace tumble

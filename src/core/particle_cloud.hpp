@@ -24,7 +24,9 @@ void append_cloud(ParticleCloud& dst, const ParticleCloud& src, const Eigen::Vec
 /// or CSV (commas) and/or a header line naming the columns x, y, z, m in any order
 /// (other named columns are ignored).
 /// Throws InputError naming `path:line` and what was expected.
-ParticleCloud read_cloud_file(const std::filesystem::path& path);
+/// Only a regular file of at most `max_bytes` is read (core/input_file.hpp);
+/// a file without particles is an InputError.
+ParticleCloud read_cloud_file(const std::filesystem::path& path, std::size_t max_bytes = std::size_t{1} << 30);
 
 /// Parses the same format from a string; `source_name` labels errors.
 ParticleCloud parse_cloud_text(const std::string& text, const std::string& source_name);

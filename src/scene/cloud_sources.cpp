@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "scene/internal.hpp"
 
 namespace tumble::scene::detail {
@@ -185,21 +186,19 @@ void read_cloud_file_source(TableReader& r, LoadContext& ctx, const Eigen::Vecto
   if (!file) return;
   const std::filesystem::path p = ctx.base_dir / *file;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec)) {
+  if (!std::filesystem::exists(p, ec) && !ec) {
     r.error("cloud", "expected a cloud file (x y z m per line) relative to the scene, found no file at '" +
                          p.string() + "'");
     return;
   }
-  // ~10 bytes per particle at least: refuse files that cannot fit the cap.
-  if (std::filesystem::file_size(p, ec) > 64 * kMaxParticles) {
-    r.error("cloud", "file '" + p.string() + "' is too large for the particle cap");
-    return;
-  }
   try {
-    const ParticleCloud c = read_cloud_file(p);
+    // ~10 bytes per particle at least: a larger file cannot fit the cap.
+    const ParticleCloud c = read_cloud_file(p, 64 * kMaxParticles);
     if (reserve(ctx, r, "cloud", static_cast<double>(c.size()))) append_cloud(out, c, offset);
   } catch (const InputError& e) {
     r.error("cloud", e.what());
+  } catch (const UnreadableFile& e) {  // directory, FIFO, device, permission: an I/O error, exit 1
+    throw UnreadableFile(ctx.diag.located(r.node("cloud")->source(), r.key_path("cloud"), e.what()));
   }
 }
 

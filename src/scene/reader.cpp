@@ -39,6 +39,8 @@ Diagnostic Diagnostics::make(const toml::source_region& at, std::string key, std
   dg.file = file_;
   dg.line = at.begin.line ? static_cast<int>(at.begin.line) : 1;
   dg.column = at.begin.column ? static_cast<int>(at.begin.column) : 1;
+  for (const auto& [k, option] : options_)
+    if (k == key && !at.begin.line) dg.option = option;  // a value the file never held
   dg.key = std::move(key);
   dg.message = std::move(message);
   return dg;

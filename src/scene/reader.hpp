@@ -18,7 +18,10 @@ namespace tumble::scene::detail {
 /// Collects diagnostics of one load; caps them so a huge broken array stays readable.
 class Diagnostics {
  public:
-  explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+  /// `options`: scene keys set on the command line, with the option that set
+  /// each; errors at those keys name the option instead of a file position.
+  explicit Diagnostics(std::string file, std::vector<std::pair<std::string, std::string>> options = {})
+      : file_(std::move(file)), options_(std::move(options)) {}
   void error(const toml::source_region& at, std::string key, std::string message);
   void warning(const toml::source_region& at, std::string key, std::string message);
   bool ok() const { return errors_.empty(); }
@@ -27,10 +30,15 @@ class Diagnostics {
   std::vector<Diagnostic> take_errors();
   std::vector<std::string> take_warnings() { return std::move(warnings_); }
   const std::string& file() const { return file_; }
+  /// "file:line:col: error: key: message", for errors thrown at once (not collected).
+  std::string located(const toml::source_region& at, std::string key, std::string message) const {
+    return make(at, std::move(key), std::move(message)).str();
+  }
 
  private:
   Diagnostic make(const toml::source_region& at, std::string key, std::string message) const;
   std::string file_;
+  std::vector<std::pair<std::string, std::string>> options_;
   std::vector<Diagnostic> errors_;
   std::vector<std::string> warnings_;
 };

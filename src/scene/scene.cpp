@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/input_file.hpp"
+
 #include "scene/internal.hpp"
 
 namespace tumble::scene {
@@ -67,8 +69,36 @@ void read_forces(TableReader& root, detail::LoadContext& ctx, Scene& s) {
   }
 }
 
-Scene load_impl(std::string_view text, const std::string& source_name, const std::filesystem::path& base_dir) {
-  detail::Diagnostics diag(source_name);
+// Puts each override into the parsed document, creating tables on the way.
+// A path through a non-table is left alone: the loader reports that key.
+void apply_overrides(toml::table& root, const std::vector<Override>& overrides) {
+  for (const Override& o : overrides) {
+    toml::table* t = &root;
+    std::string_view rest = o.key;
+    for (auto dot = rest.find('.'); t && dot != std::string_view::npos; dot = rest.find('.')) {
+      const std::string part(rest.substr(0, dot));
+      if (!t->contains(part)) t->insert(part, toml::table{});
+      t = t->get(part)->as_table();
+      rest.remove_prefix(dot + 1);
+    }
+    if (!t) continue;
+    const std::string leaf(rest);
+    std::visit(
+        [&](const auto& v) {
+          using V = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, std::monostate>) t->erase(leaf);
+          else if constexpr (std::is_same_v<V, long long>) t->insert_or_assign(leaf, static_cast<int64_t>(v));
+          else t->insert_or_assign(leaf, v);
+        },
+        o.value);
+  }
+}
+
+Scene load_impl(std::string_view text, const std::string& source_name, const std::filesystem::path& base_dir,
+                const std::vector<Override>& overrides) {
+  std::vector<std::pair<std::string, std::string>> options;  // key -> option, for messages
+  for (const Override& o : overrides) options.emplace_back(o.key, o.option);
+  detail::Diagnostics diag(source_name, std::move(options));
   toml::table root;
   try {
     root = toml::parse(text, source_name);
@@ -76,6 +106,7 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
     diag.error(e.source(), "", "TOML syntax: " + std::string(e.description()));
     throw SceneError(diag.take_errors());
   }
+  apply_overrides(root, overrides);
   Scene s;
   s.content_hash = fnv1a_hex(text);
   detail::LoadContext ctx{diag, base_dir, 0, {}};
@@ -108,7 +139,8 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
 }  // namespace
 
 std::string Diagnostic::str() const {
-  std::string out = file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: ";
+  std::string out = option.empty() ? file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: "
+                                   : option + ": error: ";
   if (!key.empty()) out += key + ": ";
   return out + message;
 }
@@ -171,19 +203,16 @@ std::string step_label(const StepConfig& c, const RigidBodyModel& m) {
   return buf;
 }
 
-Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  Scene s = load_impl(buf.str(), path.string(), path.parent_path());
+Scene load_scene(const std::filesystem::path& path, const std::vector<Override>& overrides) {
+  const std::string text = read_input_file(path, kMaxSceneBytes, "scene file");
+  Scene s = load_impl(text, path.string(), path.parent_path(), overrides);
   s.path = path;
   return s;
 }
 
 Scene load_scene_from_string(std::string_view text, std::string_view source_name,
-                             const std::filesystem::path& base_dir) {
-  return load_impl(text, std::string(source_name), base_dir);
+                             const std::filesystem::path& base_dir, const std::vector<Override>& overrides) {
+  return load_impl(text, std::string(source_name), base_dir, overrides);
 }
 
 std::vector<double> sample_times(double duration, double fps) {

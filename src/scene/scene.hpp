@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Core>
@@ -158,10 +159,11 @@ struct Scene {
 /// One problem found while loading, located in the scene file.
 struct Diagnostic {
   std::string file;
+  std::string option;   ///< the command-line option that set the value ("--fps"), if one did
   int line = 0, column = 0;
   std::string key;      ///< e.g. "bodies[0].shape.size"; empty for syntax errors
   std::string message;  ///< what was expected and what was found
-  std::string str() const;  ///< "file:line:col: error: key: message"
+  std::string str() const;  ///< "file:line:col: error: key: message", or "--option: error: key: message"
 };
 
 /// All errors of one load, reported together. An InputError, so exit code 2.
@@ -174,13 +176,29 @@ class SceneError : public InputError {
   std::vector<Diagnostic> diags_;
 };
 
+/// A command-line option that replaces (or, with no value, removes) a scene
+/// key before validation, so it is checked by the same code as the file and
+/// its errors name the option. `key` is a dotted path: "output.width".
+struct Override {
+  std::string option;  ///< as the user typed it: "--width"
+  std::string key;
+  std::variant<std::monostate, long long, double, std::string> value;
+};
+
+/// Largest scene file read, bytes (checked before reading).
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{256} << 20;
+
 /// Reads and validates a scene; cloud files resolve relative to its folder.
-/// Throws SceneError (every problem found) or InputError (file unreadable).
-Scene load_scene(const std::filesystem::path& path);
+/// Only a regular file is read (core/input_file.hpp). Throws SceneError (every
+/// problem found), InputError (no such file) or UnreadableFile (a directory,
+/// a device, a FIFO, permission denied). `content_hash` covers the file
+/// only; the overrides show in the validated values.
+Scene load_scene(const std::filesystem::path& path, const std::vector<Override>& overrides = {});
 
 /// Same from text; `source_name` labels errors, `base_dir` resolves cloud files.
 Scene load_scene_from_string(std::string_view text, std::string_view source_name,
-                             const std::filesystem::path& base_dir = {});
+                             const std::filesystem::path& base_dir = {},
+                             const std::vector<Override>& overrides = {});
 
 /// Sample times k/fps for k = 0, 1, … up to `duration`; the last is always
 /// exactly `duration` (appended when it is not a multiple of 1/fps).

@@ -20,6 +20,45 @@ namespace {
 
 const fs::path kSource = TUMBLE_SOURCE_DIR;
 
+/// The tumble under test: the build's, or TUMBLE_TEST_BIN (to run these tests
+/// against another build, e.g. main's, to see which of them fail there).
+inline std::string tumble_bin() {
+  const char* e = std::getenv("TUMBLE_TEST_BIN");
+  return e && *e ? e : TUMBLE_BIN;
+}
+
+/// Why no GL context can be made here ("" when one can). Asked of gl_probe,
+/// which creates a context, never of the `tumble render` under test: a broken
+/// render must fail its tests, not skip them. Probed once per process.
+inline std::string gl_unavailable() {
+#ifdef TUMBLE_GL_PROBE
+  static const std::string why = [] {
+    const fs::path err = fs::temp_directory_path() / ("tumble_gl_probe_" + std::to_string(::getpid()));
+    const int st = std::system(("'" TUMBLE_GL_PROBE "' >/dev/null 2>'" + err.string() + "'").c_str());
+    std::ifstream in(err);
+    std::stringstream s;
+    s << in.rdbuf();
+    fs::remove(err);
+    return WIFEXITED(st) && WEXITSTATUS(st) == 0 ? std::string() : "gl_probe: " + s.str();
+  }();
+  return why;
+#else
+  return "built without the renderer";
+#endif
+}
+
+/// Skips a test that needs GL when there is none; with TUMBLE_REQUIRE_GL=1
+/// (CI, which has GL) a missing context fails the test instead.
+#define TUMBLE_NEED_GL()                                                                 \
+  do {                                                                                   \
+    const std::string why_no_gl = gl_unavailable();                                      \
+    if (!why_no_gl.empty()) {                                                            \
+      const char* req = std::getenv("TUMBLE_REQUIRE_GL");                                \
+      if (req && std::string(req) == "1") FAIL() << "TUMBLE_REQUIRE_GL=1: " << why_no_gl; \
+      GTEST_SKIP() << "no GL: " << why_no_gl;                                            \
+    }                                                                                    \
+  } while (0)
+
 struct Result {
   int code;
   std::string out, err;
@@ -35,9 +74,12 @@ class Cli : public testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result run(const std::string& args) const {
+  /// `tumble ARGS`, with `env` ("NAME=value ...") set and `wrapper` (a
+  /// command such as setpriv ... --) in front.
+  Result run(const std::string& args, const std::string& env = "", const std::string& wrapper = "") const {
     const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string cmd = std::string("'") + TUMBLE_BIN + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const std::string cmd = (env.empty() ? "" : "env " + env + " ") + wrapper + (wrapper.empty() ? "" : " ") + "'" +
+                            tumble_bin() + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
   }

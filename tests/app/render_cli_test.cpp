@@ -10,16 +10,8 @@ class RenderCli : public Cli {};
 
 std::string data(const char* name) { return "'" + (kSource / "tests/app/data" / name).string() + "'"; }
 
-bool render_available() {
-  // The smoke check of the GL backends lives in tests/render; here a missing
-  // OSMesa only skips.
-  return std::system(("'" + std::string(TUMBLE_BIN) + "' render " + data("tiny_render.toml") +
-                      " -o /tmp/tumble_probe_$$ --frames 0:0 --progress none >/dev/null 2>&1; r=$?; rm -rf "
-                      "/tmp/tumble_probe_$$; exit $r").c_str()) == 0;
-}
-
 TEST_F(RenderCli, RenderWritesEveryFrameAndACompleteManifest) {
-  if (!render_available()) GTEST_SKIP() << "no GL backend";
+  TUMBLE_NEED_GL();
   const Result r = run("render " + data("tiny_render.toml") + " -o '" + dir_.string() + "/full' --progress none");
   ASSERT_EQ(r.code, 0) << r.err;
   for (int k = 0; k <= 6; ++k) {
@@ -37,7 +29,7 @@ TEST_F(RenderCli, RenderWritesEveryFrameAndACompleteManifest) {
 }
 
 TEST_F(RenderCli, FrameRangeIsByteIdenticalToTheFullRun) {
-  if (!render_available()) GTEST_SKIP() << "no GL backend";
+  TUMBLE_NEED_GL();
   ASSERT_EQ(run("render " + data("tiny_render.toml") + " -o '" + dir_.string() + "/full' --progress none").code, 0);
   const Result r = run("render " + data("tiny_render.toml") + " -o '" + dir_.string() + "/part' --frames 3:5 --progress none");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -60,7 +52,7 @@ TEST_F(RenderCli, RenderRejectsABadFrameRange) {
 }
 
 TEST_F(RenderCli, DivergedRenderKeepsFramesAndMarksManifestIncomplete) {
-  if (!render_available()) GTEST_SKIP() << "no GL backend";
+  TUMBLE_NEED_GL();
   const Result r = run("render " + data("diverges_under_euler.toml") + " -o '" + dir_.string() +
                        "/div' --width 64 --height 48 --video none --progress none");
   EXPECT_EQ(r.code, 3) << r.err;

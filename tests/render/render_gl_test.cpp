@@ -43,6 +43,10 @@ class RenderTest : public testing::TestWithParam<Case> {
     try {
       context_ = create_gl_context(GetParam().backend);
     } catch (const std::runtime_error& e) {
+      // TUMBLE_REQUIRE_GL=1 (CI): the default backend must work; a skip would hide it.
+      const char* req = std::getenv("TUMBLE_REQUIRE_GL");
+      if (req && std::string(req) == "1" && GetParam().backend == default_gl_backend())
+        FAIL() << "TUMBLE_REQUIRE_GL=1: " << e.what();
       GTEST_SKIP() << "backend unavailable: " << e.what();
     }
   }

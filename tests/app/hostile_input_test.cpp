@@ -1,0 +1,187 @@
+// Issue 13: hostile inputs and bad options, as a user meets them. Each fails at
+// once, with the documented exit code and a message saying what the path is or
+// which option is wrong, before any work. None needs GL.
+#include <sys/stat.h>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace {
+
+class HostileInput : public Cli {
+ protected:
+  // A scene whose one body reads its cloud from `cloud` (a path as written in TOML).
+  std::string cloud_scene(const std::string& cloud) const {
+    const fs::path p = dir_ / "cloud_scene.toml";
+    std::ofstream(p) << "[[bodies]]\ncloud = \"" << cloud << "\"\n";
+    return "'" + p.string() + "'";
+  }
+  // Runs tumble with at most 20 s and 2 GB of address space: a hang or a
+  // runaway read fails the test instead of the machine.
+  Result bounded(const std::string& args) const {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string cmd = "bash -c \"ulimit -v 2000000; exec timeout -s KILL 20 '" + tumble_bin() + "' " + args +
+                            "\" >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int st = std::system(cmd.c_str());
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(out), slurp(err)};
+  }
+  // Runs tumble unable to read what its mode bits forbid, even as root: without
+  // CAP_DAC_OVERRIDE / CAP_DAC_READ_SEARCH (setpriv drops them from the bounding
+  // set, so the exec'd tumble never gets them back).
+  Result without_root_bypass(const std::string& args) const {
+    if (::geteuid() != 0) return run(args);
+    return run(args, "", "setpriv --bounding-set=-dac_override,-dac_read_search --");
+  }
+};
+
+TEST_F(HostileInput, InfoOnDevZeroFailsAtOnce) {
+  const Result r = bounded("info /dev/zero");
+  EXPECT_EQ(r.code, 1) << r.err;  // 137 = killed by the timeout: it hung
+  EXPECT_NE(r.err.find("/dev/zero: scene file is a character device, not a regular file"), std::string::npos) << r.err;
+}
+
+TEST_F(HostileInput, InfoOnADirectorySaysSo) {
+  const Result r = bounded("info '" + dir_.string() + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("scene file is a directory"), std::string::npos) << r.err;
+}
+
+TEST_F(HostileInput, InfoOnAFifoDoesNotWaitForAWriter) {
+  const fs::path fifo = dir_ / "scene.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  const Result r = bounded("info '" + fifo.string() + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("scene file is a FIFO"), std::string::npos) << r.err;
+}
+
+TEST_F(HostileInput, UnreadableSceneIsAPermissionError) {
+  const fs::path p = dir_ / "locked.toml";
+  std::ofstream(p) << "[[bodies]]\nparticles = [[1, 0, 0, 1], [-1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1]]\n";
+  ::chmod(p.c_str(), 0);
+  const Result r = without_root_bypass("info '" + p.string() + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("locked.toml: scene file cannot be read: permission denied"), std::string::npos) << r.err;
+}
+
+TEST_F(HostileInput, CloudThatIsNotARegularFileSaysWhatItIs) {
+  fs::create_directories(dir_ / "cloud_dir");
+  ASSERT_EQ(::mkfifo((dir_ / "cloud.fifo").c_str(), 0644), 0);
+  const std::pair<std::string, std::string> cases[] = {
+      {"cloud_dir", "is a directory"}, {"cloud.fifo", "is a FIFO (named pipe)"}, {"/dev/zero", "is a character device"}};
+  for (const auto& [cloud, what] : cases) {
+    SCOPED_TRACE(cloud);
+    const Result r = bounded("info " + cloud_scene(cloud));
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("cloud_scene.toml:2:9: error: bodies[0].cloud: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("cloud file " + what), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(HostileInput, UnreadableCloudIsAPermissionErrorNotAMissingFile) {
+  std::ofstream(dir_ / "locked.xyz") << "1 0 0 1\n-1 0 0 1\n0 1 0 1\n0 0 1 1\n";
+  ::chmod((dir_ / "locked.xyz").c_str(), 0);
+  const Result r = without_root_bypass("info " + cloud_scene("locked.xyz"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("locked.xyz: cloud file cannot be read: permission denied"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("does it exist"), std::string::npos) << r.err;
+}
+
+TEST_F(HostileInput, EmptyCloudFileSaysItIsEmpty) {
+  std::ofstream(dir_ / "empty.xyz");
+  const Result r = run("info " + cloud_scene("empty.xyz"));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("empty.xyz: cloud file holds no particles (it is empty)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("give `particles`"), std::string::npos) << r.err;
+}
+
+// ---- Command-line overrides: validated like the scene, before any work ------
+
+class BadOption : public Cli {
+ protected:
+  std::string tiny() const { return "'" + (kSource / "tests/app/data/tiny_render.toml").string() + "'"; }
+  // `tumble render tiny ARGS` into a folder that must not be created.
+  Result render(const std::string& args) const {
+    return run("render " + tiny() + " -o '" + (dir_ / "out").string() + "' --progress none " + args);
+  }
+  void expect_refused(const Result& r, const std::string& text) const {
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << "work started before the option was checked";
+  }
+};
+
+TEST_F(BadOption, FpsBeyondTheFrameCapOrRangeNamesTheOption) {
+  expect_refused(render("--fps 1e8"), "--fps: error: output.fps: expected a number in [0.001, 1000]");
+  expect_refused(render("--fps 0"), "--fps: error: output.fps:");
+}
+
+TEST_F(BadOption, WidthZeroIsRefusedNotIgnored) {
+  expect_refused(render("--width 0"), "--width: error: output.width: expected an integer in [16, 16384], found 0");
+  expect_refused(render("--height 99999"), "--height: error: output.height:");
+  expect_refused(render("--msaa 3"), "--msaa: error: output.msaa: expected 0, 2 or 4, found 3");
+  expect_refused(render("--video avi"), "--video: error: output.video:");
+}
+
+TEST_F(BadOption, UnknownGlBackendIsAnInputErrorBeforeTheSimulation) {
+  expect_refused(render("--gl vulkan"), "--gl: unknown GL backend 'vulkan' (expected osmesa or egl)");
+  const Result r = run("render " + tiny() + " -o '" + (dir_ / "out").string() + "' --progress none", "TUMBLE_GL=vulkan");
+  expect_refused(r, "TUMBLE_GL: unknown GL backend 'vulkan'");
+}
+
+TEST_F(BadOption, BackwardsFrameRangeNamesAAfterB) {
+  expect_refused(render("--frames 10:5"), "--frames 10:5: the first frame (10) is after the last (5); expected A <= B");
+}
+
+TEST_F(BadOption, CsvInAMissingFolderNamesTheFileNotItsTempName) {
+  const Result r = run("simulate '" + (kSource / "scenes/dzhanibekov.toml").string() + "' --csv '" +
+                       (dir_ / "nodir/x.csv").string() + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("--csv " + (dir_ / "nodir/x.csv").string() + ": cannot write there"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(".tmp"), std::string::npos) << r.err;
+}
+
+TEST_F(BadOption, SimulateOverridesAreCheckedByTheScenesRules) {
+  const std::string scene = "'" + (kSource / "scenes/dzhanibekov.toml").string() + "' --csv '" + (dir_ / "x.csv").string() + "'";
+  Result r = run("simulate " + scene + " --dt 1e6");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--dt: error: simulation.dt: expected dt <= duration"), std::string::npos) << r.err;
+  r = run("simulate " + scene + " --method rk5");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--method: error: simulation.method: "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x.csv"));
+}
+
+// ---- CLI polish --------------------------------------------------------------
+
+TEST_F(BadOption, NoArgumentsPrintsHelp) {
+  const Result r = run("");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("render"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
+}
+
+TEST_F(BadOption, UnknownCommandGetsADidYouMean) {
+  const Result r = run("rendr x.toml");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("unknown command 'rendr'; did you mean 'render'?"), std::string::npos) << r.err;
+}
+
+TEST_F(BadOption, HelpPrintsFloatsAsWritten) {
+  const Result r = run("compare --help");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("default 0.0005)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("0.000500000"), std::string::npos) << r.out;
+}
+
+TEST_F(BadOption, BenchIntoAnUnwritableFolderSaysWhy) {
+  std::ofstream(dir_ / "file") << "x";
+  const Result r = run("bench --quick -o '" + (dir_ / "file/sub").string() + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("bench -o " + (dir_ / "file/sub").string() + ": cannot create the folder"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
+}  // namespace

@@ -1,0 +1,106 @@
+// Issue 13: the video is part of a complete render. An interrupted encode
+// exits 130/143, a failed or missing ffmpeg exits 1; each leaves "complete":
+// false with "video": null and the reason, and --resume makes the video.
+// A fake ffmpeg on PATH makes each case happen on cue.
+#include <sys/stat.h>
+
+#include "render_fixture.hpp"
+
+namespace {
+
+class VideoRender : public RobustRender {
+ protected:
+  // A folder holding an executable `ffmpeg` that runs `body` (sh).
+  std::string fake_ffmpeg(const std::string& body) const {
+    const fs::path bin = dir_ / "fakebin";
+    fs::create_directories(bin);
+    std::ofstream(bin / "ffmpeg") << "#!/bin/sh\n" << body << "\n";
+    ::chmod((bin / "ffmpeg").c_str(), 0755);
+    return bin.string() + ":/usr/bin:/bin";
+  }
+  static bool wait_for_file(pid_t pid, const fs::path& p) {
+    for (int i = 0; i < 60000; ++i) {
+      if (fs::exists(p)) return true;
+      int st;
+      if (::waitpid(pid, &st, WNOHANG) == pid) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return false;
+  }
+  void expect_incomplete_without_video(const fs::path& out) const {
+    const std::string m = slurp(out / "manifest.json");
+    EXPECT_NE(m.find("\"complete\": false"), std::string::npos) << m;
+    EXPECT_NE(m.find("\"video\": null"), std::string::npos) << m;
+    EXPECT_NE(m.find("\"video_error\": \""), std::string::npos) << m;
+    EXPECT_FALSE(fs::exists(out / "tiny_render.mp4"));
+    for (const std::string& n : names(out)) EXPECT_EQ(n.find(".tmp"), std::string::npos) << n;
+  }
+};
+
+TEST_F(VideoRender, InterruptedEncodeExits130ThenResumeMakesTheVideo) {
+  TUMBLE_NEED_GL();
+  for (const int sig : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(sig);
+    const fs::path out = dir_ / ("enc" + std::to_string(sig)), mark = dir_ / ("started" + std::to_string(sig));
+    const std::string path = fake_ffmpeg("touch '" + mark.string() + "'; exec sleep 60");
+    const pid_t pid = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4"}, path);
+    ASSERT_TRUE(wait_for_file(pid, mark)) << slurp(dir_ / "spawn.err");
+    ::kill(pid, sig);
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_EQ(wait_exit(pid), 128 + sig) << slurp(dir_ / "spawn.err");
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(20)) << "did not stop the encode";
+    expect_incomplete_without_video(out);
+    EXPECT_NE(slurp(dir_ / "spawn.err").find("--resume"), std::string::npos) << slurp(dir_ / "spawn.err");
+  }
+  // The real ffmpeg now: --resume keeps the 7 frames and makes the video.
+  const fs::path out = dir_ / ("enc" + std::to_string(SIGINT));
+  const Result r = run("render '" + data("tiny_render.toml") + "' -o '" + out.string() + "' --video mp4 --resume --progress none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("7 already on disk"), std::string::npos) << r.out;
+  const std::string m = slurp(out / "manifest.json");
+  EXPECT_NE(m.find("\"complete\": true"), std::string::npos) << m;
+  EXPECT_NE(m.find("\"video\": \"tiny_render.mp4\""), std::string::npos) << m;
+  EXPECT_GT(fs::file_size(out / "tiny_render.mp4"), 100u);
+}
+
+TEST_F(VideoRender, FailedFfmpegExits1AndSaysSo) {
+  TUMBLE_NEED_GL();
+  const std::string path = fake_ffmpeg("echo 'fake encoder failure' >&2; exit 1");
+  const fs::path out = dir_ / "fail";
+  const pid_t pid = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4"}, path);
+  EXPECT_EQ(wait_exit(pid), 1) << slurp(dir_ / "spawn.err");
+  const std::string err = slurp(dir_ / "spawn.err");
+  EXPECT_NE(err.find("ffmpeg failed (exit 1)"), std::string::npos) << err;
+  EXPECT_EQ(err.find("rendered frames"), std::string::npos) << err;
+  expect_incomplete_without_video(out);
+}
+
+TEST_F(VideoRender, MissingFfmpegExits1ButVideoNoneExits0) {
+  TUMBLE_NEED_GL();
+  const fs::path out = dir_ / "missing", none = dir_ / "none";
+  pid_t pid = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4"}, "/nonexistent-tumble-path");
+  EXPECT_EQ(wait_exit(pid), 1) << slurp(dir_ / "spawn.err");
+  EXPECT_NE(slurp(dir_ / "spawn.err").find("ffmpeg not found"), std::string::npos) << slurp(dir_ / "spawn.err");
+  expect_incomplete_without_video(out);
+  // No video asked for: no ffmpeg needed, a complete render.
+  pid = spawn_render(data("tiny_render.toml"), none, {"--video", "none"}, "/nonexistent-tumble-path");
+  EXPECT_EQ(wait_exit(pid), 0) << slurp(dir_ / "spawn.err");
+  EXPECT_NE(slurp(none / "manifest.json").find("\"complete\": true"), std::string::npos);
+}
+
+TEST_F(VideoRender, EncodeShowsProgress) {
+  TUMBLE_NEED_GL();
+  // A fake ffmpeg that reports progress as ffmpeg's -progress does and writes its output.
+  const std::string path = fake_ffmpeg("for a; do last=$a; done; printf 'frame=3\\nprogress=continue\\nframe=7\\nprogress=end\\n'; "
+                                       "echo video > \"$last\"");
+  const fs::path out = dir_ / "progress";
+  std::vector<std::string> extra = {"--video", "mp4", "--progress", "auto"};
+  const pid_t pid = spawn_render(data("tiny_render.toml"), out, extra, path);
+  EXPECT_EQ(wait_exit(pid), 0) << slurp(dir_ / "spawn.err");
+  EXPECT_NE(slurp(dir_ / "spawn.err").find("encoding tiny_render.mp4 from 7 frames"), std::string::npos)
+      << slurp(dir_ / "spawn.err");
+  EXPECT_EQ(slurp(out / "tiny_render.mp4"), "video\n");
+  EXPECT_NE(slurp(out / "manifest.json").find("\"complete\": true"), std::string::npos);
+}
+
+}  // namespace
