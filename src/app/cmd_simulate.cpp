@@ -79,9 +79,9 @@ void check_csv_path(const std::string& csv) {
   if (p.filename().empty() || std::filesystem::is_directory(p, ec))
     throw InputError("--csv " + csv + ": expected a file name, found a folder");
   if (!std::filesystem::is_directory(parent, ec))
-    throw IoError("--csv " + csv + ": cannot write there: folder '" + parent.string() + "' does not exist");
+    throw io::IoError("--csv " + csv + ": cannot write there: folder '" + parent.string() + "' does not exist");
   if (::access(parent.c_str(), W_OK) != 0)
-    throw IoError("--csv " + csv + ": cannot write in folder '" + parent.string() + "': " + std::strerror(errno));
+    throw io::IoError("--csv " + csv + ": cannot write in folder '" + parent.string() + "': " + std::strerror(errno));
 }
 
 int run_simulate(const SimulateOptions& o) {
