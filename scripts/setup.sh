@@ -13,10 +13,13 @@ RENDER_PACKAGES=(
   libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev  # headless GL (OSMesa / EGL), camera maths
   libstb-dev libdeflate-dev fonts-dejavu-core    # PNG in/out, text overlay
   nlohmann-json3-dev                             # JSON (manifest, golden sidecars, info --json)
+  libassimp-dev                                  # mesh shapes (OBJ, STL, PLY, ...)
   ffmpeg                                         # videos (run as a program)
 )
 TEST_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev     # tests, microbenchmarks
+  assimp-testmodels                              # tests: real and malformed meshes
+  openscad                                       # scenes/: regenerates the shipped STL from .scad
   gnuplot-nox                                    # `tumble bench` charts (run as a program)
   libbullet-dev libode-dev                       # optional peers for `tumble bench`
   clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/mesh_info.hpp"
 #include "io/json.hpp"
 
 namespace tumble::app {
@@ -65,6 +66,11 @@ std::string to_json(const scene::Scene& s) {
     j["principal_moments"] = vec_json(i.moments);
     j["principal_axes"] = mat_json(i.axes);
     j["box"] = {{"center", vec_json(i.box_center)}, {"half_extents", vec_json(i.half_extents)}};
+    if (!b.meshes.empty()) {
+      io::Json meshes = io::Json::array();
+      for (const scene::MeshSource& ms : b.meshes) meshes.push_back(mesh_json(ms));
+      j["meshes"] = std::move(meshes);
+    }
     bodies.push_back(std::move(j));
   }
   return io::json_text(io::Json{{"bodies", std::move(bodies)}});
@@ -88,6 +94,7 @@ std::string to_text(const scene::Scene& s) {
       << "                    " << row(i.axes.col(2)) << " (3, largest)\n"
       << "  box centre        " << row(i.box_center) << " m\n"
       << "  box half extents  " << row(i.half_extents) << " m (along the principal axes)\n";
+    for (const scene::MeshSource& m : b.meshes) o << mesh_text(m);
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
     o << "  method            " << method_name(plan.config.method) << ", " << scene::step_label(plan.config, b.model);
     o << (plan.reason.empty() ? " (set by the scene)" : " (auto: " + plan.reason + ")") << "\n";

@@ -91,10 +91,12 @@ viz::Color rgba(const Eigen::Vector3d& c, float a) {
 }
 glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vector<BodyState>& states) {
+std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vector<BodyState>& states,
+                                         const std::vector<viz::BodyLook>* looks = nullptr) {
   std::vector<viz::BodySnapshot> out;
   for (size_t i = 0; i < s.bodies.size() && i < states.size(); ++i)
-    out.push_back({&s.bodies[i].model, &s.bodies[i].cloud, states[i], rgba(s.bodies[i].color, 0.38f)});
+    out.push_back({&s.bodies[i].model, &s.bodies[i].cloud, states[i], rgba(s.bodies[i].color, 0.38f),
+                   looks ? &(*looks)[i] : nullptr});
   return out;
 }
 
@@ -107,6 +109,25 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, int w
     const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
     v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f}});
   }
+}
+
+// Once per body: mesh surfaces, the particles that can be seen, part colours.
+viz::BodyLook body_look(const scene::Body& b, bool particles) {
+  viz::BodyLook look;
+  for (const scene::MeshSource& m : b.meshes) {
+    if (m.surface.triangles.empty()) continue;
+    look.surfaces.push_back(viz::make_surface(m.surface));
+    look.surface_colors.push_back(rgba(m.color, 1.0f));
+  }
+  if (!particles) return look;
+  look.visible = viz::visible_particles(b.cloud);
+  for (std::uint32_t i : look.visible) {
+    Eigen::Vector3d c = b.color;
+    for (const scene::ColorSpan& span : b.part_colors)
+      if (i >= span.begin && i < span.end) c = span.color;
+    look.particle_colors.push_back(rgba(0.75 * c, 1.0f));
+  }
+  return look;
 }
 
 }  // namespace
@@ -144,6 +165,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
   font_px_ = std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f);
   const scene::DrawConfig& d = s.render.draw;
   draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
+  for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, d.particles));
   const double aspect = (static_cast<double>(width) / columns_) / (static_cast<double>(height) / rows_);
   camera_ = scene_camera(s, runs, aspect);
   // Trails see every frame from t = 0, so a frame range draws what a full run does.
@@ -167,7 +189,7 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
   const long last = static_cast<long>(run.frames.size()) - 1;
   const long kk = std::min(k, last);
   if (kk >= 0) {
-    const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)]);
+    const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)], &looks_);
     const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
     if (follow) {
       const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);

@@ -59,6 +59,7 @@ class FrameBuilder {
   viz::Camera camera_;
   std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
   std::unique_ptr<ExplainViews> explain_;   // [[views]], captions, title (null without them)
+  std::vector<viz::BodyLook> looks_;        // per body: surfaces, visible particles
 };
 
 /// Number of frames of a run: t_k = k/fps for k = 0 … ⌊duration·fps⌋.

@@ -20,7 +20,9 @@ using ParticleCloud = std::vector<Particle>;
 /// Appends `src` shifted by `offset` (m) to `dst`: clouds from several sources are unioned.
 void append_cloud(ParticleCloud& dst, const ParticleCloud& src, const Eigen::Vector3d& offset);
 
-/// Reads a plain-text cloud: one `x y z m` per line (m, kg), `#` starts a comment.
+/// Reads a plain-text cloud: one `x y z m` per line (m, kg), `#` starts a comment;
+/// or CSV (commas) and/or a header line naming the columns x, y, z, m in any order
+/// (other named columns are ignored).
 /// Throws InputError naming `path:line` and what was expected.
 ParticleCloud read_cloud_file(const std::filesystem::path& path);
 

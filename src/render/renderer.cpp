@@ -12,6 +12,7 @@
 #include "render/offscreen_target.hpp"
 #include "render/shader_program.hpp"
 #include "render/sphere_pass.hpp"
+#include "render/surface_pass.hpp"
 #include "render/text_pass.hpp"
 #include "render/view_batches.hpp"
 #include "render/view_layout.hpp"
@@ -26,6 +27,8 @@ constexpr glm::vec3 kSkyTint{0.74f, 0.83f, 0.95f};
 constexpr float kSkyAmount = 0.35f;
 // Fraction of each view's height (from the bottom) left at the plain background.
 constexpr float kFlatBackground = 0.35f;
+// Key light from the camera's upper left, so shapes read the same in every view.
+const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
 
 }  // namespace
 
@@ -57,6 +60,7 @@ class Renderer::Impl {
   ShaderProgram mesh_program_, background_program_;
   InstancedMesh cube_, cylinder_, cone_;
   SpherePass spheres_;
+  SurfacePass surfaces_;
   LinePass lines_;
   TextPass text_;
   GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
@@ -92,6 +96,7 @@ Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
       cylinder_(gl_, unit_cylinder(20)),
       cone_(gl_, unit_cone(24)),
       spheres_(gl_, resource_dir / "shaders"),
+      surfaces_(gl_, resource_dir / "shaders"),
       lines_(gl_, resource_dir / "shaders"),
       text_(gl_, resource_dir / "shaders", font_),
       empty_vao_(make_vertex_array(gl_)) {}
@@ -195,6 +200,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   lines_.draw(batches.grid, view_proj, kGridWidthPx);
   gl_.DepthMask(GL_TRUE);
 
+  surfaces_.draw(view.surfaces, cam.view, cam.proj, kLightDir);
   draw_meshes(batches, cam);
 
   gl_.DepthMask(GL_FALSE);  // trails and edges are translucent overlays
@@ -212,8 +218,7 @@ void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrice
   mesh_program_.use();
   mesh_program_.set("u_view", cam.view);
   mesh_program_.set("u_proj", cam.proj);
-  // Key light from the camera's upper left, so shapes read the same in every view.
-  const glm::vec3 light_dir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
+  const glm::vec3 light_dir = kLightDir;
   mesh_program_.set("u_light_dir", light_dir);
 
   // Opaque pass.

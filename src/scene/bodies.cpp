@@ -23,6 +23,33 @@ bool valid_name(const std::string& n) {
   });
 }
 
+// Reads one table's particle sources (and mesh shapes) into the body, rotated
+// by `q` about the table's own origin, then shifted by `offset` (m).
+int read_placed(TableReader& r, LoadContext& ctx, const Eigen::Quaterniond& q, const Eigen::Vector3d& offset,
+                const std::optional<Eigen::Vector3d>& color, Body& b) {
+  ParticleCloud cloud;
+  std::vector<MeshSource> meshes;
+  ctx.meshes = &meshes;
+  const int sources = read_cloud_sources(r, ctx, Eigen::Vector3d::Zero(), cloud);
+  ctx.meshes = nullptr;
+  const Eigen::Matrix3d R = q.toRotationMatrix();
+  const std::size_t begin = b.cloud.size();
+  b.cloud.reserve(begin + cloud.size());
+  for (const Particle& p : cloud) b.cloud.push_back({R * p.position + offset, p.mass});
+  if (color) b.part_colors.push_back({begin, b.cloud.size(), *color});
+  for (MeshSource& m : meshes) {
+    for (auto& v : m.surface.vertices) v = R * v + offset;
+    m.exact_com = R * m.exact_com + offset;
+    m.cloud_com = R * m.cloud_com + offset;
+    m.exact_inertia = R * m.exact_inertia * R.transpose();
+    m.cloud_inertia = R * m.cloud_inertia * R.transpose();
+    if (color) m.color = *color;
+    else m.color = Eigen::Vector3d::Constant(-1);  // the body's, set once it is read
+    b.meshes.push_back(std::move(m));
+  }
+  return sources;
+}
+
 std::optional<Eigen::Quaterniond> read_orientation(TableReader& r) {
   const toml::node* n = r.node("orientation");
   if (!n) return Eigen::Quaterniond::Identity();
@@ -99,13 +126,15 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   }
   ctx.body_names.push_back(b.name);
 
-  int sources = read_cloud_sources(r, ctx, Eigen::Vector3d::Zero(), b.cloud);
+  int sources = read_placed(r, ctx, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), std::nullopt, b);
   const auto parts = r.tables("parts");
   for (std::size_t j = 0; j < parts.size(); ++j) {
     TableReader pr(*parts[j], r.key_path("parts") + "[" + std::to_string(j) + "]", ctx.diag,
-                   {"particles", "shape", "cloud", "offset"});
+                   {"particles", "shape", "cloud", "offset", "orientation", "color"});
     const Eigen::Vector3d offset = pr.vec3("offset").value_or(Eigen::Vector3d::Zero());
-    if (read_cloud_sources(pr, ctx, offset, b.cloud) == 0)
+    const Eigen::Quaterniond q = read_orientation(pr).value_or(Eigen::Quaterniond::Identity());
+    const std::optional<Eigen::Vector3d> color = pr.vec3("color", Range::closed(0, 1));
+    if (read_placed(pr, ctx, q, offset, color, b) == 0)
       ctx.diag.error(parts[j]->source(), pr.path(), "a part needs particles, shape or cloud");
     ++sources;
   }
@@ -130,6 +159,8 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   read_forces(r, scene, forces);
   const auto& pal = kPalette[index % kPalette.size()];
   b.color = r.vec3("color", Range::closed(0, 1)).value_or(Eigen::Vector3d(pal[0], pal[1], pal[2]));
+  for (MeshSource& m : b.meshes)
+    if (m.color.x() < 0) m.color = b.color;
 
   if (ctx.diag.error_count() != errors_before) return;  // the body is broken; keep collecting others
   try {

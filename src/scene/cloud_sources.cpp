@@ -9,8 +9,11 @@ namespace tumble::scene::detail {
 
 namespace {
 
-// Reserves `n` particles of the scene budget; false (with an error) past the cap.
-bool reserve(LoadContext& ctx, TableReader& r, std::string_view key, double n) {
+bool reserve(LoadContext& ctx, TableReader& r, std::string_view key, double n) { return reserve_particles(ctx, r, key, n); }
+
+}  // namespace
+
+bool reserve_particles(LoadContext& ctx, TableReader& r, std::string_view key, double n) {
   if (static_cast<double>(ctx.particles) + n > static_cast<double>(kMaxParticles)) {
     r.error(key, "the scene would have more than " + std::to_string(kMaxParticles) +
                      " particles (the cap); lower the resolution");
@@ -19,6 +22,8 @@ bool reserve(LoadContext& ctx, TableReader& r, std::string_view key, double n) {
   ctx.particles += static_cast<std::size_t>(n);
   return true;
 }
+
+namespace {
 
 void read_particles(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {
   const toml::node* n = r.node("particles");
@@ -150,9 +155,10 @@ void read_shape(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset,
   const toml::node* tn = t->get("type");
   const toml::value<std::string>* ts = tn ? tn->as_string() : nullptr;
   const std::string type = ts ? ts->get() : "";
-  static constexpr std::string_view kTypes[] = {"box", "ellipsoid", "cylinder", "t_handle"};
+  if (type == "mesh") return read_mesh_shape(*t, path, ctx, offset, out);
+  static constexpr std::string_view kTypes[] = {"box", "ellipsoid", "cylinder", "t_handle", "mesh"};
   if (std::find(std::begin(kTypes), std::end(kTypes), type) == std::end(kTypes)) {
-    std::string msg = "expected type = \"box\", \"ellipsoid\", \"cylinder\" or \"t_handle\", found ";
+    std::string msg = "expected type = \"box\", \"ellipsoid\", \"cylinder\", \"t_handle\" or \"mesh\", found ";
     msg += tn ? describe(*tn) : "no type";
     const std::string hint = closest(type, {std::begin(kTypes), std::end(kTypes)});
     if (!type.empty() && !hint.empty()) msg += "; did you mean \"" + hint + "\"?";

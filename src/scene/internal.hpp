@@ -17,7 +17,16 @@ struct LoadContext {
   std::filesystem::path base_dir;  ///< cloud files resolve against it
   std::size_t particles = 0;       ///< running total, capped at kMaxParticles
   std::vector<std::string> body_names;  ///< every name seen, for the uniqueness check
+  std::vector<MeshSource>* meshes = nullptr;  ///< where mesh shapes of the current source go
 };
+
+/// Reserves `n` particles of the scene budget; false (with an error under `key`) past the cap.
+bool reserve_particles(LoadContext& ctx, TableReader& r, std::string_view key, double n);
+
+/// A `shape = { type = "mesh", ... }` table at `path`: appends its particles to
+/// `out` (shifted by `offset`, m) and its MeshSource to ctx.meshes.
+void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext& ctx, const Eigen::Vector3d& offset,
+                     ParticleCloud& out);
 
 /// Appends the particles of every source in `r` (particles, shape, cloud) shifted
 /// by `offset`; returns how many sources the table had.

@@ -19,6 +19,7 @@
 #include "core/particle_cloud.hpp"
 #include "core/propagator.hpp"
 #include "scene/explain.hpp"
+#include "core/triangle_mesh.hpp"
 
 namespace tumble::scene {
 
@@ -98,6 +99,36 @@ struct RenderConfig {
   ExplainConfig explain;                 ///< time_scale, slow motion, captions, title, views
 };
 
+/// One `shape = { type = "mesh" }` of a body, kept for `tumble info` and drawing.
+struct MeshSource {
+  std::string file;                 ///< path as resolved against the scene folder
+  std::string fill;                 ///< "volume", "surface" or "vertices"
+  double units = 1;                 ///< m per file unit
+  MeshReport report;                ///< in m, as read (before the orientation fix)
+  bool flipped = false;             ///< was inside out; turned right way out
+  std::string inside_test;          ///< volume fill: how inside was decided
+  std::size_t ambiguous = 0;        ///< volume fill: lattice points with winding number in (0.25, 0.75)
+  TriangleMesh surface;             ///< body cloud axes (part placement applied), m
+  double mass = 0;                  ///< kg
+  std::size_t particles = 0;
+  double spacing = 0;               ///< m between lattice points or samples
+  bool has_exact = false;           ///< exact tensor known (watertight volume, or surface shell)
+  Eigen::Vector3d exact_com = Eigen::Vector3d::Zero();      ///< cloud axes, m
+  Eigen::Matrix3d exact_inertia = Eigen::Matrix3d::Zero();  ///< about exact_com, cloud axes, kg·m²
+  Eigen::Vector3d cloud_com = Eigen::Vector3d::Zero();      ///< of its particles, m
+  Eigen::Matrix3d cloud_inertia = Eigen::Matrix3d::Zero();  ///< of its particles about cloud_com, kg·m²
+  Eigen::Vector3d color{0.3, 0.5, 0.8};                     ///< linear RGB (part colour, else the body's)
+
+  /// ‖J_cloud − J_exact‖_F / ‖J_exact‖_F (what inertia_tolerance bounds).
+  double inertia_error() const { return (cloud_inertia - exact_inertia).norm() / exact_inertia.norm(); }
+};
+
+/// Particles [begin, end) of a body drawn in `color` (a part's colour).
+struct ColorSpan {
+  std::size_t begin = 0, end = 0;
+  Eigen::Vector3d color;            ///< linear RGB in [0, 1]
+};
+
 struct Body {
   std::string name;
   ParticleCloud cloud;                   ///< cloud axes, as written in the scene
@@ -106,6 +137,8 @@ struct Body {
   InitialConditions initial_conditions;  ///< as written (orientation normalised)
   BodyState initial;                     ///< make_state(model, initial_conditions)
   Eigen::Vector3d color{0.3, 0.5, 0.8};  ///< linear RGB in [0, 1]
+  std::vector<MeshSource> meshes;        ///< mesh shapes, drawn as surfaces
+  std::vector<ColorSpan> part_colors;    ///< parts with their own colour
 };
 
 struct Scene {

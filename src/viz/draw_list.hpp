@@ -6,6 +6,7 @@
 
 #include <array>
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,20 @@ struct ArrowItem {
 struct PointItem {
   glm::dvec3 position;      ///< world, m
   double radius;            ///< m
+  Color color;
+};
+
+/// A mesh as flat-shaded triangles, 3 vertices each, in its own (cloud) axes, m.
+struct SurfaceMesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;   ///< unit, outward
+};
+
+/// A lit, opaque mesh surface placed by `model` (its axes -> world, m). Shared,
+/// so a frame's list does not copy the triangles and the renderer can keep them on the GPU.
+struct SurfaceItem {
+  std::shared_ptr<const SurfaceMesh> mesh;
+  glm::dmat4 model;
   Color color;
 };
 
@@ -81,6 +96,7 @@ struct View {
   std::vector<BoxItem> boxes;
   std::vector<ArrowItem> arrows;
   std::vector<PointItem> points;
+  std::vector<SurfaceItem> surfaces;
   std::vector<PolylineItem> polylines;
   std::vector<GridItem> grids;
   std::vector<TextItem> texts;   ///< overlay, drawn last, in this viewport

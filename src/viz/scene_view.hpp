@@ -7,6 +7,7 @@
 
 #include "core/body.hpp"
 #include "core/particle_cloud.hpp"
+#include "viz/body_look.hpp"
 #include "viz/draw_list.hpp"
 
 namespace tumble::viz {
@@ -17,6 +18,7 @@ struct BodySnapshot {
   const ParticleCloud* cloud = nullptr;  ///< optional: particles in cloud coordinates
   BodyState state;
   Color color{0.55f, 0.62f, 0.78f, 0.35f};  ///< box face colour (alpha = translucency)
+  const BodyLook* look = nullptr;        ///< optional: surfaces, visible particles and their colours
 };
 
 /// What to draw (scene `[draw]`, overridable on the command line).

@@ -89,5 +89,24 @@ TEST(CloudFile, AppendCloudUnionsWithOffset) {
   EXPECT_EQ(dst[2].mass, 0.5);
 }
 
+TEST(CloudFile, CsvWithHeaderInAnyColumnOrder) {
+  const ParticleCloud c = parse_cloud_text("# scan\nm, z ,x,id,y\n2, 3, 1, 7, 0.5\n0.25,-1,4,8,5\n", "scan.csv");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].position, Eigen::Vector3d(1, 0.5, 3));
+  EXPECT_EQ(c[0].mass, 2.0);
+  EXPECT_EQ(c[1].position, Eigen::Vector3d(4, 5, -1));
+  EXPECT_EQ(c[1].mass, 0.25);
+  // Header without commas, and CSV without a header.
+  EXPECT_EQ(parse_cloud_text("X Y Z M\n1 2 3 4\n", "h.txt")[0].position, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(parse_cloud_text("1,2,3,4\n5,6,7,8\n", "n.csv")[1].mass, 8.0);
+}
+
+TEST(CloudFile, CsvErrorsNameTheLine) {
+  expect_error("x,y,z\n1,2,3\n", "parts.xyz:1:", "no column named 'm'");
+  expect_error("x,y,z,m,x\n1,2,3,4,5\n", "parts.xyz:1:", "appears twice");
+  expect_error("x,y,z,m\n1,2,3,4\n1,2,3\n", "parts.xyz:3:", "expected 4");
+  expect_error("x,y,z,m\n1,2,,4\n", "parts.xyz:2:", "expected a number, found ''");
+}
+
 }  // namespace
 }  // namespace tumble

@@ -1,0 +1,90 @@
+#include "app/mesh_info.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "app/commands.hpp"
+
+namespace tumble::app {
+
+namespace {
+
+std::string vec(const Eigen::Vector3d& v) {
+  return "[" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) + "]";
+}
+
+std::string mat(const Eigen::Matrix3d& m) {
+  std::string out = "[";
+  for (int r = 0; r < 3; ++r) out += (r ? ", " : "") + vec(m.row(r).transpose());
+  return out + "]";
+}
+
+std::string short_num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+std::string yes_no(bool b) { return b ? "yes" : "no"; }
+
+}  // namespace
+
+std::string mesh_text(const scene::MeshSource& m) {
+  const MeshReport& r = m.report;
+  std::ostringstream o;
+  o << "  mesh              " << m.file << " (fill " << m.fill << ", " << short_num(m.units) << " m per file unit)\n"
+    << "    triangles       " << r.triangles << " (" << r.vertices << " vertices), " << r.degenerate_faces
+    << " degenerate\n"
+    << "    watertight      " << yes_no(r.watertight()) << " (" << r.boundary_edges << " boundary, "
+    << r.non_manifold_edges << " non-manifold, " << r.misoriented_edges << " misoriented edges)\n"
+    << "    signed volume   " << short_num(r.signed_volume) << " m^3 ("
+    << (m.flipped ? "inside out: flipped" : r.signed_volume >= 0 ? "outward" : "inward") << "), area "
+    << short_num(r.area) << " m^2\n"
+    << "    bounding box    " << vec(r.box_min) << " .. " << vec(r.box_max) << " m (file axes, scaled)\n";
+  if (!m.inside_test.empty()) o << "    inside test     " << m.inside_test << "\n";
+  o << "    particles       " << m.particles;
+  if (m.spacing > 0) o << " (spacing " << short_num(m.spacing) << " m)";
+  o << ", mass " << short_num(m.mass) << " kg\n";
+  auto rows = [&](const char* label, const Eigen::Matrix3d& J) {
+    o << "    " << label << vec(J.row(0).transpose()) << " kg m^2 (cloud axes, about its own centre of mass)\n";
+    for (int i = 1; i < 3; ++i) o << "                    " << vec(J.row(i).transpose()) << "\n";
+  };
+  if (m.has_exact) rows(m.fill == "surface" ? "exact (shell)   " : "exact (solid)   ", m.exact_inertia);
+  rows("particle cloud  ", m.cloud_inertia);
+  if (m.has_exact) o << "    relative error  " << short_num(m.inertia_error()) << " (Frobenius norm)\n";
+  return o.str();
+}
+
+io::Json mesh_json(const scene::MeshSource& m) {
+  const MeshReport& r = m.report;
+  auto v3 = [](const Eigen::Vector3d& v) { return io::Json::array({v.x(), v.y(), v.z()}); };
+  auto m3 = [&](const Eigen::Matrix3d& J) {
+    return io::Json::array({v3(J.row(0).transpose()), v3(J.row(1).transpose()), v3(J.row(2).transpose())});
+  };
+  io::Json j{{"file", m.file},
+             {"fill", m.fill},
+             {"units_m", m.units},
+             {"triangles", r.triangles},
+             {"vertices", r.vertices},
+             {"degenerate_faces", r.degenerate_faces},
+             {"watertight", r.watertight()},
+             {"boundary_edges", r.boundary_edges},
+             {"non_manifold_edges", r.non_manifold_edges},
+             {"misoriented_edges", r.misoriented_edges},
+             {"signed_volume", r.signed_volume},
+             {"flipped", m.flipped},
+             {"area", r.area},
+             {"box_min", v3(r.box_min)},
+             {"box_max", v3(r.box_max)},
+             {"particles", m.particles},
+             {"spacing", m.spacing},
+             {"mass", m.mass},
+             {"cloud_inertia", m3(m.cloud_inertia)}};
+  if (m.has_exact) {
+    j["exact_inertia"] = m3(m.exact_inertia);
+    j["relative_error"] = m.inertia_error();
+  }
+  return j;
+}
+
+}  // namespace tumble::app
