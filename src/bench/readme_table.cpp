@@ -64,7 +64,7 @@ std::string readme_accuracy_table(std::ostream& log) {
   std::vector<Line> lines;
   for (Method m : kAllMethods) {
     const std::string name(method_name(m));
-    if (m != Method::rk45) {
+    if (!method_info(m).adaptive) {
       lines.push_back(fixed_line(name, p, [m](const Problem& q, double dt) {
         return run_fixed(m, q.model, q.s0, q.duration, dt);
       }));

@@ -26,9 +26,10 @@ std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Se
   std::vector<WpRow> rows;
   for (const Problem& p : problems) {
     for (Method m : kAllMethods) {
-      const bool adaptive = m == Method::rk45;
+      const MethodInfo& info = method_info(m);
+      const bool adaptive = info.adaptive;
       const std::vector<double> params =
-          adaptive ? rtol_grid(st) : dt_grid(st, p, m == Method::exact && p.torque_free);
+          adaptive ? rtol_grid(st) : dt_grid(st, p, info.closed_form_if_free && p.torque_free);
       for (double par : params) {
         BodyState s;
         auto once = [&] {
