@@ -1,8 +1,12 @@
-// `tumble bench`: the method studies (src/bench), or with --render the frame
-// throughput of the demo.
+// `tumble bench`: the method studies (src/bench); with --scene the
+// work-precision study on a user's scene; with --readme-table the README's
+// accuracy table; with --render the frame throughput of the demo.
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
+#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "bench/bench.hpp"
 #ifdef TUMBLE_HAVE_RENDER
@@ -13,12 +17,53 @@
 namespace tumble::app {
 
 namespace {
+
 struct BenchCliOptions {
   bench::BenchOptions studies;
   bool render = false;
   long frames = 240;
-  std::string scene;
+  std::string scene, body, readme;
 };
+
+constexpr std::size_t kMaxStudiedBodies = 16;  // each body is a full work-precision study
+
+int run_scene_study(const BenchCliOptions& o) {
+  const scene::Scene s = load_scene_verbose(o.scene);
+  std::vector<bench::Problem> problems;
+  for (const scene::Body& b : s.bodies)
+    if (o.body.empty() || b.name == o.body)
+      problems.push_back(bench::body_problem(b.name, b.model, b.initial, s.simulation.duration));
+  if (problems.empty()) {
+    std::string names;
+    for (const scene::Body& b : s.bodies) names += (names.empty() ? "" : ", ") + b.name;
+    throw InputError("--body: no body \"" + o.body + "\" in " + o.scene + " (bodies: " + names + ")");
+  }
+  if (problems.size() > kMaxStudiedBodies)
+    throw InputError(o.scene + " has " + std::to_string(problems.size()) + " bodies; bench --scene studies at most " +
+                     std::to_string(kMaxStudiedBodies) + ": choose one with --body NAME");
+  return bench::run_problems(o.studies, s.name, problems, std::cout);
+}
+
+int rewrite_readme(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError("--readme-table: cannot read " + file);
+  std::stringstream text;
+  text << in.rdbuf();
+  auto replace = [&](const std::string& table) {
+    try {
+      return bench::replace_between_markers(text.str(), "bench:accuracy-table", table);
+    } catch (const InputError& e) {
+      throw InputError(file + ": " + e.what());
+    }
+  };
+  replace("");  // the markers are checked before the minute of measuring
+  const std::string table = bench::readme_accuracy_table(std::cout);
+  const std::string out = replace(table);
+  atomic_write_file(file, out);
+  std::cout << table << "wrote the table into " << file << "\n";
+  return kOk;
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app, Action& action) {
@@ -26,12 +71,27 @@ void add_bench_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("bench", "Work-precision, convergence, stability and drift of every method (+ peers)");
   cmd->add_flag("--quick", o->studies.quick, "Small sweeps and short timing batches (under a minute)");
   cmd->add_option("-o,--out", o->studies.out_dir, "Output folder for CSV, PNG and summary.md")->capture_default_str();
-  cmd->add_flag("--render", o->render, "Measure frames/s of the demo render (1280x720, 4x MSAA) instead");
+  auto* render = cmd->add_flag("--render", o->render, "Measure frames/s of the demo render (1280x720, 4x MSAA) instead");
   cmd->add_option("--frames", o->frames, "With --render: how many frames")->capture_default_str();
-  cmd->add_option("--scene", o->scene, "With --render: scene (default scenes/dzhanibekov.toml)");
+  cmd->add_option("--scene", o->scene,
+                  "Work-precision study (every method x a dt sweep, rk45 x rtol, peers when torque-free) on this "
+                  "scene's bodies against a tight reference; with --render: the scene to render (default "
+                  "scenes/dzhanibekov.toml)");
+  cmd->add_option("--body", o->body, "With --scene: study only this body")->excludes(render);
+  cmd->add_option("--readme-table", o->readme,
+                  "Recompute the README's accuracy table and write it between the <!-- BEGIN/END "
+                  "bench:accuracy-table --> lines of this file")
+      ->excludes(render);
   cmd->callback([o, &action] {
     action = [o]() -> int {
-      if (!o->render) return bench::run(o->studies, std::cout);
+      if (!o->readme.empty()) {
+        if (!o->scene.empty()) throw InputError("--readme-table and --scene: choose one");
+        return rewrite_readme(o->readme);
+      }
+      if (!o->render) {
+        if (!o->body.empty() && o->scene.empty()) throw InputError("--body needs --scene");
+        return o->scene.empty() ? bench::run(o->studies, std::cout) : run_scene_study(*o);
+      }
 #ifdef TUMBLE_HAVE_RENDER
       const std::filesystem::path scene =
           o->scene.empty() ? render::find_resource_dir() / "scenes" / "dzhanibekov.toml" : std::filesystem::path(o->scene);

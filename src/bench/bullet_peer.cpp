@@ -1,60 +1,86 @@
-// Bullet peer: the T-handle as a btRigidBody in a btDiscreteDynamicsWorld.
+// Bullet peer: the body as a btRigidBody in a btDiscreteDynamicsWorld.
 #if TUMBLE_HAVE_BULLET
 #include <btBulletDynamicsCommon.h>
 
 #include <memory>
-#include <stdexcept>
 
 #include "bench/peers.hpp"
 
 namespace tumble::bench {
 
-std::vector<std::string> bullet_labels() {
-  return {"bullet_none", "bullet_explicit", "bullet_implicit_body", "bullet_implicit_world"};
-}
+namespace {
 
-BodyState bullet_run(const std::string& label, const Problem& p, double dt) {
-  int flags = 0;
-  if (label == "bullet_explicit") flags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT;
-  else if (label == "bullet_implicit_body") flags = BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
-  else if (label == "bullet_implicit_world") flags = BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD;
-  else if (label != "bullet_none") throw std::invalid_argument("unknown Bullet configuration " + label);
+class BulletStepper final : public Stepper {
+ public:
+  BulletStepper(int flags, const RigidBodyModel& m, const BodyState& s0)
+      : m_(m), s0_(s0), dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &solver_, &config_) {
+    world_.setGravity(btVector3(0, 0, 0));
+    const Eigen::Vector3d& I = m.inertia;
+    btRigidBody::btRigidBodyConstructionInfo info(m.mass, nullptr, &shape_, btVector3(I.x(), I.y(), I.z()));
+    const Eigen::Quaterniond& q0 = s0.q;
+    info.m_startWorldTransform.setRotation(btQuaternion(q0.x(), q0.y(), q0.z(), q0.w()));
+    info.m_startWorldTransform.setOrigin(btVector3(s0.c.x(), s0.c.y(), s0.c.z()));
+    body_ = std::make_unique<btRigidBody>(info);
+    body_->setFlags(flags);
+    body_->setActivationState(DISABLE_DEACTIVATION);
+    const Eigen::Vector3d w = s0.q * m.inv_inertia.cwiseProduct(s0.q.conjugate() * s0.L);
+    body_->setAngularVelocity(btVector3(w.x(), w.y(), w.z()));
+    const Eigen::Vector3d v = s0.P / m.mass;
+    body_->setLinearVelocity(btVector3(v.x(), v.y(), v.z()));
+    world_.addRigidBody(body_.get());
+  }
+  ~BulletStepper() override { world_.removeRigidBody(body_.get()); }
+  BulletStepper(const BulletStepper&) = delete;
+  BulletStepper& operator=(const BulletStepper&) = delete;
 
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher(&config);
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
-  world.setGravity(btVector3(0, 0, 0));
+  // One internal step of exactly h (maxSubSteps = 0).
+  void step(double h) override { world_.stepSimulation(h, 0); }
 
-  btSphereShape shape(0.1);
-  const Eigen::Vector3d& I = p.model.inertia;
-  btRigidBody::btRigidBodyConstructionInfo info(p.model.mass, nullptr, &shape, btVector3(I.x(), I.y(), I.z()));
-  const Eigen::Quaterniond& q0 = p.s0.q;
-  info.m_startWorldTransform.setRotation(btQuaternion(q0.x(), q0.y(), q0.z(), q0.w()));
-  info.m_startWorldTransform.setOrigin(btVector3(p.s0.c.x(), p.s0.c.y(), p.s0.c.z()));
-  btRigidBody body(info);
-  body.setFlags(flags);
-  body.setActivationState(DISABLE_DEACTIVATION);
-  const Eigen::Vector3d w = p.s0.q * p.model.inv_inertia.cwiseProduct(p.s0.q.conjugate() * p.s0.L);
-  body.setAngularVelocity(btVector3(w.x(), w.y(), w.z()));
-  world.addRigidBody(&body);
+  BodyState state() const override {
+    BodyState s = s0_;
+    const btTransform& tr = body_->getWorldTransform();
+    const btQuaternion r = tr.getRotation();
+    s.q = Eigen::Quaterniond(r.w(), r.x(), r.y(), r.z()).normalized();
+    s.c = Eigen::Vector3d(tr.getOrigin().x(), tr.getOrigin().y(), tr.getOrigin().z());
+    const btVector3 av = body_->getAngularVelocity();
+    const Eigen::Vector3d wb = s.q.conjugate() * Eigen::Vector3d(av.x(), av.y(), av.z());
+    s.L = s.q * m_.inertia.cwiseProduct(wb);
+    return s;
+  }
 
-  const long n = std::max(1L, std::lround(p.duration / dt));
-  const double h = p.duration / static_cast<double>(n);
-  for (long i = 0; i < n; ++i) world.stepSimulation(h, 0);
+ private:
+  const RigidBodyModel& m_;
+  BodyState s0_;
+  btDefaultCollisionConfiguration config_;
+  btCollisionDispatcher dispatcher_;
+  btDbvtBroadphase broadphase_;
+  btSequentialImpulseConstraintSolver solver_;
+  btDiscreteDynamicsWorld world_;
+  btSphereShape shape_{0.1};
+  std::unique_ptr<btRigidBody> body_;
+};
 
-  BodyState s;
-  const btTransform& tr = body.getWorldTransform();
-  const btQuaternion r = tr.getRotation();
-  s.q = Eigen::Quaterniond(r.w(), r.x(), r.y(), r.z()).normalized();
-  s.c = Eigen::Vector3d(tr.getOrigin().x(), tr.getOrigin().y(), tr.getOrigin().z());
-  const btVector3 av = body.getAngularVelocity();
-  const Eigen::Vector3d wb = s.q.conjugate() * Eigen::Vector3d(av.x(), av.y(), av.z());
-  s.L = s.q * p.model.inertia.cwiseProduct(wb);
-  s.P = p.s0.P;
-  world.removeRigidBody(&body);
-  return s;
+}  // namespace
+
+std::vector<PeerConfig> bullet_configs() {
+  const std::pair<const char*, int> flags[] = {
+      {"bullet_none", 0},
+      {"bullet_explicit", BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT},
+      {"bullet_implicit_body", BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY},
+      {"bullet_implicit_world", BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD},
+  };
+  std::vector<PeerConfig> out;
+  for (const auto& [label, f] : flags) {
+    MakeStepper make = [f = f](const RigidBodyModel& m, const BodyState& s0) -> std::unique_ptr<Stepper> {
+      return std::make_unique<BulletStepper>(f, m, s0);
+    };
+    out.push_back({label, "dt",
+                   [make](const RigidBodyModel& m, const BodyState& s0, double T, double dt) {
+                     return run_stepper(make, m, s0, T, dt);
+                   },
+                   make});
+  }
+  return out;
 }
 
 }  // namespace tumble::bench

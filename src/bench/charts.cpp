@@ -1,5 +1,7 @@
 #include "bench/charts.hpp"
 
+#include "bench/peers.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <algorithm>
@@ -41,16 +43,36 @@ std::string num(double v) {
 // Zero errors cannot sit on a log axis: draw them at the floor (noted on the chart).
 double floor_log(double v) { return v > 1e-17 ? v : 1e-17; }
 
-const char* kHeader =
+// 24 distinct colours; peers (Boost.odeint, Bullet, ODE) are drawn dashed.
+std::string linetypes() {
+  static const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+                                  "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000080", "#ff1493",
+                                  "#556b2f", "#b8860b", "#00ced1", "#8b0000", "#4b0082", "#2f4f4f",
+                                  "#ff4500", "#006400", "#a0522d", "#708090", "#c71585", "#000000"};
+  std::string s;
+  for (int i = 0; i < 24; ++i)
+    s += "set linetype " + std::to_string(i + 1) + " lc rgb '" + colours[i] + "' pt " + std::to_string(i % 13 + 1) +
+         " lw 1.5\n";
+  return s;
+}
+
+const std::string kHeader =
     "set terminal pngcairo size 1500,650 font 'sans,11'\n"
     "set grid\nset key outside right top spacing 1.1\n"
     "set style data linespoints\nset pointsize 0.8\n"
-    "set format y '10^{%L}'\nset format x '10^{%L}'\nset logscale xy\n"
-    // Curves 9+ (the peers) get their own colours, dashed, so none repeats a method's style.
-    "set linetype 9 lc rgb '#8c564b' dt 2 pt 4\nset linetype 10 lc rgb '#e377c2' dt 2 pt 5\n"
-    "set linetype 11 lc rgb '#7f7f7f' dt 2 pt 6\nset linetype 12 lc rgb '#bcbd22' dt 2 pt 7\n"
-    "set linetype 13 lc rgb '#17becf' dt 2 pt 8\nset linetype 14 lc rgb '#000080' dt 2 pt 10\n"
-    "set linetype 15 lc rgb '#ff1493' dt 2 pt 12\nset linetype 16 lc rgb '#556b2f' dt 2 pt 14\n";
+    "set format y '10^{%L}'\nset format x '10^{%L}'\nset logscale xy\n" +
+    linetypes();
+
+bool is_peer(const std::string& curve) {
+  static const std::vector<std::string> labels = [] {
+    std::vector<std::string> v;
+    for (const PeerConfig& c : peer_configs()) v.push_back(c.label);
+    return v;
+  }();
+  for (const std::string& l : labels)
+    if (curve.rfind(l, 0) == 0) return true;
+  return false;
+}
 
 // Writes NAME.dat and NAME.gp into dir and runs gnuplot there.
 std::vector<std::filesystem::path> draw(const std::filesystem::path& dir, const std::string& name,
@@ -67,9 +89,14 @@ std::vector<std::filesystem::path> draw(const std::filesystem::path& dir, const 
   return {dir / (name + ".png")};
 }
 
+// One curve per block, each with its own linetype (dashed for peers).
 std::string plot_blocks(const std::string& file, const Blocks& b, const std::string& cols) {
-  return "names = '" + b.words() + "'\nplot for [i=1:words(names)] '" + file + "' index (i-1) using " + cols +
-         " lt i title word(names, i) noenhanced\n";
+  std::string s = "plot ";
+  for (size_t i = 0; i < b.names.size(); ++i)
+    s += std::string(i ? ", \\\n  " : "") + "'" + file + "' index " + std::to_string(i) + " using " + cols + " lt " +
+         std::to_string(i % 24 + 1) + (is_peer(b.names[i]) ? " dt 2" : " dt 1") + " title '" + b.names[i] +
+         "' noenhanced";
+  return s + "\n";
 }
 
 }  // namespace
@@ -87,8 +114,8 @@ std::vector<std::filesystem::path> chart_work_precision(const std::filesystem::p
   for (const auto& [problem, b] : per_problem) {
     const std::string name = "work_precision_" + problem, dat = name + ".dat";
     std::string gp = std::string(kHeader) + "set multiplot layout 1,2 title 'Work-precision: " + problem +
-                     " (error at t = 10 s; lower-left is better; errors of 0 drawn at 1e-17)' noenhanced\n";
-    gp += "set xlabel 'CPU time per 10 s run (s)'\nset ylabel 'orientation error (rad)'\nunset key\n";
+                     " (error at the end of the run; peers dashed; lower-left is better; errors of 0 drawn at 1e-17)' noenhanced\n";
+    gp += "set xlabel 'CPU time per run (s)'\nset ylabel 'orientation error (rad)'\nunset key\n";
     gp += plot_blocks(dat, b, "1:2");
     gp += "set ylabel 'relative energy error |E-E_{ref}|/E_{ref}'\nset key outside right top noenhanced\n";
     gp += plot_blocks(dat, b, "1:3") + "unset multiplot\n";
@@ -117,9 +144,9 @@ std::vector<std::filesystem::path> chart_convergence(const std::filesystem::path
     const std::string name = "convergence_" + problem;
     std::string gp = std::string(kHeader) + "set multiplot layout 1,2 title 'Convergence: " + problem +
                      " (fitted slope over errors in (1e-11, 1e-2) printed in the key)' noenhanced\n";
-    gp += "set xlabel 'step dt (s)'\nset ylabel 'orientation error at t = 10 s (rad)'\nunset key\n";
+    gp += "set xlabel 'step dt (s)'\nset ylabel 'orientation error at the end (rad)'\nunset key\n";
     gp += plot_blocks(name + ".dat", b, "1:2");
-    gp += "set ylabel 'relative energy error at t = 10 s'\nset key outside right top noenhanced\n";
+    gp += "set ylabel 'relative energy error at the end'\nset key outside right top noenhanced\n";
     gp += plot_blocks(name + ".dat", b, "1:3") + "unset multiplot\n";
     auto png = draw(dir, name, b.text(), gp, log);
     out.insert(out.end(), png.begin(), png.end());
@@ -144,18 +171,23 @@ std::vector<std::filesystem::path> chart_stability(const std::filesystem::path& 
     b.add(r.method, num(r.dt) + " " + num(r.spin) + " " + num(r.dt / fx) + " " + num(r.dt * fx) + " " +
                         num(r.spin / fy) + " " + num(r.spin * fy) + " " + std::to_string(static_cast<int>(r.cell)));
   }
+  const size_t panel_cols = b.names.size() > 8 ? 6 : 4, panel_rows = (b.names.size() + panel_cols - 1) / panel_cols;
   std::string gp =
-      "set terminal pngcairo size 1600,900 font 'sans,11'\nset logscale xy\nset format x '10^{%L}'\n"
+      "set terminal pngcairo size " + std::to_string(panel_cols * 400 + 200) + "," + std::to_string(panel_rows * 420 + 60) +
+      " font 'sans,11'\nset logscale xy\nset format x '10^{%L}'\n"
       "set cbrange [-0.5:3.5]\nset palette maxcolors 4\n"
       "set palette defined (0 '#2ca02c', 1 '#f2c80f', 2 '#ff7f0e', 3 '#d62728')\n"
       "set cbtics ('ok' 0, 'inaccurate (>1%%)' 1, 'wrong (flips/axis)' 2, 'diverged' 3)\nunset key\n"
       "set xrange [3e-5:1]\nset yrange [0.5:200]\n"
       "set xlabel 'step dt (s)'\nset ylabel 'spin rate {/Symbol W} (rad/s)'\nset style fill solid 1.0 border lc 'white'\n"
-      "set multiplot layout 2,4 title 'Stability map: T-handle (moments 1, 2, 3 kg m^2) spun at {/Symbol W} about "
+      "set multiplot layout " + std::to_string(panel_rows) + "," + std::to_string(panel_cols) +
+      " margins 0.04,0.9,0.06,0.93 spacing 0.045,0.1 title 'Stability map: T-handle (moments 1, 2, 3 kg m^2) spun at {/Symbol W} about "
       "the intermediate axis (flip count, error at about 10 s) and the major/minor axes (tip-over)'\n";
   for (size_t i = 0; i < b.names.size(); ++i) {
     gp += "set title '" + b.names[i] + "' noenhanced\n";
-    gp += i + 1 == b.names.size() ? "set colorbox\nset rmargin 14\n" : "unset colorbox\n";
+    // The colour key sits in the right margin, so every panel keeps its size.
+    gp += i + 1 == b.names.size() ? "set colorbox user origin screen 0.915, screen 0.3 size screen 0.012, screen 0.4\n"
+                                  : "unset colorbox\n";
     gp += "plot 'stability_map.dat' index " + std::to_string(i) + " using 1:2:3:4:5:6:7 with boxxyerror lc palette\n";
   }
   gp += "unset multiplot\n";

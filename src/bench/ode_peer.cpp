@@ -1,52 +1,88 @@
-// ODE peer: the T-handle as one dBody stepped by dWorldStep.
+// ODE peer: the body as one dBody stepped by dWorldStep.
 #if TUMBLE_HAVE_ODE
 #include <ode/ode.h>
 
-#include <cmath>
-#include <stdexcept>
+#include <memory>
 
 #include "bench/peers.hpp"
 
 namespace tumble::bench {
 
-std::vector<std::string> ode_labels() { return {"ode_default", "ode_gyro_off", "ode_finite_rotation"}; }
+namespace {
 
-BodyState ode_run(const std::string& label, const Problem& p, double dt) {
-  if (label != "ode_default" && label != "ode_gyro_off" && label != "ode_finite_rotation")
-    throw std::invalid_argument("unknown ODE configuration " + label);
-  dInitODE2(0);  // reference counted; paired with dCloseODE below
-  dWorldID world = dWorldCreate();
-  dWorldSetGravity(world, 0, 0, 0);
-  dBodyID b = dBodyCreate(world);
-  dMass mass;
-  const Eigen::Vector3d& I = p.model.inertia;
-  dMassSetParameters(&mass, p.model.mass, 0, 0, 0, I.x(), I.y(), I.z(), 0, 0, 0);
-  dBodySetMass(b, &mass);
-  const Eigen::Quaterniond& q0 = p.s0.q;
-  const dQuaternion qd = {q0.w(), q0.x(), q0.y(), q0.z()};
-  dBodySetQuaternion(b, qd);
-  const Eigen::Vector3d w = p.s0.q * p.model.inv_inertia.cwiseProduct(p.s0.q.conjugate() * p.s0.L);
-  dBodySetAngularVel(b, w.x(), w.y(), w.z());
-  dBodySetAutoDisableFlag(b, 0);
-  if (label == "ode_gyro_off") dBodySetGyroscopicMode(b, 0);
-  if (label == "ode_finite_rotation") dBodySetFiniteRotationMode(b, 1);
+enum class OdeMode { standard, gyro_off, finite_rotation };
 
-  const long n = std::max(1L, std::lround(p.duration / dt));
-  const double h = p.duration / static_cast<double>(n);
-  for (long i = 0; i < n; ++i) dWorldStep(world, h);
+class OdeStepper final : public Stepper {
+ public:
+  OdeStepper(OdeMode mode, const RigidBodyModel& m, const BodyState& s0) : m_(m), s0_(s0) {
+    dInitODE2(0);  // reference counted; paired with dCloseODE in the destructor
+    world_ = dWorldCreate();
+    dWorldSetGravity(world_, 0, 0, 0);
+    body_ = dBodyCreate(world_);
+    dMass mass;
+    const Eigen::Vector3d& I = m.inertia;
+    dMassSetParameters(&mass, m.mass, 0, 0, 0, I.x(), I.y(), I.z(), 0, 0, 0);
+    dBodySetMass(body_, &mass);
+    const Eigen::Quaterniond& q0 = s0.q;
+    const dQuaternion qd = {q0.w(), q0.x(), q0.y(), q0.z()};
+    dBodySetQuaternion(body_, qd);
+    dBodySetPosition(body_, s0.c.x(), s0.c.y(), s0.c.z());
+    const Eigen::Vector3d w = s0.q * m.inv_inertia.cwiseProduct(s0.q.conjugate() * s0.L);
+    dBodySetAngularVel(body_, w.x(), w.y(), w.z());
+    const Eigen::Vector3d v = s0.P / m.mass;
+    dBodySetLinearVel(body_, v.x(), v.y(), v.z());
+    dBodySetAutoDisableFlag(body_, 0);
+    if (mode == OdeMode::gyro_off) dBodySetGyroscopicMode(body_, 0);
+    if (mode == OdeMode::finite_rotation) dBodySetFiniteRotationMode(body_, 1);
+  }
+  ~OdeStepper() override {
+    dWorldDestroy(world_);
+    dCloseODE();
+  }
+  OdeStepper(const OdeStepper&) = delete;
+  OdeStepper& operator=(const OdeStepper&) = delete;
 
-  BodyState s;
-  const dReal* q = dBodyGetQuaternion(b);
-  s.q = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
-  const dReal* c = dBodyGetPosition(b);
-  s.c = Eigen::Vector3d(c[0], c[1], c[2]);
-  const dReal* av = dBodyGetAngularVel(b);
-  const Eigen::Vector3d wb = s.q.conjugate() * Eigen::Vector3d(av[0], av[1], av[2]);
-  s.L = s.q * p.model.inertia.cwiseProduct(wb);
-  s.P = p.s0.P;
-  dWorldDestroy(world);
-  dCloseODE();
-  return s;
+  void step(double h) override { dWorldStep(world_, h); }
+
+  BodyState state() const override {
+    BodyState s = s0_;
+    const dReal* q = dBodyGetQuaternion(body_);
+    s.q = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+    const dReal* c = dBodyGetPosition(body_);
+    s.c = Eigen::Vector3d(c[0], c[1], c[2]);
+    const dReal* av = dBodyGetAngularVel(body_);
+    const Eigen::Vector3d wb = s.q.conjugate() * Eigen::Vector3d(av[0], av[1], av[2]);
+    s.L = s.q * m_.inertia.cwiseProduct(wb);
+    return s;
+  }
+
+ private:
+  const RigidBodyModel& m_;
+  BodyState s0_;
+  dWorldID world_;
+  dBodyID body_;
+};
+
+}  // namespace
+
+std::vector<PeerConfig> ode_configs() {
+  const std::pair<const char*, OdeMode> modes[] = {
+      {"ode_default", OdeMode::standard},
+      {"ode_gyro_off", OdeMode::gyro_off},
+      {"ode_finite_rotation", OdeMode::finite_rotation},
+  };
+  std::vector<PeerConfig> out;
+  for (const auto& [label, mode] : modes) {
+    MakeStepper make = [mode = mode](const RigidBodyModel& m, const BodyState& s0) -> std::unique_ptr<Stepper> {
+      return std::make_unique<OdeStepper>(mode, m, s0);
+    };
+    out.push_back({label, "dt",
+                   [make](const RigidBodyModel& m, const BodyState& s0, double T, double dt) {
+                     return run_stepper(make, m, s0, T, dt);
+                   },
+                   make});
+  }
+  return out;
 }
 
 }  // namespace tumble::bench

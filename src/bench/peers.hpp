@@ -1,7 +1,10 @@
-// Optional peers: the engines users would otherwise pick (Bullet, ODE), run on
-// the T-handle. Each lives in its own file behind #if; absent ones report so.
+// Peers: the engines and libraries users would otherwise pick (Boost.odeint,
+// Bullet, ODE), run on torque-free bodies next to tumble's own methods. Each
+// lives in its own file; Bullet and ODE sit behind #if (odeint ships with Boost).
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -10,18 +13,54 @@
 
 namespace tumble::bench {
 
-/// "bullet 3.24 (double)", ... or empty.
-std::vector<std::string> peers_found();
-/// One markdown bullet per peer configuration: what was set and why.
-std::string peer_settings_markdown();
-/// Work-precision rows (problem "t_handle", method = peer label) over a dt sweep.
-std::vector<WpRow> peer_work_precision(const Problem& t_handle, const Settings& st, std::ostream& log);
+/// One body advanced step by step (the stability map and flip studies watch
+/// every step). Bodies are torque-free, in their principal frame.
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  virtual void step(double h) = 0;       ///< one step of h (s)
+  virtual BodyState state() const = 0;   ///< the seed's (c, q, P, L), world frame
+};
+using MakeStepper = std::function<std::unique_ptr<Stepper>(const RigidBodyModel&, const BodyState&)>;
 
-// Per-engine entry points (defined only when the engine was found): the
-// configuration labels, and one run to p.duration at step dt (s).
-std::vector<std::string> bullet_labels();
-BodyState bullet_run(const std::string& label, const Problem& p, double dt);
-std::vector<std::string> ode_labels();
-BodyState ode_run(const std::string& label, const Problem& p, double dt);
+/// A tumble method as a Stepper (tracks t for the force terms).
+std::unique_ptr<Stepper> method_stepper(Method method, const RigidBodyModel& m, const BodyState& s0);
+
+/// One peer configuration. `run` integrates s0 to T (s) at one `param_name`
+/// value: dt (s) for fixed steps, rtol for adaptive ones (atol = rtol, as
+/// tumble's rk45 in the bench). `make` steps at a fixed h (an adaptive
+/// configuration's underlying pair, as rk45 on the stability map).
+struct PeerConfig {
+  std::string label;       ///< "odeint_rk4_body", "bullet_none", ...
+  std::string param_name;  ///< "dt" or "rtol"
+  std::function<BodyState(const RigidBodyModel&, const BodyState&, double T, double param)> run;
+  MakeStepper make;
+};
+
+/// Every compiled-in peer configuration, odeint first.
+std::vector<PeerConfig> peer_configs();
+
+/// Something that steps at a fixed h: every tumble method, then every peer.
+struct Contender {
+  std::string name;
+  MakeStepper make;
+};
+std::vector<Contender> stepped_contenders();
+
+/// n = round(T/dt) steps of h = T/n with a fresh stepper; the final state.
+BodyState run_stepper(const MakeStepper& make, const RigidBodyModel& m, const BodyState& s0, double T, double dt);
+
+/// "Boost.odeint 1.81 (header-only)", "Bullet 3.24 (double)", ...
+std::vector<std::string> peers_found();
+/// One markdown bullet per engine: what was set and why.
+std::string peer_settings_markdown();
+/// Work-precision rows of every peer configuration on a torque-free problem
+/// (problem name = p.name, method = peer label), over a dt or rtol sweep.
+std::vector<WpRow> peer_work_precision(const Problem& p, const Settings& st, std::ostream& log);
+
+// Per-engine configuration lists (Bullet and ODE defined only when found).
+std::vector<PeerConfig> odeint_configs();
+std::vector<PeerConfig> bullet_configs();
+std::vector<PeerConfig> ode_configs();
 
 }  // namespace tumble::bench

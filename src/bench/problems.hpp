@@ -18,7 +18,9 @@ struct Problem {
   RigidBodyModel model;
   BodyState s0;
   double duration = 10;     ///< s
-  bool torque_free = true;
+  bool torque_free = true;  ///< no forces at all: the reference is the closed form
+  bool peers = false;       ///< also run the peers (torque-free problems only)
+  double dt_max = 0.1;      ///< s, largest fixed step swept (h·|ω| ≈ 1)
   BodyState reference;      ///< state at `duration`
   double reference_check = 0;  ///< forced: |rk45(1e-13) - exact| on the T-handle, rad
 };
@@ -30,6 +32,9 @@ Problem symmetric_top_problem();
 /// T-handle under gravity g = (0, 0, -9.81) m/s² plus a body-fixed 2 N force at (1, 0, 0) m.
 Problem forced_problem();
 std::vector<Problem> all_problems();
+/// A user's body (from a scene) over `duration` (s): the reference is the closed
+/// form when it has no forces, else rk45 at rtol 1e-13; peers when torque-free.
+Problem body_problem(const std::string& name, const RigidBodyModel& m, const BodyState& s0, double duration);
 
 /// A body with principal moments `I` (kg·m²), unit mass, identity principal frame.
 RigidBodyModel diagonal_model(const std::string& name, const Eigen::Vector3d& I, const ForceSet& f = {});
@@ -58,6 +63,9 @@ double thread_cpu_seconds();
 
 /// Log-spaced values from `hi` down to `lo`, `per_decade` per factor of 10.
 std::vector<double> log_sweep(double hi, double lo, int per_decade);
+/// The values 10^(k/per_decade) in [lo, hi], largest first: sweeps over
+/// different ranges share their points.
+std::vector<double> decade_grid(double hi, double lo, int per_decade);
 
 /// Sign changes of the intermediate-axis momentum Π₂ (the Dzhanibekov flips).
 struct FlipCounter {

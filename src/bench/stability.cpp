@@ -2,9 +2,11 @@
 // classified ok / inaccurate / qualitatively wrong / diverged.
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "bench/flips.hpp"
+#include "bench/peers.hpp"
 #include "bench/studies.hpp"
 #include "core/dynamics.hpp"
 #include "core/free_rotation_exact.hpp"
@@ -57,17 +59,19 @@ struct AxisRun {
   BodyState final;
 };
 
-// Steps `method` for T with n = round(T/dt) steps, watching divergence (non-finite
+// Steps a fresh stepper for T with n = round(T/dt) steps, watching divergence (non-finite
 // or energy ×10), the tilt of principal axis `axis` from L, and the Π₂ flips.
-AxisRun watch(Method method, const RigidBodyModel& m, const BodyState& s0, double T, double dt, int axis) {
+AxisRun watch(const MakeStepper& make, const RigidBodyModel& m, const BodyState& s0, double T, double dt, int axis) {
   AxisRun r;
   const long n = std::max(1L, std::lround(T / dt));
   const double h = T / static_cast<double>(n);
   const double e0 = total_energy(m, s0);
+  const std::unique_ptr<Stepper> stepper = make(m, s0);
   BodyState s = s0;
   r.flips.observe(momentum_body(s)[1], 0);
   for (long i = 0; i < n; ++i) {
-    s = step(method, m, s, static_cast<double>(i) * h, h);
+    stepper->step(h);
+    s = stepper->state();
     const double t = static_cast<double>(i + 1) * h;
     const double e = total_energy(m, s);
     if (!s.all_finite() || !std::isfinite(e) || std::abs(e) > 10 * std::abs(e0)) {
@@ -89,6 +93,7 @@ std::vector<StabilityRow> stability_map(const Settings& st, std::ostream& log) {
   const std::vector<double> dts = log_sweep(0.3, st.quick ? 1e-3 : 1e-4, 2);
   const std::vector<double> spins = st.quick ? log_sweep(100, 1, 1) : log_sweep(100, 1, 3);
   const RigidBodyModel m = diagonal_model("t_handle", {1, 2, 3});
+  const std::vector<Contender> contenders = stepped_contenders();
   std::vector<StabilityRow> rows;
   for (double spin : spins) {
     const BodyState mid = spinning_state(m, spin * Eigen::Vector3d(0.001, 1, 0.001));
@@ -113,13 +118,13 @@ std::vector<StabilityRow> stability_map(const Settings& st, std::ostream& log) {
       }
       flips_seen.push_back(fc.count);
     }
-    for (Method method : kAllMethods)
+    for (const Contender& who : contenders)
       for (size_t d = 0; d < dts.size(); ++d) {
         const double dt = dts[d];
-        StabilityRow row{std::string(method_name(method)), dt, spin, T, 0, 0, flips_seen[d], false, Cell::ok};
-        const AxisRun a = watch(method, m, mid, T, dt, 1);
-        const AxisRun b = a.diverged ? a : watch(method, m, major, T, dt, 2);
-        const AxisRun c = a.diverged || b.diverged ? a : watch(method, m, minor, T, dt, 0);
+        StabilityRow row{who.name, dt, spin, T, 0, 0, flips_seen[d], false, Cell::ok};
+        const AxisRun a = watch(who.make, m, mid, T, dt, 1);
+        const AxisRun b = a.diverged ? a : watch(who.make, m, major, T, dt, 2);
+        const AxisRun c = a.diverged || b.diverged ? a : watch(who.make, m, minor, T, dt, 0);
         row.flips = a.flips.count;
         row.tipped = b.max_tilt > 0.1 || c.max_tilt > 0.1;
         if (a.diverged || b.diverged || c.diverged) {
@@ -140,13 +145,13 @@ std::vector<StabilityRow> stability_map(const Settings& st, std::ostream& log) {
 }
 
 void write_stability_csv(const std::filesystem::path& file, const std::vector<StabilityRow>& rows) {
-  std::ofstream f(file);
+  std::ostringstream f;
   f.precision(10);
   f << "method,dt,spin_rad_s,duration_s,cell,cell_name,error,flips,flips_exact,tipped\n";
   for (const StabilityRow& r : rows)
     f << r.method << ',' << r.dt << ',' << r.spin << ',' << r.duration << ',' << static_cast<int>(r.cell) << ','
       << cell_name(r.cell) << ',' << r.error << ',' << r.flips << ',' << r.flips_exact << ',' << r.tipped << '\n';
-  if (!f) throw std::runtime_error("cannot write " + file.string());
+  write_text(file, f.str());
 }
 
 }  // namespace tumble::bench

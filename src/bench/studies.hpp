@@ -31,6 +31,13 @@ struct WpRow {
   double param = 0, cpu_s = 0, angle = 0, energy = 0;
 };
 
+/// The fixed-step sweep on p, from p.dt_max (from p.duration for the closed
+/// form, `exact` on a torque-free body) down 4 decades (--quick: 2), and at
+/// most 1e6 steps (--quick: 1e5) per run.
+std::vector<double> dt_grid(const Settings& st, const Problem& p, bool closed_form);
+/// The rtol sweep of adaptive runs (tumble's rk45 and adaptive peers).
+std::vector<double> rtol_grid(const Settings& st);
+
 std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Settings& st, std::ostream& log);
 void write_work_precision_csv(const std::filesystem::path& file, const std::vector<WpRow>& rows);
 

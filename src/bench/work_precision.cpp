@@ -3,38 +3,35 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 #include "bench/peers.hpp"
 #include "bench/studies.hpp"
 
 namespace tumble::bench {
 
-namespace {
-
-// Shared dt grid so methods can be compared point by point. `exact` starts at
-// 10 s (a single step: its cost floor); the others at 0.1 s (h·|ω| = 1).
-std::vector<double> dt_grid(const Settings& st, Method m) {
-  const double lo = st.quick ? 1e-3 : 1e-5;
-  const int per_decade = st.quick ? 2 : 3;
-  std::vector<double> all = log_sweep(10.0, lo, per_decade), out;
-  for (double dt : all)
-    if (m == Method::exact || dt <= 0.1 * (1 + 1e-9)) out.push_back(dt);
-  return out;
+// Shared dt grid so methods can be compared point by point. The closed form
+// starts at the whole run (a single step: its cost floor); the others at dt_max.
+std::vector<double> dt_grid(const Settings& st, const Problem& p, bool closed_form) {
+  const double hi = closed_form ? p.duration : p.dt_max;
+  const double lo = std::max(p.dt_max * (st.quick ? 1e-2 : 1e-4), p.duration / (st.quick ? 1e5 : 1e6));
+  return decade_grid(hi * (1 + 1e-9), lo * (1 - 1e-9), st.quick ? 2 : 3);
 }
 
 std::vector<double> rtol_grid(const Settings& st) {
   return st.quick ? log_sweep(1e-3, 1e-9, 1) : log_sweep(1e-3, 1e-12, 2);
 }
 
-}  // namespace
-
 std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Settings& st, std::ostream& log) {
   std::vector<WpRow> rows;
   for (const Problem& p : problems) {
     for (Method m : kAllMethods) {
       const bool adaptive = m == Method::rk45;
-      const std::vector<double> params = adaptive ? rtol_grid(st) : dt_grid(st, m);
+      const std::vector<double> params =
+          adaptive ? rtol_grid(st) : dt_grid(st, p, m == Method::exact && p.torque_free);
       for (double par : params) {
         BodyState s;
         auto once = [&] {
@@ -48,7 +45,7 @@ std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Se
       }
       log << "  work-precision " << p.name << " " << method_name(m) << ": " << params.size() << " points\n";
     }
-    if (p.name == "t_handle") {
+    if (p.peers) {
       std::vector<WpRow> peer = peer_work_precision(p, st, log);
       rows.insert(rows.end(), peer.begin(), peer.end());
     }
@@ -57,19 +54,35 @@ std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Se
 }
 
 void write_text(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream f(file);
-  f << text;
-  if (!f) throw std::runtime_error("cannot write " + file.string());
+  // Beside the target, then renamed: a reader sees the old file or the whole new one.
+  std::filesystem::path tmp = file;
+  tmp += ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << text;
+    f.flush();
+    if (!f) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + file.string());
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error("cannot write " + file.string() + ": " + ec.message());
+  }
 }
 
 void write_work_precision_csv(const std::filesystem::path& file, const std::vector<WpRow>& rows) {
-  std::ofstream f(file);
+  std::ostringstream f;
   f.precision(17);
   f << "problem,method,param_name,param,cpu_s,angle_err_rad,energy_rel_err\n";
   for (const WpRow& r : rows)
     f << r.problem << ',' << r.method << ',' << r.param_name << ',' << r.param << ',' << r.cpu_s << ','
       << r.angle << ',' << r.energy << '\n';
-  if (!f) throw std::runtime_error("cannot write " + file.string());
+  write_text(file, f.str());
 }
 
 namespace {
@@ -102,11 +115,11 @@ std::vector<OrderFit> fit_orders(const std::vector<WpRow>& rows) {
 }
 
 void write_orders_csv(const std::filesystem::path& file, const std::vector<OrderFit>& fits) {
-  std::ofstream f(file);
+  std::ostringstream f;
   f.precision(4);
   f << "problem,method,order_angle,order_energy\n";
   for (const OrderFit& o : fits) f << o.problem << ',' << o.method << ',' << o.order_angle << ',' << o.order_energy << '\n';
-  if (!f) throw std::runtime_error("cannot write " + file.string());
+  write_text(file, f.str());
 }
 
 }  // namespace tumble::bench

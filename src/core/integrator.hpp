@@ -1,9 +1,11 @@
-// The integration methods behind one enum (MuJoCo style). Names are part of the
-// interface: scenes, the CLI and the CSV/bench output use them.
+// The integration methods behind one enum and one table (MethodInfo): adding a
+// method is one row in integrator.cpp plus its step function and tests. Names
+// are part of the interface: scenes, the CLI and the CSV/bench output use them.
 #pragma once
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -11,10 +13,44 @@
 
 namespace tumble {
 
-enum class Method { euler, semi_implicit_euler, rk4, rk45, implicit_midpoint, splitting, splitting4, exact };
+enum class Method {
+  euler,
+  semi_implicit_euler,
+  rk4,
+  rk4_seed,
+  rk45,
+  implicit_midpoint,
+  splitting,
+  splitting4,
+  exact
+};
 
-inline constexpr std::array<Method, 8> kAllMethods = {
-    Method::euler,      Method::semi_implicit_euler, Method::rk4,        Method::rk45,
+/// One step of size h (s) from time t (s).
+using StepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s, double t, double h);
+
+/// Everything tumble knows about a method, in one row.
+struct MethodInfo {
+  Method method;
+  std::string_view name;
+  int order;                 ///< global order (rk45: of its 5th-order solution; exact: 0 = exact when torque-free)
+  StepFn step;               ///< one fixed step (rk45: one uncontrolled Dormand–Prince step)
+  bool adaptive;             ///< Propagator runs its own step control with dense output (rk45)
+  bool closed_form_if_free;  ///< Propagator evaluates the closed form at any t when torque-free (exact)
+  bool auto_candidate;       ///< method = "auto" may pick it
+  bool splits_free_rotation; ///< uses the splitting sub-flows (order chosen per body)
+  /// Largest h·|ω| (rad per step) the method follows: beyond it a step cannot
+  /// resolve the rotation (explicit methods) or aliases it between samples.
+  double max_turn_per_step;
+  double cost_ns_free;       ///< ns/step, torque-free T-handle (method_costs.inc, generated)
+  double cost_ns_forced;     ///< ns/step, the microbench's forced problem
+};
+
+/// The table, in enum order.
+std::span<const MethodInfo> method_table();
+const MethodInfo& method_info(Method m);
+
+inline constexpr std::array<Method, 9> kAllMethods = {
+    Method::euler,      Method::semi_implicit_euler, Method::rk4,        Method::rk4_seed, Method::rk45,
     Method::implicit_midpoint, Method::splitting,    Method::splitting4, Method::exact};
 
 std::string_view method_name(Method m);

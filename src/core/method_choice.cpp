@@ -19,11 +19,6 @@ constexpr double kMaxPilotSteps = 1 << 22;
 constexpr double kRoundOff = 1e-13;       // end differences below this are round-off
 constexpr double kMaxRunSteps = 1e9;      // the scenes' step cap (scene::kMaxSteps)
 
-// Candidates: the methods whose error stays bounded over long runs, plus rk4 and
-// rk45 (users' usual picks). The first-order methods are left out: wherever they
-// would be cheapest, splitting costs about the same and keeps |L| exactly.
-constexpr Method kCandidates[] = {Method::rk4, Method::rk45, Method::splitting, Method::splitting4,
-                                  Method::implicit_midpoint, Method::exact};
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -168,19 +163,8 @@ double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodySt
 }
 
 double step_cost_ns(Method method, bool forced) {
-  // ns/step, AMD EPYC 2.6 GHz, g++ 12 -O2, medians of 3: `tumble_microbench
-  // --benchmark_filter='BM_Step/' --benchmark_repetitions=3`.
-  switch (method) {
-    case Method::euler: return forced ? 64 : 34;
-    case Method::semi_implicit_euler: return forced ? 125 : 75;
-    case Method::rk4: return forced ? 225 : 69;
-    case Method::rk45: return forced ? 520 : 266;
-    case Method::implicit_midpoint: return forced ? 420 : 263;
-    case Method::splitting: return forced ? 221 : 63;
-    case Method::splitting4: return forced ? 651 : 198;
-    case Method::exact: return forced ? 1087 : 929;
-  }
-  return 1000;
+  const MethodInfo& i = method_info(method);
+  return forced ? i.cost_ns_forced : i.cost_ns_free;
 }
 
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
@@ -195,9 +179,15 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
   // off: budgets shrink to 4 C (a pilot ladder costs ~2–4 runs of its finest
   // level, so a cheaper method still fits). The likely winners go first.
   double best_cost = std::numeric_limits<double>::infinity();
-  for (Method method : kCandidates) {
+  // Candidates (MethodInfo::auto_candidate): the methods whose error stays
+  // bounded over long runs, plus rk4 and rk45 (users' usual picks). The
+  // first-order methods are left out: wherever they would be cheapest,
+  // splitting costs about the same and keeps |L| exactly.
+  for (const MethodInfo& info : method_table()) {
+    if (!info.auto_candidate) continue;
+    const Method method = info.method;
     const double budget = r.prune ? std::min(kPilotBudgetS, 4 * best_cost) : kPilotBudgetS;
-    c.candidates.push_back(method == Method::rk45 ? rk45_estimate(m, s0, r, budget)
+    c.candidates.push_back(info.adaptive ? rk45_estimate(m, s0, r, budget)
                                                   : fixed_step_estimate(method, m, s0, r, budget));
     if (c.candidates.back().usable) best_cost = std::min(best_cost, c.candidates.back().cost_s);
   }

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/dynamics.hpp"
+#include "core/body_frame.hpp"
 #include "core/error.hpp"
 
 namespace tumble {
@@ -28,20 +28,26 @@ constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 3270041
                  d4 = -10690763975.0 / 1880347072, d5 = 701980252875.0 / 199316789632,
                  d6 = -1453857185.0 / 822651844, d7 = 69997945.0 / 29380423;
 
+// The integration coordinates are Euler's (c, q, P, Π), Π = q̄ L (body_frame.hpp):
+// in them the error keeps off the separatrix as in rk4.
 Vec pack(const BodyState& s) {
+  const BodyCoords x = to_body_coords(s);
   Vec y;
-  y << s.c, s.q.coeffs(), s.P, s.L;
+  y << x.c, x.q.coeffs(), x.P, x.pi;
   return y;
 }
 
-BodyState unpack(const Vec& y) {
-  BodyState s;
-  s.c = y.segment<3>(0);
-  s.q.coeffs() = y.segment<4>(3);
-  s.P = y.segment<3>(7);
-  s.L = y.segment<3>(10);
-  return s;
+BodyCoords coords(const Vec& y) {
+  BodyCoords x;
+  x.c = y.segment<3>(0);
+  x.q.coeffs() = y.segment<4>(3);
+  x.P = y.segment<3>(7);
+  x.pi = y.segment<3>(10);
+  return x;
 }
+
+/// The seed's state: q normalised, L = q Π.
+BodyState unpack(const Vec& y) { return from_body_coords(coords(y)); }
 
 // One Dormand–Prince step from (t, y) with k1 = f(t, y): stages k1..k7 and y1.
 struct Stages {
@@ -65,9 +71,9 @@ Stages dp_stages(const F& f, double t, const Vec& y, const Vec& k1, double h) {
 }
 
 Vec rhs(const RigidBodyModel& m, double t, const Vec& y) {
-  const Derivative d = derivative(m, unpack(y), t);
+  const BodyRate d = body_rate(m, coords(y), t);
   Vec out;
-  out << d.dc, d.dq, d.dP, d.dL;
+  out << d.dc, d.dq, d.dP, d.dpi;
   return out;
 }
 
@@ -140,18 +146,14 @@ BodyState Rk45::advance_to(double t) {
   const double theta = (t - t_prev_) / (t_ - t_prev_), th1 = 1 - theta;
   const Vec y = dense_.col(0) +
                 theta * (dense_.col(1) + th1 * (dense_.col(2) + theta * (dense_.col(3) + th1 * dense_.col(4))));
-  BodyState s = unpack(y);
-  s.q.normalize();
-  return s;
+  return unpack(y);
 }
 
 BodyState rk45_fixed_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
   // One uncontrolled 5th-order Dormand–Prince step (for convergence studies).
   const auto F = [&m](double tt, const Vec& y) { return rhs(m, tt, y); };
   const Vec y = pack(s);
-  BodyState out = unpack(dp_stages(F, t, y, F(t, y), h).y1);
-  out.q.normalize();
-  return out;
+  return unpack(dp_stages(F, t, y, F(t, y), h).y1);
 }
 
 }  // namespace tumble

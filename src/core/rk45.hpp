@@ -1,6 +1,7 @@
 // Adaptive Dormand–Prince 5(4) (Dormand & Prince, J. Comput. Appl. Math. 6, 1980;
 // Hairer–Nørsett–Wanner I, §II.4–5 for step control, dense output and the
-// initial step) on the seed's ODE.
+// initial step) on the seed's ODE in Euler's coordinates (c, q, P, Π = q̄ L),
+// as rk4 (body_frame.hpp).
 #pragma once
 
 #include <limits>
@@ -26,7 +27,7 @@ class Rk45 {
   long accepted() const { return accepted_; }
   long rejected() const { return rejected_; }
 
-  using Vec = Eigen::Matrix<double, 13, 1>;  // (c, q xyzw, P, L)
+  using Vec = Eigen::Matrix<double, 13, 1>;  // (c, q xyzw, P, Π)
 
  private:
   Vec f(double t, const Vec& y) const;

@@ -119,7 +119,7 @@ TEST_F(BenchQuick, ExactIsBestAndErrorsFallWithDt) {
         }
     }
   for (auto& [method, pts] : by) {
-    if (method.rfind("bullet", 0) == 0 || method.rfind("ode", 0) == 0) continue;  // peers: shown, not required
+    if (!tumble::parse_method(method)) continue;  // peers: shown, not required
     std::sort(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.first > b.first; });
     for (size_t i = 0; i + 1 < pts.size(); ++i) {
       // In the asymptotic range (above round-off, below saturation) a smaller
@@ -135,6 +135,71 @@ TEST_F(BenchQuick, ExactIsBestAndErrorsFallWithDt) {
       EXPECT_LT(e_last, e_first) << method;
     }
   }
+}
+
+// Boost.odeint is always built (header-only): its three configurations are on
+// the work-precision, convergence (dt rows), stability and flip studies.
+TEST_F(BenchQuick, OdeintPeersOnEveryStudy) {
+  ASSERT_EQ(rc_, 0);
+  const std::vector<std::string> odeint = {"odeint_rk4_world", "odeint_rk4_body", "odeint_dopri5_body"};
+  std::map<std::string, std::map<double, double>> err;  // label -> param -> angle error, T-handle
+  std::map<std::string, std::string> param_name;
+  for (const Row& r : read_csv(dir_ / "work_precision.csv"))
+    if (r.at("problem") == "t_handle") err[r.at("method")][num(r, "param")] = num(r, "angle_err_rad"),
+                                       param_name[r.at("method")] = r.at("param_name");
+  for (const std::string& l : odeint) {
+    ASSERT_TRUE(err.count(l)) << l;
+    EXPECT_GE(err[l].size(), 4u) << l;
+    EXPECT_EQ(param_name[l], l == "odeint_dopri5_body" ? "rtol" : "dt") << l;
+  }
+  // Same method, same steps, different coordinates (issue 10 §1): Euler's
+  // equations for Π keep the near-separatrix T-handle far more accurately than
+  // (q, L_world) with q normalised inside f. At dt = 1e-3 s (10⁴ steps):
+  auto at = [&](const std::string& l, double dt) {
+    for (auto [p, e] : err[l])
+      if (std::abs(p / dt - 1) < 1e-9) return e;
+    return std::nan("");
+  };
+  const double body = at("odeint_rk4_body", 1e-3), world = at("odeint_rk4_world", 1e-3);
+  EXPECT_LT(body, 1e-7);
+  EXPECT_LT(100 * body, world);
+  // Fourth order: 10× smaller step, ≥ 10³× smaller error, in the asymptotic range.
+  EXPECT_LT(1e3 * body, at("odeint_rk4_body", 1e-2));
+  std::set<std::string> stab, flips;
+  for (const Row& r : read_csv(dir_ / "stability_map.csv")) stab.insert(r.at("method"));
+  for (const Row& r : read_csv(dir_ / "dzhanibekov.csv")) flips.insert(r.at("method"));
+  for (const std::string& l : odeint) {
+    EXPECT_TRUE(stab.count(l)) << l;
+    EXPECT_TRUE(flips.count(l)) << l;
+  }
+}
+
+// cheapest.csv: per problem and tolerance, every contender once and exactly one
+// winner, the cheapest of those that reached the tolerance.
+TEST_F(BenchQuick, CheapestTableHasOneWinnerPerTolerance) {
+  ASSERT_EQ(rc_, 0);
+  std::map<std::pair<std::string, double>, std::vector<Row>> by;
+  for (const Row& r : read_csv(dir_ / "cheapest.csv")) by[{r.at("problem"), num(r, "tolerance_rad")}].push_back(r);
+  ASSERT_EQ(by.size(), 3u * 8u);  // 3 problems × 1e-3 … 1e-10
+  for (const auto& [key, rows] : by) {
+    int winners = 0;
+    double best = INFINITY, win_cpu = NAN;
+    for (const Row& r : rows) {
+      const double cpu = num(r, "cpu_s");
+      if (std::isfinite(cpu)) {
+        best = std::min(best, cpu);
+        EXPECT_LE(num(r, "angle_err_rad"), key.second) << r.at("method");
+      }
+      if (r.at("winner") == "1") ++winners, win_cpu = cpu;
+    }
+    if (std::isfinite(best)) {
+      EXPECT_EQ(winners, 1) << key.first << " " << key.second;
+      EXPECT_EQ(win_cpu, best);
+    }
+  }
+  // Loose tolerances are reached by someone on every problem.
+  EXPECT_TRUE(std::any_of(by[{"t_handle", 1e-3}].begin(), by[{"t_handle", 1e-3}].end(),
+                          [](const Row& r) { return r.at("winner") == "1"; }));
 }
 
 TEST_F(BenchQuick, EulerEnergyGrowsMidpointDoesNot) {

@@ -51,7 +51,8 @@ TEST_P(Convergence, MeasuredOrderMatchesExpected) {
 INSTANTIATE_TEST_SUITE_P(FixedStepMethods, Convergence,
                          ::testing::Values(OrderCase{Method::euler, 1, 1e-3},
                                            OrderCase{Method::semi_implicit_euler, 1, 1e-3},
-                                           OrderCase{Method::rk4, 4, 1e-2},
+                                           OrderCase{Method::rk4, 4, 4e-2},
+                                           OrderCase{Method::rk4_seed, 4, 1e-2},
                                            OrderCase{Method::implicit_midpoint, 2, 1e-2},
                                            OrderCase{Method::splitting, 2, 1e-2},
                                            OrderCase{Method::splitting4, 4, 1e-2}),
@@ -62,6 +63,7 @@ TEST(Convergence, MethodOrderTable) {
   EXPECT_EQ(method_order(Method::euler), 1);
   EXPECT_EQ(method_order(Method::semi_implicit_euler), 1);
   EXPECT_EQ(method_order(Method::rk4), 4);
+  EXPECT_EQ(method_order(Method::rk4_seed), 4);
   EXPECT_EQ(method_order(Method::implicit_midpoint), 2);
   EXPECT_EQ(method_order(Method::splitting), 2);
   EXPECT_EQ(method_order(Method::splitting4), 4);

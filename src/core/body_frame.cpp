@@ -1,0 +1,62 @@
+#include "core/body_frame.hpp"
+
+#include "core/body_frame_tuned.hpp"
+#include "core/dynamics.hpp"
+
+namespace tumble {
+
+BodyCoords to_body_coords(const BodyState& s) { return {s.c, s.q, s.P, s.q.conjugate() * s.L}; }
+
+BodyState from_body_coords(const BodyCoords& x) {
+  BodyState s;
+  s.c = x.c;
+  s.q = x.q.normalized();
+  s.P = x.P;
+  s.L = s.q * x.pi;
+  return s;
+}
+
+BodyRate body_rate(const RigidBodyModel& m, const BodyCoords& x, double t) {
+  BodyRate d;
+  const Eigen::Vector3d w = m.inv_inertia.cwiseProduct(x.pi);  // ω_body, rad/s
+  d.dc = x.P / m.mass;
+  // q' = ½ Q(q) ω_body, the seed's matrix form: (w ω/2 + u × ω/2, -u·ω/2).
+  const Eigen::Vector3d wh = 0.5 * w;
+  d.dq << x.q.w() * wh + x.q.vec().cross(wh), -x.q.vec().dot(wh);
+  d.dpi = x.pi.cross(w);
+  if (m.forces.empty()) {
+    d.dP.setZero();
+  } else {
+    const BodyState s = from_body_coords(x);
+    const Wrench f = wrench(m, s, t);
+    d.dP = f.force;
+    d.dpi += s.q.conjugate() * f.torque;
+  }
+  return d;
+}
+
+BodyCoords add_scaled(const BodyCoords& x, double h, const BodyRate& d) {
+  BodyCoords o;
+  o.c = x.c + h * d.dc;
+  o.q.coeffs() = x.q.coeffs() + h * d.dq;
+  o.P = x.P + h * d.dP;
+  o.pi = x.pi + h * d.dpi;
+  return o;
+}
+
+BodyState rk4_body_reference(const RigidBodyModel& m, const BodyState& s, double t, double h) {
+  const double ha = h * 0.5, b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
+  const BodyCoords x = to_body_coords(s);
+  const BodyRate k1 = body_rate(m, x, t);
+  const BodyRate k2 = body_rate(m, add_scaled(x, ha, k1), t + 0.5 * h);
+  const BodyRate k3 = body_rate(m, add_scaled(x, ha, k2), t + 0.5 * h);
+  const BodyRate k4 = body_rate(m, add_scaled(x, h, k3), t + h);
+  return from_body_coords(add_scaled(add_scaled(add_scaled(add_scaled(x, b1, k1), b2, k2), b2, k3), b1, k4));
+}
+
+BodyState rk4_body_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
+  if (m.forces.empty()) return tuned::rk4_body_free(m, s, h);
+  return rk4_body_reference(m, s, t, h);
+}
+
+}  // namespace tumble
