@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace tumble::golden {
@@ -133,20 +134,20 @@ Comparison compare_images(const render::Image& actual, const render::Image& expe
   c.region_ok = c.region <= o.max_region;
   c.window_ok = c.window_mean <= o.max_window_mean;
   c.pass = c.fraction_ok && c.region_ok && c.window_ok;
-  const Box& r = c.region_box;
-  const Box& wb = c.window_box;
-  int len = std::snprintf(
-      line, sizeof line,
-      "%ld of %zu pixels over delta %d (fraction %.6f, limit %.6f), largest region %ld px at (%d,%d)-(%d,%d) "
-      "(limit %ld), worst %dx%d mean %.2f at (%d,%d) (limit %g), max delta %d, RMS %.3f",
-      c.over, n, o.max_delta, c.fraction, o.max_fraction, c.region, r.empty() ? 0 : r.x0, r.empty() ? 0 : r.y0,
-      r.empty() ? 0 : r.x1, r.empty() ? 0 : r.y1, o.max_region, o.window, o.window, c.window_mean,
-      wb.empty() ? 0 : wb.x0, wb.empty() ? 0 : wb.y0, o.max_window_mean, c.max_delta, c.rms);
-  if (!c.pass && len > 0 && static_cast<std::size_t>(len) < sizeof line)
-    std::snprintf(line + len, sizeof line - static_cast<std::size_t>(len), "; over the limit: %s%s%s",
-                  c.fraction_ok ? "" : "fraction ", c.region_ok ? "" : "region ", c.window_ok ? "" : "window-mean");
-  c.summary = line;
-  while (!c.summary.empty() && c.summary.back() == ' ') c.summary.pop_back();
+  auto at = [](const Box& b) {
+    return b.empty() ? std::string() : " at (" + std::to_string(b.x0) + "," + std::to_string(b.y0) + ")-(" +
+                                           std::to_string(b.x1) + "," + std::to_string(b.y1) + ")";
+  };
+  std::snprintf(line, sizeof line, "%ld of %zu pixels over delta %d (fraction %.6f, limit %.6f), largest region %ld px%s (limit %ld), ",
+                c.over, n, o.max_delta, c.fraction, o.max_fraction, c.region, at(c.region_box).c_str(), o.max_region);
+  std::string sum = line;
+  std::snprintf(line, sizeof line, "worst %dx%d mean %.2f%s (limit %g), max delta %d, RMS %.3f", o.window, o.window,
+                c.window_mean, at(c.window_box).c_str(), o.max_window_mean, c.max_delta, c.rms);
+  sum += line;
+  if (!c.pass)
+    sum += std::string("; over the limit:") + (c.fraction_ok ? "" : " fraction") + (c.region_ok ? "" : " region") +
+           (c.window_ok ? "" : " window-mean");
+  c.summary = sum;
   return c;
 }
 
