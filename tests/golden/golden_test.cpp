@@ -248,10 +248,25 @@ TEST_F(GoldenCli, ChangedImageWritesTheFourPicturesAndTheIndex) {
   EXPECT_NE(html.find("max delta"), std::string::npos);
 }
 
-TEST_F(GoldenCli, TimesMustBeFrameTimes) {
-  const Result r = run(std::string("golden '") + kTiny + "' --at 0.15 --dir '" + dir_.string() + "'");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("not a frame time"), std::string::npos) << r.err;
+// Times pick the nearest frame (within half a frame), as decimals or simple
+// fractions; --frames takes frame numbers (issue 13 item 5).
+TEST_F(GoldenCli, TimesPickTheNearestFrameOrFrameNumbers) {
+  const std::string base = std::string("golden '") + kTiny + "' --dir '" + (dir_ / "g").string() + "' --report '" +
+                           (dir_ / "rep").string() + "' --width 32 --height 24 --msaa 0 --every 100";
+  const Result made = run(base + " --at 1/10 --update");  // tiny_render: 10 fps
+  ASSERT_EQ(made.code, 0) << made.out << made.err;
+  EXPECT_TRUE(fs::exists(dir_ / "g" / "tiny_render_f000001_msaa0.png")) << made.out;
+  for (const char* pick : {"--at 0.1", "--at 0.0999999", "--at 0.14", "--at 0.06", "--frames 1", "--at 1/10,0.1"}) {
+    const Result r = run(base + " " + pick);
+    EXPECT_EQ(r.code, 0) << pick << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("(frame 1)"), std::string::npos) << pick << "\n" << r.out;
+  }
+  for (const char* bad : {"--at -0.1", "--at 0.7", "--frames 7", "--frames 1.5", "--frames -1", "--at 1/0", "--at x",
+                          "--at 0.1 --frames 1", ""}) {
+    const Result r = run(base + " " + bad);
+    EXPECT_EQ(r.code, 2) << "'" << bad << "'\n" << r.out << r.err;
+  }
+  EXPECT_NE(run(base + " --frames 7").err.find("last frame 6"), std::string::npos);
 }
 
 }  // namespace
