@@ -10,8 +10,8 @@
 
 namespace {
 
-tumble::render::Image gradient(int w, int h) {
-  tumble::render::Image img{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3)};
+tumble::io::Image gradient(int w, int h) {
+  tumble::io::Image img{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3)};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       for (int ch = 0; ch < 3; ++ch)

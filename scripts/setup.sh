@@ -1,20 +1,32 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages tumble needs (only those missing), then
-# configures and builds the release preset. Safe to run again.
+# Installs the Debian 12 packages tumble needs (only those missing). Safe to run
+# again. `setup.sh render`: what building `tumble` and rendering need (the
+# demo). `setup.sh test`: that plus what the tests, benchmarks, peers and
+# fuzzers need.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-PACKAGES=(
+RENDER_PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libboost-dev                     # core: linear algebra, elliptic functions
   libtomlplusplus-dev libcli11-dev               # scenes, command line
   libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev  # headless GL (OSMesa / EGL), camera maths
   libstb-dev libdeflate-dev fonts-dejavu-core    # PNG in/out, text overlay
+  nlohmann-json3-dev                             # JSON (manifest, golden sidecars, info --json)
+  ffmpeg                                         # videos (run as a program)
+)
+TEST_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev     # tests, microbenchmarks
-  ffmpeg gnuplot-nox                             # videos, charts (run as programs)
+  gnuplot-nox                                    # `tumble bench` charts (run as a program)
   libbullet-dev libode-dev                       # optional peers for `tumble bench`
   clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)
 )
+
+case "${1:-test}" in
+  render) PACKAGES=("${RENDER_PACKAGES[@]}") ;;
+  test) PACKAGES=("${RENDER_PACKAGES[@]}" "${TEST_PACKAGES[@]}") ;;
+  *) echo "usage: $0 [render|test]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -27,6 +39,3 @@ if ((${#missing[@]})); then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-
-cmake --preset release >/dev/null
-cmake --build --preset release

@@ -6,9 +6,9 @@
 #include <memory>
 #include <sstream>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "bench/bench.hpp"
+#include "io/atomic_file.hpp"
 #ifdef TUMBLE_HAVE_RENDER
 #include "app/render_bench.hpp"
 #include "render/resource_dir.hpp"
@@ -59,7 +59,7 @@ int rewrite_readme(const std::string& file) {
   replace("");  // the markers are checked before the minute of measuring
   const std::string table = bench::readme_accuracy_table(std::cout);
   const std::string out = replace(table);
-  atomic_write_file(file, out);
+  io::atomic_write_file(file, out);
   std::cout << table << "wrote the table into " << file << "\n";
   return kOk;
 }

@@ -8,7 +8,7 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "golden/compare.hpp"
-#include "render/png_io.hpp"
+#include "io/png.hpp"
 
 namespace tumble::app {
 
@@ -37,10 +37,10 @@ std::string box_text(const golden::Box& b) {
 
 int run_compare(const CompareCliOptions& o) {
   check_tolerance(o.cmp);
-  render::Image a, b;
+  io::Image a, b;
   try {
-    a = render::read_png(o.a);
-    b = render::read_png(o.b);
+    a = io::read_png(o.a);
+    b = io::read_png(o.b);
   } catch (const std::exception& e) {
     std::cerr << "tumble compare: " << e.what() << "\n";
     return kInputError;
@@ -57,9 +57,9 @@ int run_compare(const CompareCliOptions& o) {
     std::fflush(stdout);
   }
   if (!o.diff.empty() && !c.size_mismatch) {
-    render::Image d = golden::amplified_difference(a, b);
+    io::Image d = golden::amplified_difference(a, b);
     golden::outline_offenders(d, c);
-    render::write_png_atomic(o.diff, d);
+    io::write_png_atomic(o.diff, d);
     std::cout << "difference x16 written to " << o.diff << " (largest region outlined in yellow, worst window in cyan)\n";
   }
   return c.pass ? kOk : 1;

@@ -12,15 +12,16 @@
 #include <set>
 #include <sstream>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "app/frame_renderer.hpp"
 #include "core/error.hpp"
 #include "golden/compare.hpp"
 #include "golden/report.hpp"
 #include "golden/trajectory.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json.hpp"
+#include "io/png.hpp"
 #include "render/gl_context.hpp"
-#include "render/png_io.hpp"
 
 namespace tumble::app {
 
@@ -73,9 +74,11 @@ double parse_time(const std::string& s) {
 }
 
 /// Golden frames from `--at` times (each matched to the nearest frame k =
-/// round(t * fps), so any time within half a frame of a frame time names that
-/// frame) or from `--frames` numbers; sorted, without repeats.
-std::vector<long> golden_frames(const std::string& at, const std::string& frames, double fps, long count) {
+/// round(video_time(t) * fps), so any time within half a frame of a frame
+/// time names that frame; time_scale / slow motion are the clock's) or from `--frames` numbers; sorted, without repeats.
+std::vector<long> golden_frames(const std::string& at, const std::string& frames, const scene::FrameClock& clock) {
+  const double fps = clock.fps();
+  const long count = clock.count();
   if (at.empty() == frames.empty())
     throw InputError(at.empty() ? "give --at times or --frames numbers, e.g. --at 0.5,2 or --frames 15,60"
                                 : "--at and --frames: give one of them, not both");
@@ -90,14 +93,14 @@ std::vector<long> golden_frames(const std::string& at, const std::string& frames
     if (by_time) {
       const double t = parse_time(item);
       if (t < 0) throw InputError("--at " + item + ": expected a time >= 0 s");
-      k = std::round(t * fps);
+      k = std::round(clock.video_time(t) * fps);
     } else {
       k = parse_num("--frames", item);
       if (k < 0 || k != std::floor(k)) throw InputError("--frames " + item + ": expected a frame number (integer >= 0)");
     }
     if (k >= static_cast<double>(count))
       throw InputError(std::string(opt) + " " + item + ": past the end of the scene (last frame " +
-                       std::to_string(count - 1) + ", t = " + format_double(static_cast<double>(count - 1) / fps) + " s)");
+                       std::to_string(count - 1) + ", t = " + format_double(clock.time(count - 1)) + " s)");
     ks.insert(static_cast<long>(k));
   }
   return {ks.begin(), ks.end()};
@@ -111,13 +114,11 @@ std::string slurp(const fs::path& p, bool& ok) {
   return s.str();
 }
 
-/// The value of "key": "..." in our own sidecar JSON (no general parser needed).
-std::string sidecar_field(const std::string& json, const std::string& key) {
-  const std::string pat = "\"" + key + "\": \"";
-  const auto a = json.find(pat);
-  if (a == std::string::npos) return "?";
-  const auto b = json.find('"', a + pat.size());
-  return b == std::string::npos ? "?" : json.substr(a + pat.size(), b - a - pat.size());
+/// A string field of a sidecar, or "?".
+std::string sidecar_field(const std::optional<io::Json>& j, const char* key) {
+  if (!j) return "?";
+  const auto it = j->find(key);
+  return it != j->end() && it->is_string() ? it->get<std::string>() : "?";
 }
 
 int run_golden(const GoldenOptions& o) {
@@ -134,13 +135,13 @@ int run_golden(const GoldenOptions& o) {
     msaas.push_back(std::stoi(m));
   }
   const double fps = s.render.output.fps;
-  const long count = frame_count(s.simulation.duration, fps);
-  const std::vector<long> ks = golden_frames(o.at, o.frames, fps, count);
+  const scene::FrameClock clock = scene::frame_clock(s, fps);
+  const std::vector<long> ks = golden_frames(o.at, o.frames, clock);
   const fs::path dir = o.dir;
   const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
+  if (ec) throw io::IoError("cannot create " + dir.string() + ": " + ec.message());
 
   const SceneFrames frames(s, ks.back());
   golden::Report report(report_dir, "tumble golden: " + s.name + " (" + s.path.string() + ")");
@@ -162,7 +163,7 @@ int run_golden(const GoldenOptions& o) {
     const std::string what = "physics " + path.filename().string();
     if (o.update) {
       if (!ok || expected != actual) {
-        atomic_write_file(path, actual);
+        io::atomic_write_file(path, actual);
         ++written;
         std::cout << (ok ? "updated  " : "created  ") << path.string()
                   << (ok ? "  (was: " + golden::compare_trajectories(actual, expected, o.tol).summary + ")" : "") << "\n";
@@ -184,7 +185,7 @@ int run_golden(const GoldenOptions& o) {
     const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
     for (int msaa : msaas) {
       int samples = 0;
-      const std::vector<render::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
+      const std::vector<io::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
       for (std::size_t i = 0; i < ks.size(); ++i) {
         const long k = ks[i];
         char base[160];
@@ -192,46 +193,42 @@ int run_golden(const GoldenOptions& o) {
         const fs::path png = dir / (std::string(base) + ".png"), side = dir / (std::string(base) + ".json");
         char what[200];
         std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) msaa %d %dx%d", s.name.c_str(),
-                      static_cast<double>(k) / fps, k, msaa, o.width, o.height);
-        const render::Image& actual = images[i];
-        std::optional<render::Image> expected;
+                      clock.time(k), k, msaa, o.width, o.height);
+        const io::Image& actual = images[i];
+        std::optional<io::Image> expected;
         std::string read_error;
         if (fs::exists(png)) {
           try {
-            expected = render::read_png(png);
+            expected = io::read_png(png);
           } catch (const std::exception& e) {
             read_error = e.what();
           }
         }
         if (o.update) {
-          std::ostringstream j;
-          j << "{\n  \"scene\": \"" << json_escape(s.path.filename().string()) << "\",\n  \"t\": "
-            << format_double(static_cast<double>(k) / fps) << ",\n  \"frame\": " << k << ",\n  \"fps\": "
-            << format_double(fps) << ",\n  \"width\": " << o.width << ",\n  \"height\": " << o.height
-            << ",\n  \"msaa\": " << msaa << ",\n  \"samples\": " << samples << ",\n  \"gl_backend\": \""
-            << render::to_string(backend) << "\",\n  \"gl_renderer\": \"" << json_escape(gl_renderer)
-            << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"tumble_version\": \""
-            << TUMBLE_VERSION << "\"\n}\n";
+          const io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
+                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", msaa},
+                           {"samples", samples}, {"gl_backend", render::to_string(backend)},
+                           {"gl_renderer", gl_renderer}, {"gl_version", gl_version},
+                           {"tumble_version", TUMBLE_VERSION}};
           const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
                             expected->rgb == actual.rgb;
-          bool side_ok = false;
-          const bool side_same = slurp(side, side_ok) == j.str();
+          const std::optional<io::Json> old_side = io::read_json_file(side);
+          const bool side_same = old_side && *old_side == j;  // by value: 30 and 30.0 are one fps
           if (!same) {
-            render::write_png_atomic(png, actual);
+            io::write_png_atomic(png, actual);
             std::cout << (expected ? "updated  " : "created  ") << png.string()
                       << (expected ? "  (was: " + golden::compare_images(actual, *expected, o.cmp).summary + ")" : "")
                       << "\n";
           }
           if (!same || !side_same) {
-            atomic_write_file(side, j.str());
+            io::write_json_atomic(side, j);
             ++written;
           }
           continue;
         }
-        bool side_ok = false;
-        const std::string sidecar = slurp(side, side_ok);
+        const std::optional<io::Json> sidecar = io::read_json_file(side);
         const std::string note = "expected made with " +
-                                 (side_ok ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
+                                 (sidecar ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
                                           : std::string("? (no sidecar ") + side.filename().string() + ")") +
                                  "; actual with " + gl_renderer + ", " + gl_version;
         if (!fs::exists(png)) {

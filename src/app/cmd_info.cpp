@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "io/json.hpp"
 
 namespace tumble::app {
 
@@ -41,39 +42,38 @@ BodyInfo world_info(const scene::Body& b) {
   return i;
 }
 
-std::string vec_json(const Eigen::Vector3d& v) {
+/// [x, y, z] as text, for the table of to_text.
+std::string vec_text(const Eigen::Vector3d& v) {
   return "[" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) + "]";
 }
 
-std::string mat_json(const Eigen::Matrix3d& m) {  // rows
-  std::string out = "[";
-  for (int r = 0; r < 3; ++r) out += (r ? ", " : "") + vec_json(m.row(r).transpose());
-  return out + "]";
+io::Json vec_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+io::Json mat_json(const Eigen::Matrix3d& m) {  // rows
+  return {vec_json(m.row(0).transpose()), vec_json(m.row(1).transpose()), vec_json(m.row(2).transpose())};
 }
 
 std::string to_json(const scene::Scene& s) {
-  std::ostringstream o;
-  o << "{\n  \"bodies\": [";
-  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
-    const BodyInfo i = world_info(s.bodies[k]);
-    o << (k ? "," : "") << "\n    {\n"
-      << "      \"name\": \"" << i.name << "\",\n"  // names are [A-Za-z0-9_.-] only: no escaping needed
-      << "      \"mass\": " << format_double(i.mass) << ",\n"
-      << "      \"com\": " << vec_json(i.com) << ",\n"
-      << "      \"inertia\": " << mat_json(i.inertia) << ",\n"
-      << "      \"principal_moments\": " << vec_json(i.moments) << ",\n"
-      << "      \"principal_axes\": " << mat_json(i.axes) << ",\n"
-      << "      \"box\": {\"center\": " << vec_json(i.box_center)
-      << ", \"half_extents\": " << vec_json(i.half_extents) << "}\n    }";
+  io::Json bodies = io::Json::array();
+  for (const scene::Body& b : s.bodies) {
+    const BodyInfo i = world_info(b);
+    io::Json j;
+    j["name"] = i.name;
+    j["mass"] = i.mass;
+    j["com"] = vec_json(i.com);
+    j["inertia"] = mat_json(i.inertia);
+    j["principal_moments"] = vec_json(i.moments);
+    j["principal_axes"] = mat_json(i.axes);
+    j["box"] = {{"center", vec_json(i.box_center)}, {"half_extents", vec_json(i.half_extents)}};
+    bodies.push_back(std::move(j));
   }
-  o << "\n  ]\n}\n";
-  return o.str();
+  return io::json_text(io::Json{{"bodies", std::move(bodies)}});
 }
 
 std::string to_text(const scene::Scene& s) {
   std::ostringstream o;
   o << "scene " << s.name << " (" << s.path.string() << ", fnv1a " << s.content_hash << ")\n";
-  auto row = [](const Eigen::Vector3d& v) { return vec_json(v); };
+  auto row = [](const Eigen::Vector3d& v) { return vec_text(v); };
   for (const scene::Body& b : s.bodies) {
     const BodyInfo i = world_info(b);
     o << "\nbody " << i.name << " (" << i.particles << " particles)\n"

@@ -11,7 +11,8 @@
 #include <optional>
 #include <sstream>
 
-#include "app/atomic_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/frame_files.hpp"
 #include "app/commands.hpp"
 #include "app/progress.hpp"
 #include "app/render_output.hpp"
@@ -117,12 +118,12 @@ int run_render(const RenderOptions& o) {
   apply_overrides(o, s);
   const scene::OutputConfig& out = s.render.output;
   const double fps = out.fps;
-  const long count = frame_count(s.simulation.duration, fps);
+  const long count = scene::frame_clock(s, fps).count();
   const fs::path dir = o.out_dir.empty() ? fs::path("out") / s.name : fs::path(o.out_dir);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw IoError("cannot create output folder '" + dir.string() + "': " + ec.message());
-  if (!fs::is_directory(dir, ec)) throw IoError("output path '" + dir.string() + "' is not a folder");
+  if (ec) throw io::IoError("cannot create output folder '" + dir.string() + "': " + ec.message());
+  if (!fs::is_directory(dir, ec)) throw io::IoError("output path '" + dir.string() + "' is not a folder");
 
   Manifest man;
   man.scene_path = s.path.string();
@@ -183,11 +184,11 @@ int run_render(const RenderOptions& o) {
   const StopSignals stop;
   auto on_disk = [&] {
     long n = 0;
-    for (long k = first; k <= last; ++k) n += fs::exists(frame_path(dir, k), ec) ? 1 : 0;
+    for (long k = first; k <= last; ++k) n += fs::exists(io::frame_path(dir, k), ec) ? 1 : 0;
     return n;
   };
   if (resume) man.written = on_disk();
-  atomic_write_file(dir / "manifest.json", man.json());
+  io::atomic_write_file(dir / "manifest.json", man.json());
 
   Progress progress(last - first + 1, o.progress != "none");
   long skipped = 0;
@@ -196,13 +197,13 @@ int run_render(const RenderOptions& o) {
     render::FrameEncoder encoder(2, 4);
     for (long k = first; k <= last && k < good; ++k) {
       if ((signal = stop.received()) != 0) break;
-      if (resume && fs::exists(frame_path(dir, k), ec)) {
+      if (resume && fs::exists(io::frame_path(dir, k), ec)) {
         ++skipped;  // written whole by an earlier run (rename is atomic)
       } else {
         // Reuse a written frame's buffer: a fresh 2.7 MB image per frame costs page faults.
-        render::Image img = encoder.recycle();
+        io::Image img = encoder.recycle();
         renderer.render(builder.build(k), img);
-        encoder.submit(frame_path(dir, k), std::move(img));
+        encoder.submit(io::frame_path(dir, k), std::move(img));
       }
       progress.update(k - first + 1);
     }
@@ -210,10 +211,10 @@ int run_render(const RenderOptions& o) {
   } catch (const std::runtime_error& e) {  // a frame could not be written: disk full, permissions
     man.written = on_disk();
     try {
-      atomic_write_file(dir / "manifest.json", man.json());
+      io::atomic_write_file(dir / "manifest.json", man.json());
     } catch (const std::exception&) {  // the disk that failed the frame may fail this too
     }
-    throw IoError(e.what());
+    throw io::IoError(e.what());
   }
   progress.finish();
   if (signal == 0) signal = stop.received();  // arrived during the last frames: they are whole anyway
@@ -221,7 +222,7 @@ int run_render(const RenderOptions& o) {
   man.complete = man.written == last - first + 1;
   if (!man.complete || signal != 0) {
     man.complete = false;
-    atomic_write_file(dir / "manifest.json", man.json());
+    io::atomic_write_file(dir / "manifest.json", man.json());
     if (signal != 0) {
       std::cerr << "tumble: interrupted (" << (signal == SIGINT ? "SIGINT" : "SIGTERM") << "): kept " << man.written
                 << " of " << last - first + 1 << " frames in " << dir.string() << "\n"
@@ -241,7 +242,7 @@ int run_render(const RenderOptions& o) {
     if (err.empty()) man.video = video.filename().string();
     else std::cerr << "tumble: " << err << "\n";
   }
-  atomic_write_file(dir / "manifest.json", man.json());
+  io::atomic_write_file(dir / "manifest.json", man.json());
   std::cout << "rendered frames " << first << ".." << last << " of " << count << " into " << dir.string()
             << (skipped ? " (" + std::to_string(skipped) + " already on disk)" : std::string())
             << (man.video.empty() ? "" : " (video " + man.video + ")") << "\n";
@@ -257,7 +258,7 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)");
   cmd->add_option("--width", o->width, "Frame width, px");
   cmd->add_option("--height", o->height, "Frame height, px");
-  cmd->add_option("--fps", o->fps, "Frames per second (frame k shows t = k/fps)");
+  cmd->add_option("--fps", o->fps, "Frames per second (frame k shows t = k·time_scale/fps)");
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
   cmd->add_option("--quality", o->quality, "low (no MSAA, CRF 28), medium (2x, CRF 23), high (4x, CRF 18)");

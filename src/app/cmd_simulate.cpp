@@ -5,10 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "core/dynamics.hpp"
 #include "core/propagator.hpp"
+#include "io/atomic_file.hpp"
+#include "io/trajectory_csv.hpp"
 
 namespace tumble::app {
 
@@ -21,20 +22,18 @@ struct SimulateOptions {
   CLI::Option *method_opt = nullptr, *dt_opt = nullptr, *duration_opt = nullptr, *every_opt = nullptr;
 };
 
-constexpr const char* kHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy\n";
+// After the golden trajectory columns (appended, so readers by position keep
+// working): ω in the cloud's own axes and the angle of each principal axis to L.
+constexpr const char* kExtraColumns = ",wbx,wby,wbz,axis1_L,axis2_L,axis3_L";
 constexpr double kMaxRows = 1e8;  // guards --every 1 with a tiny dt
 
 void append_row(std::string& out, double t, const RigidBodyModel& m, const BodyState& s) {
-  const Eigen::Quaterniond q = cloud_orientation(m, s);
-  const Eigen::Vector3d v = velocity(m, s), w = omega_world(m, s);
-  const double cols[] = {s.c.x(), s.c.y(), s.c.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(), v.z(),
-                         w.x(),   w.y(),   w.z(),   s.L.x(), s.L.y(), s.L.z(), total_energy(m, s)};
-  out += format_double(t);
-  out += ',';
-  out += m.name;
-  for (double c : cols) {
+  io::append_trajectory_row(out, t, m.name, m, s);
+  out.pop_back();  // its '\n'
+  const Eigen::Vector3d wb = omega_body(m, s), a = principal_axis_angles_to_L(s);
+  for (double c : {wb.x(), wb.y(), wb.z(), a.x(), a.y(), a.z()}) {
     out += ',';
-    out += format_double(c);
+    out += io::format_double(c);
   }
   out += '\n';
 }
@@ -80,11 +79,12 @@ int run_simulate(const SimulateOptions& o) {
   for (const scene::Body& b : s.bodies) {
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
     if (!plan.reason.empty()) std::cerr << "tumble: body '" << b.name << "': auto picked " << plan.reason << "\n";
+    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) std::cerr << "tumble: warning: " << *w << "\n";
     props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
   }
 
-  AtomicFile out(o.csv);
-  std::string buf = kHeader;
+  io::AtomicFile out(o.csv);
+  std::string buf = std::string(io::kTrajectoryHeader) + kExtraColumns + "\n";
   auto flush = [&] {
     out.write(buf);
     buf.clear();
@@ -122,6 +122,10 @@ int run_simulate(const SimulateOptions& o) {
   }
   flush();
   out.commit();
+  // The step each body actually took (fixed-step methods step on the grid n·dt).
+  for (const auto& p : props)
+    std::cerr << "tumble: body '" << p->model().name << "': " << method_name(p->config().method) << ", "
+              << scene::step_label(p->config(), p->model()) << ", " << p->steps() << " steps\n";
   return kOk;
 }
 

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "io/trajectory_csv.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {
@@ -29,10 +30,6 @@ int run_action(const Action& action);
 /// load_scene plus its warnings printed to stderr.
 scene::Scene load_scene_verbose(const std::filesystem::path& path);
 
-/// printf("%.17g"): round-trips every double.
-std::string format_double(double v);
-
-/// A string as the inside of a JSON string literal (quotes and backslashes escaped, control characters dropped).
-std::string json_escape(const std::string& s);
+using io::format_double;
 
 }  // namespace tumble::app

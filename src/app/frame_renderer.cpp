@@ -2,29 +2,28 @@
 
 #include <algorithm>
 
-#include "app/commands.hpp"
-#include "core/dynamics.hpp"
 #include "core/error.hpp"
-#include "golden/trajectory.hpp"
+#include "io/trajectory_csv.hpp"
 #include "render/renderer.hpp"
 
 namespace tumble::app {
 
 SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
-    : scene_(s), fps_(s.render.output.fps), count_(frame_count(s.simulation.duration, s.render.output.fps)) {
+    : scene_(s), fps_(s.render.output.fps), count_(scene::frame_clock(s, s.render.output.fps).count()) {
   if (last_needed < 0 || last_needed >= count_)
     throw InputError("frame " + std::to_string(last_needed) + " is past the end of the scene (frames 0:" +
                      std::to_string(count_ - 1) + ")");
-  const long frames = s.render.camera.automatic ? count_ : last_needed + 1;
+  // Laid-out views (a plot's value axis) also depend on the whole run.
+  const long frames = s.render.camera.automatic || !s.render.explain.views.empty() ? count_ : last_needed + 1;
   runs_ = simulate_runs(s, frames, fps_);
 }
 
-std::vector<render::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks, int width,
+std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks, int width,
                                                int height, int msaa, int* samples_used) const {
   const FrameBuilder builder(scene_, runs_, fps_, width, height);
   render::Renderer renderer(ctx, width, height, msaa);
   if (samples_used) *samples_used = renderer.samples();
-  std::vector<render::Image> out;
+  std::vector<io::Image> out;
   for (long k : ks) {
     // A single run that diverged has no frame past the failure (`tumble render` stops there too).
     if (runs_.size() == 1 && k >= static_cast<long>(runs_[0].frames.size()))
@@ -36,24 +35,16 @@ std::vector<render::Image> SceneFrames::render(render::GlContext& ctx, const std
 }
 
 std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
-  std::string out = std::string(golden::kTrajectoryHeader) + "\n";
+  std::string out = std::string(io::kTrajectoryHeader) + "\n";
+  const scene::FrameClock clock = scene::frame_clock(scene_, fps_);
   for (long k : ks) {
     for (const Run& run : runs_) {
       if (k >= static_cast<long>(run.frames.size())) continue;  // diverged: the row count shows it
       const auto& states = run.frames[static_cast<std::size_t>(k)];
       for (std::size_t i = 0; i < states.size() && i < scene_.bodies.size(); ++i) {
         const RigidBodyModel& m = scene_.bodies[i].model;
-        const BodyState& st = states[i];
-        const Eigen::Quaterniond q = cloud_orientation(m, st);
-        const Eigen::Vector3d v = velocity(m, st), w = omega_world(m, st);
-        const double cols[] = {st.c.x(), st.c.y(), st.c.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(),
-                               v.z(),    w.x(),    w.y(),    w.z(),    st.L.x(), st.L.y(), st.L.z(),
-                               total_energy(m, st)};
-        out += format_double(static_cast<double>(k) / fps_);
-        out += ',';
-        out += runs_.size() > 1 ? run.label + ":" + m.name : m.name;
-        for (double c : cols) out += "," + format_double(c);
-        out += '\n';
+        io::append_trajectory_row(out, clock.time(k), runs_.size() > 1 ? run.label + ":" + m.name : m.name,
+                                  m, states[i]);
       }
     }
   }

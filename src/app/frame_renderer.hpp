@@ -7,7 +7,7 @@
 
 #include "app/render_job.hpp"
 #include "render/gl_context.hpp"
-#include "render/image.hpp"
+#include "io/image.hpp"
 
 namespace tumble::app {
 
@@ -25,7 +25,7 @@ class SceneFrames {
 
   /// Draws frames `ks` at width × height with `msaa` samples on `ctx`.
   /// Throws InputError for a frame that was not simulated or diverged before it.
-  std::vector<render::Image> render(render::GlContext& ctx, const std::vector<long>& ks, int width, int height,
+  std::vector<io::Image> render(render::GlContext& ctx, const std::vector<long>& ks, int width, int height,
                                     int msaa, int* samples_used = nullptr) const;
 
   /// The trajectory at frames `ks` in the columns of `tumble simulate`; in a

@@ -3,8 +3,9 @@
 #include <chrono>
 #include <cstdio>
 
-#include "app/atomic_file.hpp"
 #include "app/render_job.hpp"
+#include "io/atomic_file.hpp"
+#include "io/frame_files.hpp"
 #include "render/frame_encoder.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -14,12 +15,6 @@ namespace tumble::app {
 namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-std::filesystem::path frame_file(const std::filesystem::path& dir, long k) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%06ld.png", k);
-  return dir / name;
-}
 }  // namespace
 
 RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long frames,
@@ -29,7 +24,7 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   s.render.output.height = 720;
   s.render.output.msaa = 4;
   const double fps = s.render.output.fps;
-  frames = std::min(frames, frame_count(s.simulation.duration, fps));
+  frames = std::min(frames, scene::frame_clock(s, fps).count());
   std::filesystem::create_directories(out_dir);
   auto ctx = render::create_gl_context(render::default_gl_backend());
   render::Renderer renderer(*ctx, 1280, 720, 4);
@@ -41,13 +36,13 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
 
   // Encode-only limit: the same frames, drawn beforehand (untimed), then only
   // encoded and written by the same FrameEncoder.
-  std::vector<render::Image> kept;
+  std::vector<io::Image> kept;
   kept.reserve(static_cast<size_t>(frames));
   for (long k = 0; k < frames; ++k) kept.push_back(renderer.render(builder.build(k)));
   const auto t1 = Clock::now();
   {
     render::FrameEncoder encoder(2, 4);
-    for (long k = 0; k < frames; ++k) encoder.submit(frame_file(out_dir, k), std::move(kept[static_cast<size_t>(k)]));
+    for (long k = 0; k < frames; ++k) encoder.submit(io::frame_path(out_dir, k), std::move(kept[static_cast<size_t>(k)]));
     encoder.flush();
   }
   const double encode = seconds_since(t1);
@@ -62,10 +57,10 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
     render::FrameEncoder encoder(2, 4);
     for (long k = 0; k < frames; ++k) {
       const auto tr = Clock::now();
-      render::Image img = encoder.recycle();
+      io::Image img = encoder.recycle();
       renderer.render(builder2.build(k), img);
       render_s += seconds_since(tr);
-      encoder.submit(frame_file(out_dir, k), std::move(img));
+      encoder.submit(io::frame_path(out_dir, k), std::move(img));
     }
     encoder.flush();
   }
@@ -81,7 +76,7 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
                 "%.1f frames/s |\n| end-to-end / encode-only | %.2f |\n| build + draw + read back, mean | %.1f ms/frame |\n",
                 scene_path.string().c_str(), frames, ctx->renderer().c_str(), ctx->version().c_str(),
                 r.end_to_end_fps, r.encode_only_fps, r.end_to_end_fps / r.encode_only_fps, r.render_ms);
-  atomic_write_file(out_dir / "render.md", buf);
+  io::atomic_write_file(out_dir / "render.md", buf);
   log << buf;
   return r;
 }

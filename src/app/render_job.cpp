@@ -8,6 +8,8 @@
 #include "core/dynamics.hpp"
 #include "core/error.hpp"
 #include "core/propagator.hpp"
+#include "app/explain_views.hpp"
+#include "viz/captions.hpp"
 
 namespace tumble::app {
 
@@ -40,25 +42,36 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
   std::vector<std::optional<Method>> methods;
   for (Method m : s.render.compare_methods) methods.push_back(m);
   if (methods.empty()) methods.push_back(s.simulation.method);
+  const scene::FrameClock clock = scene::frame_clock(s, fps);
   std::vector<Run> runs;
   for (const auto& method : methods) {
     Run run;
     scene::SimulationConfig sim = s.simulation;
     sim.method = method;
     std::vector<std::unique_ptr<Propagator>> props;
+    // Labels list each method and step once, compared whole (by enum for the
+    // methods): rk45 and rk4 are two entries, not one substring of the other.
+    std::vector<Method> used;
+    std::vector<std::string> steps;
     for (const scene::Body& b : s.bodies) {
       const scene::MethodPlan plan = scene::plan_method(sim, b);
       if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
+      if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) run.auto_notes.push_back("warning: " + *w);
       props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
       run.energy0.push_back(total_energy(b.model, b.initial));
-      const std::string name(method_name(plan.config.method));
       const std::string step = scene::step_label(plan.config, b.model);
-      if (run.step_label.find(step) == std::string::npos) run.step_label += (run.step_label.empty() ? "" : "/") + step;
-      if (run.label.find(name) == std::string::npos) run.label += (run.label.empty() ? "" : "/") + name;
+      if (std::find(steps.begin(), steps.end(), step) == steps.end()) {
+        steps.push_back(step);
+        run.step_label += (run.step_label.empty() ? "" : "/") + step;
+      }
+      if (std::find(used.begin(), used.end(), plan.config.method) == used.end()) {
+        used.push_back(plan.config.method);
+        run.label += (run.label.empty() ? "" : "/") + std::string(method_name(plan.config.method));
+      }
     }
     try {
       for (long k = 0; k < frames; ++k) {
-        const double t = static_cast<double>(k) / fps;
+        const double t = clock.time(k);
         std::vector<BodyState> states;
         for (auto& p : props) states.push_back(p->advance_to(t));
         run.frames.push_back(std::move(states));
@@ -85,18 +98,22 @@ std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vecto
   return out;
 }
 
+// Body names beside the bodies: screen text, so they always face the camera.
+void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, int width_px, int height_px, float font_px) {
+  for (const viz::BodySnapshot& b : snaps) {
+    const glm::dvec3 above = to_glm(b.state.c) + glm::normalize(v.camera.up) * (1.1 * viz::box_radius(*b.model));
+    glm::vec2 px;
+    if (!viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;
+    const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
+    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f}});
+  }
+}
+
 }  // namespace
 
-FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height)
-    : scene_(s), runs_(runs), fps_(fps), height_(height) {
-  const int n = std::max<int>(1, static_cast<int>(runs.size()));
-  columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  rows_ = (n + columns_ - 1) / columns_;
-  font_px_ = std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f);
-  const scene::DrawConfig& d = s.render.draw;
-  draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, double aspect) {
   const scene::CameraConfig& c = s.render.camera;
-  const double aspect = (static_cast<double>(width) / columns_) / (static_cast<double>(height) / rows_);
+  viz::Camera camera;
   if (c.automatic) {
     // Frame every body over the whole run (all runs: a failing method may drift).
     std::vector<glm::dvec3> centres;
@@ -108,19 +125,101 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
           centres.push_back(to_glm(states[i].c));
           radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
         }
-    camera_ = viz::auto_camera(centres, radii, c.fov_y_deg, aspect);
-  } else {
-    camera_.position = to_glm(c.position);
-    camera_.target = to_glm(c.target);
-    camera_.up = to_glm(c.up);
-    camera_.fov_y_deg = c.fov_y_deg;
+    return viz::auto_camera(centres, radii, c.fov_y_deg, aspect);
   }
+  camera.position = to_glm(c.position);
+  camera.target = to_glm(c.target);
+  camera.up = to_glm(c.up);
+  camera.fov_y_deg = c.fov_y_deg;
+  return camera;
+}
+
+FrameBuilder::~FrameBuilder() = default;
+
+FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height)
+    : scene_(s), runs_(runs), fps_(fps), clock_(scene::frame_clock(s, fps)), width_(width), height_(height) {
+  const int n = std::max<int>(1, static_cast<int>(runs.size()));
+  columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  rows_ = (n + columns_ - 1) / columns_;
+  font_px_ = std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f);
+  const scene::DrawConfig& d = s.render.draw;
+  draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
+  const double aspect = (static_cast<double>(width) / columns_) / (static_cast<double>(height) / rows_);
+  camera_ = scene_camera(s, runs, aspect);
   // Trails see every frame from t = 0, so a frame range draws what a full run does.
   trails_.resize(runs.size());
   if (draw_.trail_seconds > 0)
     for (size_t r = 0; r < runs.size(); ++r)
       for (size_t k = 0; k < runs[r].frames.size(); ++k)
-        trails_[r].record(static_cast<double>(k) / fps, snapshots(s, runs[r].frames[k]));
+        trails_[r].record(clock_.time(static_cast<long>(k)), snapshots(s, runs[r].frames[k]));
+  if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.duration > 0)
+    explain_ = std::make_unique<ExplainViews>(*this, s, runs, width, height);
+}
+
+viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& camera, int width_px,
+                                   int height_px) const {
+  const double t = clock_.time(k);
+  const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
+  const Run& run = runs_[r];
+  viz::View v;
+  v.camera = camera;
+  v.label = runs_.size() > 1 ? run.label : "";
+  const long last = static_cast<long>(run.frames.size()) - 1;
+  const long kk = std::min(k, last);
+  if (kk >= 0) {
+    const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)]);
+    const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
+    if (follow) {
+      const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
+      v.camera.position += c - v.camera.target;
+      v.camera.target = c;
+    }
+    viz::add_bodies(v, snaps, draw_, &trails_[r], clock_.time(kk));
+    if (draw_.grid) {
+      double zmin = 1e300;
+      for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
+      v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
+    }
+    if (scene_.render.explain.labels) add_labels(v, snaps, width_px, height_px, font_px_);
+    if (scene_.render.draw.overlay) {
+      // Largest relative energy error over the bodies: the failure users look
+      // for. Only where energy is conserved (gravity is in it, as potential):
+      // a thruster, torque or damping does work, and its change is no error.
+      double rel = 0;
+      bool conserved = true;
+      for (size_t i = 0; i < snaps.size(); ++i) {
+        conserved = conserved && snaps[i].model->forces.conserves_energy();
+        const double e0 = run.energy0[i];
+        const double e = total_energy(*snaps[i].model, snaps[i].state);
+        rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
+      }
+      // In a comparison grid the label names the method; keep the line short
+      // and the font in proportion to the viewport.
+      // Below 1e-13 the digits are round-off: they would change with the
+      // compiler and break golden images for no physical reason.
+      char energy[40];
+      if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
+      else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
+      else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
+      const scene::OverlayItems& items = scene_.render.draw.overlay_items;
+      char time[40];
+      if (runs_.size() > 1) std::snprintf(time, sizeof time, "t = %.2f s", t);
+      else std::snprintf(time, sizeof time, "t = %6.2f s", t);
+      std::string line;
+      auto part = [&](bool on, const std::string& text) {
+        if (on) line += (line.empty() ? "" : "   ") + text;
+      };
+      part(items.time, time);
+      part(items.method && runs_.size() == 1, run.label);
+      part(items.step, run.step_label);
+      part(items.energy, energy);
+      v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 30.0f : 12.0f}, font_px_, ink});
+    }
+  }
+  if (run.diverged && k > last)
+    v.texts.push_back({"diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s",
+                       {12.0f, 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
+  return v;
 }
 
 viz::DrawList FrameBuilder::build(long k) const {
@@ -128,63 +227,12 @@ viz::DrawList FrameBuilder::build(long k) const {
   const Eigen::Vector3d& bg = scene_.render.output.background;
   dl.background = rgba(bg, 1.0f);
   dl.columns = columns_;
-  const double t = static_cast<double>(k) / fps_;
   const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
-  for (size_t r = 0; r < runs_.size(); ++r) {
-    const Run& run = runs_[r];
-    viz::View v;
-    v.camera = camera_;
-    v.label = runs_.size() > 1 ? run.label : "";
-    const long last = static_cast<long>(run.frames.size()) - 1;
-    const long kk = std::min(k, last);
-    if (kk >= 0) {
-      const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)]);
-      const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
-      if (follow) {
-        const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
-        v.camera.position += c - v.camera.target;
-        v.camera.target = c;
-      }
-      viz::add_bodies(v, snaps, draw_, &trails_[r], static_cast<double>(kk) / fps_);
-      if (draw_.grid) {
-        double zmin = 1e300;
-        for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
-        v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
-      }
-      if (scene_.render.draw.overlay) {
-        // Largest relative energy error over the bodies: the failure users look
-        // for. Only where energy is conserved (gravity is in it, as potential):
-        // a thruster, torque or damping does work, and its change is no error.
-        double rel = 0;
-        bool conserved = true;
-        for (size_t i = 0; i < snaps.size(); ++i) {
-          const ForceSet& f = snaps[i].model->forces;
-          conserved = conserved && !f.has_torque() && f.linear_damping == 0;
-          const double e0 = run.energy0[i];
-          const double e = total_energy(*snaps[i].model, snaps[i].state);
-          rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
-        }
-        // In a comparison grid the label names the method; keep the line short
-        // and the font in proportion to the viewport.
-        // Below 1e-13 the digits are round-off: they would change with the
-        // compiler and break golden images for no physical reason.
-        char energy[40];
-        if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
-        else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
-        else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
-        char line[160];
-        if (runs_.size() > 1)
-          std::snprintf(line, sizeof line, "t = %.2f s   %s   %s", t, run.step_label.c_str(), energy);
-        else
-          std::snprintf(line, sizeof line, "t = %6.2f s   %s   %s   %s", t, run.label.c_str(), run.step_label.c_str(),
-                        energy);
-        v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 30.0f : 12.0f}, font_px_, ink});
-      }
-    }
-    if (run.diverged && k > last)
-      v.texts.push_back({"diverged: stopped at t = " + std::to_string(static_cast<double>(last) / fps_).substr(0, 6) + " s",
-                         {12.0f, 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
-    dl.views.push_back(std::move(v));
+  if (explain_ && !scene_.render.explain.views.empty()) {
+    explain_->add_views(dl, k);
+  } else {
+    for (size_t r = 0; r < runs_.size(); ++r)
+      dl.views.push_back(world_view(r, k, camera_, width_ / columns_, height_ / rows_));
   }
   if (scene_.render.draw.legend && scene_.render.draw.axes) {
     std::string legend = "principal axes:  red = smallest moment   green = intermediate   blue = largest";
@@ -192,6 +240,7 @@ viz::DrawList FrameBuilder::build(long k) const {
     if (draw_.omega) legend += "   purple = omega";
     dl.texts.push_back({legend, {12.0f, static_cast<float>(height_) - 26.0f}, 15.0f, ink});
   }
+  if (explain_) explain_->add_text(dl, k);
   return dl;
 }
 

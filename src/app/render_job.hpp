@@ -2,11 +2,13 @@
 // headless, write PNGs atomically, a manifest and a video.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/body.hpp"
+#include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
 #include "viz/draw_list.hpp"
 #include "viz/scene_view.hpp"
@@ -14,7 +16,7 @@
 namespace tumble::app {
 
 /// One simulated run of all bodies with one method (several in a comparison),
-/// stored at every frame time t_k = k/fps.
+/// stored at every frame time t_k (k/fps, or the scene's FrameClock).
 struct Run {
   std::string label;                        ///< method name(s)
   std::string step_label;                   ///< "dt = 0.001 s", "rtol = 1e-08", "closed form" (per body, joined)
@@ -25,24 +27,38 @@ struct Run {
 };
 
 /// Simulates `runs` (one per method of [compare], else the scene's) up to
-/// `frame_count` frames at `fps`. A diverging run keeps its frames so far.
+/// `frame_count` frames of the scene's clock at `fps`. A diverging run keeps its frames so far.
 std::vector<Run> simulate_runs(const scene::Scene& s, long frame_count, double fps);
+
+class ExplainViews;
+
+/// The scene's camera for a viewport of `aspect` (width/height): automatic
+/// (frames every body over all runs) or as configured.
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, double aspect);
 
 /// Everything drawn for frame k (GL-free, so tests can inspect it).
 class FrameBuilder {
  public:
   FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height);
+  ~FrameBuilder();
   viz::DrawList build(long k) const;
+
+  /// Run `r`'s world view at frame k (bodies, grid, overlay, labels) seen by `camera`.
+  viz::View world_view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px) const;
+  const scene::FrameClock& clock() const { return clock_; }
+  float font_px() const { return font_px_; }
 
  private:
   const scene::Scene& scene_;
   const std::vector<Run>& runs_;
   double fps_;
-  int height_, columns_, rows_;
+  scene::FrameClock clock_;
+  int width_, height_, columns_, rows_;
   float font_px_;  // overlay text size, px
   viz::DrawOptions draw_;
   viz::Camera camera_;
   std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
+  std::unique_ptr<ExplainViews> explain_;   // [[views]], captions, title (null without them)
 };
 
 /// Number of frames of a run: t_k = k/fps for k = 0 … ⌊duration·fps⌋.

@@ -1,61 +1,43 @@
 #include "app/render_output.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/frame_files.hpp"
+#include "io/json.hpp"
 
 namespace tumble::app {
 
 namespace fs = std::filesystem;
 
 std::string Manifest::json() const {
-  std::ostringstream o;
-  o << "{\n  \"tool\": \"tumble\",\n  \"version\": \"" << TUMBLE_VERSION << "\",\n"
-    << "  \"scene\": \"" << json_escape(scene_path) << "\",\n  \"scene_hash\": \"" << scene_hash << "\",\n"
-    << "  \"settings_hash\": \"" << settings_hash << "\",\n"
-    << "  \"method\": \"" << json_escape(method) << "\",\n  \"step\": \"" << json_escape(step) << "\",\n"
-    << "  \"dt\": " << format_double(dt) << ",\n"
-    << "  \"fps\": " << format_double(fps) << ",\n  \"width\": " << width << ",\n  \"height\": " << height
-    << ",\n  \"msaa\": " << msaa << ",\n  \"frame_count\": " << frame_count << ",\n  \"frames\": [" << first
-    << ", " << last << "],\n  \"frames_written\": " << written << ",\n  \"gl_backend\": \"" << backend
-    << "\",\n  \"gl_version\": \"" << json_escape(gl_version) << "\",\n  \"gl_renderer\": \""
-    << json_escape(gl_renderer) << "\",\n  \"video\": \"" << json_escape(video) << "\",\n  \"complete\": "
-    << (complete ? "true" : "false") << "\n}\n";
-  return o.str();
+  return io::json_text(io::Json{
+      {"tool", "tumble"}, {"version", TUMBLE_VERSION}, {"scene", scene_path}, {"scene_hash", scene_hash},
+      {"settings_hash", settings_hash}, {"method", method}, {"step", step}, {"dt", dt}, {"fps", fps},
+      {"width", width}, {"height", height}, {"msaa", msaa}, {"frame_count", frame_count},
+      {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
+      {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", video}, {"complete", complete}});
 }
 
-fs::path frame_path(const fs::path& dir, long k) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%06ld.png", k);
-  return dir / name;
+namespace {
+std::optional<std::string> string_field(const io::Json& j, const char* key) {
+  const auto it = j.find(key);
+  if (it == j.end() || !it->is_string()) return std::nullopt;
+  return it->get<std::string>();
 }
-
-std::optional<std::string> manifest_field(const std::string& json, const std::string& key) {
-  const std::string tag = "\"" + key + "\": ";
-  const auto at = json.find(tag);
-  if (at == std::string::npos) return std::nullopt;
-  const auto start = at + tag.size();
-  const auto end = json.find_first_of(",\n", start);
-  std::string v = json.substr(start, end == std::string::npos ? std::string::npos : end - start);
-  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
-  return v;
-}
-
-bool is_frame_file(const std::string& name) {
-  return name.size() == 16 && name.rfind("frame_", 0) == 0 && name.compare(12, 4, ".png") == 0 &&
-         std::all_of(name.begin() + 6, name.begin() + 12, [](char c) { return c >= '0' && c <= '9'; });
-}
+}  // namespace
 
 bool is_stale_temp(const std::string& name) {
-  return (name.rfind("frame_", 0) == 0 || name.rfind("manifest.json", 0) == 0 ||
-          name.find(".tmp.mp4") != std::string::npos || name.find(".tmp.gif") != std::string::npos) &&
-         (name.find(".tmp.") != std::string::npos || name.find(".tmp-") != std::string::npos);
+  const std::string_view target = io::temp_target_name(name);
+  const auto ends_with = [&](std::string_view ext) {
+    return target.size() > ext.size() && target.substr(target.size() - ext.size()) == ext;
+  };
+  return io::is_frame_file(std::string(target)) || target == "manifest.json" || ends_with(".mp4") ||
+         ends_with(".gif");
 }
 
 std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::string&)) {
@@ -63,7 +45,7 @@ std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::stri
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
     if (pred(it->path().filename().string())) out.push_back(it->path());
-  if (ec) throw IoError("cannot list output folder '" + dir.string() + "': " + ec.message());
+  if (ec) throw io::IoError("cannot list output folder '" + dir.string() + "': " + ec.message());
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -71,7 +53,7 @@ std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::stri
 void remove_file(const fs::path& p) {
   std::error_code ec;
   fs::remove(p, ec);
-  if (ec) throw IoError("cannot remove '" + p.string() + "': " + ec.message());
+  if (ec) throw io::IoError("cannot remove '" + p.string() + "': " + ec.message());
 }
 
 std::string settings_hash(const scene::Scene& s, const std::string& method) {
@@ -87,32 +69,26 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
   const fs::path mpath = dir / "manifest.json";
   std::error_code ec;
   const bool has_manifest = fs::exists(mpath, ec);
-  const std::vector<fs::path> frames = list_dir(dir, is_frame_file);
+  const std::vector<fs::path> frames = list_dir(dir, io::is_frame_file);
   std::string problem;
   std::optional<std::string> old_video;
   if (has_manifest) {
-    std::ifstream in(mpath, std::ios::binary);
-    std::stringstream buf;
-    buf << in.rdbuf();
-    const std::string m = buf.str();
-    const auto hash = manifest_field(m, "scene_hash"), settings = manifest_field(m, "settings_hash");
-    old_video = manifest_field(m, "video");
-    if (!in || manifest_field(m, "tool") != std::optional<std::string>("tumble") || !hash) {
+    const std::optional<io::Json> m = io::read_json_file(mpath);
+    const std::optional<std::string> hash = m ? string_field(*m, "scene_hash") : std::nullopt;
+    if (m) old_video = string_field(*m, "video");
+    if (!m || string_field(*m, "tool") != std::optional<std::string>("tumble") || !hash) {
       problem = "holds a manifest.json that tumble did not write";
     } else if (*hash != want.scene_hash) {
-      problem = "holds a render of another scene (" + manifest_field(m, "scene").value_or("?") + ", hash " + *hash +
+      problem = "holds a render of another scene (" + string_field(*m, "scene").value_or("?") + ", hash " + *hash +
                 "; this scene's hash is " + want.scene_hash + ")";
-    } else if (settings != want.settings_hash) {
+    } else if (string_field(*m, "settings_hash") != want.settings_hash) {
       problem = "holds a render of this scene with other settings (size, fps, msaa, method or dt)";
     } else {
       ex.resumable = true;
-      if (auto r = manifest_field(m, "frames")) {  // "[A, B]"
-        long a = 0, b = -1;
-        if (std::sscanf(r->c_str(), "[%ld", &a) == 1) {
-          const auto comma = m.find(", ", m.find("\"frames\": ["));
-          if (comma != std::string::npos && std::sscanf(m.c_str() + comma + 2, "%ld", &b) == 1) ex.first = a, ex.last = b;
-        }
-      }
+      const auto r = m->find("frames");  // [A, B]
+      if (r != m->end() && r->is_array() && r->size() == 2 && (*r)[0].is_number_integer() &&
+          (*r)[1].is_number_integer())
+        ex.first = (*r)[0].get<long>(), ex.last = (*r)[1].get<long>();
     }
   } else if (!frames.empty()) {
     problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";

@@ -19,18 +19,13 @@ struct Manifest {
   long frame_count = 0, first = 0, last = -1, written = 0;
   bool complete = false;
 
-  std::string json() const;
+  std::string json() const;  ///< the file's text
 };
 
-/// DIR/frame_%06ld.png
-std::filesystem::path frame_path(const std::filesystem::path& dir, long k);
-/// A field of a manifest we wrote ("key": value on its own line); strings unquoted.
-std::optional<std::string> manifest_field(const std::string& json, const std::string& key);
-bool is_frame_file(const std::string& name);
-/// Leftovers of a process killed mid-write: `frame_*.png.tmp.<pid>`,
-/// `manifest.json.tmp-<pid>`, `<video>.tmp.mp4`. Never a finished file.
+/// Leftovers of a process killed mid-write: io::temp_path_for names of a
+/// frame, the manifest or a video. Never a finished file.
 bool is_stale_temp(const std::string& name);
-/// Files of `dir` whose names pass `pred`, sorted; throws IoError.
+/// Files of `dir` whose names pass `pred`, sorted; throws io::IoError.
 std::vector<std::filesystem::path> list_dir(const std::filesystem::path& dir, bool (*pred)(const std::string&));
 void remove_file(const std::filesystem::path& p);
 /// Hash of everything that changes a frame's pixels (not the frame range:

@@ -1,9 +1,8 @@
-#include <cstdio>
 #include <iostream>
 
-#include "app/atomic_file.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace tumble::app {
 
@@ -16,7 +15,7 @@ int run_action(const Action& action) {
   } catch (const Diverged& e) {
     std::cerr << "tumble: " << e.what() << "\n";
     return kDiverged;
-  } catch (const IoError& e) {
+  } catch (const io::IoError& e) {
     std::cerr << "tumble: " << e.what() << "\n";
     return kRuntimeError;
   } catch (const std::exception& e) {
@@ -29,22 +28,6 @@ scene::Scene load_scene_verbose(const std::filesystem::path& path) {
   scene::Scene s = scene::load_scene(path);
   for (const std::string& w : s.warnings) std::cerr << w << "\n";
   return s;
-}
-
-std::string format_double(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string json_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    o += c;
-  }
-  return o;
 }
 
 }  // namespace tumble::app

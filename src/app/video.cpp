@@ -8,6 +8,9 @@
 #include <system_error>
 #include <vector>
 
+#include "io/atomic_file.hpp"
+#include "io/frame_files.hpp"
+
 namespace tumble::app {
 
 bool ffmpeg_available() {
@@ -49,17 +52,17 @@ std::string encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
                          const std::filesystem::path& output) {
   if (format == VideoFormat::none) return {};
   if (!ffmpeg_available()) return "ffmpeg not found (Debian package: ffmpeg); frames were written, no video";
-  const std::string ext = format == VideoFormat::mp4 ? ".mp4" : ".gif";
-  const std::filesystem::path tmp = output.string() + ".tmp" + ext;
+  // The temp name has no video extension, so the container is named (-f).
+  const std::filesystem::path tmp = io::temp_path_for(output);
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate",
-                                   std::to_string(fps), "-i", (frame_dir / "frame_%06d.png").string()};
+                                   std::to_string(fps), "-i", (frame_dir / io::kFramePattern).string()};
   if (format == VideoFormat::mp4) {
     // yuv420p needs even sizes; +faststart puts the index first for streaming.
     args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-                             "-crf", std::to_string(crf), "-movflags", "+faststart", tmp.string()});
+                             "-crf", std::to_string(crf), "-movflags", "+faststart", "-f", "mp4", tmp.string()});
   } else {
     args.insert(args.end(), {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer",
-                             tmp.string()});
+                             "-f", "gif", tmp.string()});
   }
   const int rc = run(args);
   std::error_code ec;

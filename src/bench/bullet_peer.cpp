@@ -71,14 +71,9 @@ std::vector<PeerConfig> bullet_configs() {
   };
   std::vector<PeerConfig> out;
   for (const auto& [label, f] : flags) {
-    MakeStepper make = [f = f](const RigidBodyModel& m, const BodyState& s0) -> std::unique_ptr<Stepper> {
+    out.push_back(stepped_peer(label, [f = f](const RigidBodyModel& m, const BodyState& s0) -> std::unique_ptr<Stepper> {
       return std::make_unique<BulletStepper>(f, m, s0);
-    };
-    out.push_back({label, "dt",
-                   [make](const RigidBodyModel& m, const BodyState& s0, double T, double dt) {
-                     return run_stepper(make, m, s0, T, dt);
-                   },
-                   make});
+    }));
   }
   return out;
 }

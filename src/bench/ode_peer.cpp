@@ -73,14 +73,9 @@ std::vector<PeerConfig> ode_configs() {
   };
   std::vector<PeerConfig> out;
   for (const auto& [label, mode] : modes) {
-    MakeStepper make = [mode = mode](const RigidBodyModel& m, const BodyState& s0) -> std::unique_ptr<Stepper> {
+    out.push_back(stepped_peer(label, [mode = mode](const RigidBodyModel& m, const BodyState& s0) -> std::unique_ptr<Stepper> {
       return std::make_unique<OdeStepper>(mode, m, s0);
-    };
-    out.push_back({label, "dt",
-                   [make](const RigidBodyModel& m, const BodyState& s0, double T, double dt) {
-                     return run_stepper(make, m, s0, T, dt);
-                   },
-                   make});
+    }));
   }
   return out;
 }

@@ -39,6 +39,13 @@ BodyState run_stepper(const MakeStepper& make, const RigidBodyModel& m, const Bo
   return s->state();
 }
 
+PeerConfig stepped_peer(std::string label, MakeStepper make) {
+  auto run = [make](const RigidBodyModel& m, const BodyState& s0, double T, double dt) {
+    return run_stepper(make, m, s0, T, dt);
+  };
+  return {std::move(label), "dt", run, std::move(make)};
+}
+
 std::vector<PeerConfig> peer_configs() {
   std::vector<PeerConfig> v = odeint_configs();
 #if TUMBLE_HAVE_BULLET

@@ -37,6 +37,9 @@ struct PeerConfig {
   MakeStepper make;
 };
 
+/// A fixed-step configuration whose run is `make` stepped n = round(T/dt) times.
+PeerConfig stepped_peer(std::string label, MakeStepper make);
+
 /// Every compiled-in peer configuration, odeint first.
 std::vector<PeerConfig> peer_configs();
 

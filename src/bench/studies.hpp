@@ -93,7 +93,7 @@ std::string auto_problem_description();
 std::vector<AutoRow> auto_study(const Settings& st, std::ostream& log);
 void write_auto_csv(const std::filesystem::path& file, const std::vector<AutoRow>& rows);
 
-/// Writes `text` to `file`, throwing std::runtime_error naming the file on failure.
+/// io::atomic_write_file: `file` is the old one or the whole new one; throws io::IoError.
 void write_text(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace tumble::bench

@@ -1,15 +1,12 @@
 // Work-precision (Hairer–Nørsett–Wanner I §II.10 style): CPU per run against
 // error at the end, for every method on every problem, plus the fitted orders.
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
-#include <stdexcept>
-
-#include <unistd.h>
 
 #include "bench/peers.hpp"
 #include "bench/studies.hpp"
+#include "io/atomic_file.hpp"
 
 namespace tumble::bench {
 
@@ -53,27 +50,7 @@ std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Se
   return rows;
 }
 
-void write_text(const std::filesystem::path& file, const std::string& text) {
-  // Beside the target, then renamed: a reader sees the old file or the whole new one.
-  std::filesystem::path tmp = file;
-  tmp += ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + file.string());
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error("cannot write " + file.string() + ": " + ec.message());
-  }
-}
+void write_text(const std::filesystem::path& file, const std::string& text) { io::atomic_write_file(file, text); }
 
 void write_work_precision_csv(const std::filesystem::path& file, const std::vector<WpRow>& rows) {
   std::ostringstream f;

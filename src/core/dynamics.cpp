@@ -63,6 +63,20 @@ double potential_energy(const RigidBodyModel& m, const BodyState& s) {
   return m.forces.has_gravity ? -m.mass * m.forces.gravity.dot(s.c) : 0.0;
 }
 
+EnergyFlow energy_flow(const RigidBodyModel& m, const BodyState& s) {
+  EnergyFlow e;
+  const auto& f = m.forces;
+  const Eigen::Vector3d v = velocity(m, s);
+  const double gravity = f.has_gravity ? m.mass * f.gravity.dot(v) : 0.0;
+  if (f.has_torque() || !f.point_forces.empty()) {
+    Wrench w = position_wrench(m, s);
+    if (f.has_gravity) w.force -= m.mass * f.gravity;
+    e.driving = w.force.dot(v) + w.torque.dot(omega_world(m, s));
+  }
+  e.scale = std::abs(e.driving) + std::abs(gravity);
+  return e;
+}
+
 Eigen::Vector3d linear_acceleration(const RigidBodyModel& m, const BodyState& s, double t) {
   return wrench(m, s, t).force / m.mass;
 }

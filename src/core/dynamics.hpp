@@ -1,6 +1,8 @@
 // The seed's ODE as one pure function, and the quantities derived from a state.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -82,6 +84,18 @@ inline Eigen::Vector3d omega_body(const RigidBodyModel& m, const BodyState& s) {
   return m.cloud_from_principal * omega_principal(m, s);
 }
 
+/// Angle between each principal axis (I1 ≤ I2 ≤ I3) and L, rad in [0, π];
+/// atan2 keeps it accurate near 0 and π. Zero when L = 0.
+inline Eigen::Vector3d principal_axis_angles_to_L(const BodyState& s) {
+  const Eigen::Vector3d p = momentum_body(s);
+  Eigen::Vector3d out;
+  for (int i = 0; i < 3; ++i) {
+    const double along = p[i], across = std::hypot(p[(i + 1) % 3], p[(i + 2) % 3]);
+    out[i] = std::atan2(across, along);
+  }
+  return out;
+}
+
 /// Kinetic energy ½|P|²/M + ½ Π·I⁻¹Π, J.
 double kinetic_energy(const RigidBodyModel& m, const BodyState& s);
 /// Potential of declared conservative fields (uniform gravity: -M g·c), J.
@@ -89,6 +103,15 @@ double potential_energy(const RigidBodyModel& m, const BodyState& s);
 inline double total_energy(const RigidBodyModel& m, const BodyState& s) {
   return kinetic_energy(m, s) + potential_energy(m, s);
 }
+
+/// Where energy goes (W): `driving` is the power of the declared terms that
+/// are neither conservative nor dissipative (point forces, constant torques);
+/// `scale` adds |power| of gravity, the size against which an energy balance
+/// is judged. Damping only removes energy, so it is in neither.
+struct EnergyFlow {
+  double driving = 0, scale = 0;
+};
+EnergyFlow energy_flow(const RigidBodyModel& m, const BodyState& s);
 
 /// Diagnostics (seed §3, §5): a = f/M and α = J⁻¹(τ - ω × Jω), world frame.
 Eigen::Vector3d linear_acceleration(const RigidBodyModel& m, const BodyState& s, double t);

@@ -34,6 +34,10 @@ struct ForceSet {
   bool has_torque() const {
     return !point_forces.empty() || !torque_world.isZero(0) || !torque_body.isZero(0) || angular_damping != 0;
   }
+  /// True when total energy (kinetic + gravity's potential) is an invariant:
+  /// no term does work other than gravity. Decided here, not by the callers
+  /// (the overlay's |dE/E| is an error only then).
+  bool conserves_energy() const { return !has_torque() && linear_damping == 0; }
 };
 
 }  // namespace tumble

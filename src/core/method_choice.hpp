@@ -15,7 +15,7 @@ namespace tumble {
 /// What a run asks of auto.
 struct ChoiceRequest {
   double duration = 10;         ///< s, the run's length
-  double sample_interval = 0;   ///< s between samples (frames); a run steps at most this far; 0 = none
+  double sample_interval = 0;   ///< s between samples (frames): one partial step each; 0 = none
   double tolerance = 1e-6;      ///< largest end error, rad (see end_state_error)
   bool prune = true;            ///< false: measure every candidate in full (tests, bench)
 };

@@ -1,9 +1,10 @@
 // Advances one body through a run, sample time by sample time, with the
-// numeric-failure guard (issue #5 §3).
+// numeric-failure guard (issue #5 §3, #10 §5).
 #pragma once
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "core/body.hpp"
 #include "core/free_rotation_exact.hpp"
@@ -19,33 +20,45 @@ struct StepConfig {
   double atol = 1e-12;      ///< rk45 only
 };
 
+/// A warning when dt is too coarse for the method to follow the body's initial
+/// rotation: dt·(|ω| + damping rates) above MethodInfo::max_turn_per_step.
+/// Empty when fine (and for rk45 and the closed form, which pick their own steps).
+std::optional<std::string> coarse_step_warning(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg);
+
 class Propagator {
  public:
   Propagator(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg);
 
-  /// Advances to time t ≥ time() and returns the state there. Fixed-step methods
-  /// split [time(), t] into ⌈Δ/dt⌉ equal steps (≤ dt), so samples land exactly;
-  /// rk45 uses dense output; `exact` on a torque-free body evaluates the closed
-  /// form at t (no accumulated error). Throws Diverged with time, step, body and method.
+  /// Advances to time t ≥ time() and returns the state there. Fixed-step
+  /// methods step on the grid t_n = n·dt whatever the sample times are; a
+  /// sample between grid points is one partial step from the last grid state,
+  /// never fed back, so the trajectory does not depend on fps, --every or
+  /// --frames. rk45 uses dense output; `exact` on a torque-free body evaluates
+  /// the closed form at t. Throws Diverged with time, step, body and method.
   const BodyState& advance_to(double t);
-  /// Advances by exactly n steps of dt.
+  /// Advances by exactly n steps of dt (fixed-step methods: to the grid point
+  /// n steps on from the last one reached).
   const BodyState& advance_steps(long n);
 
   double time() const { return t_; }
+  /// Steps taken on the grid (rk45: accepted steps; closed form: evaluations).
   long steps() const { return steps_; }
   const BodyState& state() const { return s_; }
   const RigidBodyModel& model() const { return *m_; }
+  const StepConfig& config() const { return cfg_; }
 
  private:
-  void do_step(double h);
-  void check(double h);
+  void grid_step();
+  void check(const BodyState& s, double t, double h);
 
   const RigidBodyModel* m_;
+  const MethodInfo* info_;
   StepConfig cfg_;
-  BodyState s0_, s_;
-  double t_ = 0, e0_ = 0;
+  BodyState s0_, s_, grid_;   // s_: last sample; grid_: state at t = steps_·dt
+  double t_ = 0;
   long steps_ = 0;
-  bool torque_free_;
+  // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.
+  double e0_ = 0, scale0_ = 0, work_ = 0, work_abs_ = 0, power_ = 0, power_abs_ = 0;
   std::optional<FreeRotationExact> exact_;
   std::unique_ptr<Rk45> rk45_;
 };

@@ -13,12 +13,12 @@ namespace tumble::golden {
 
 namespace {
 
-bool same_size(const render::Image& a, const render::Image& b) {
+bool same_size(const io::Image& a, const io::Image& b) {
   return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
          a.rgb.size() == static_cast<std::size_t>(a.width) * static_cast<std::size_t>(a.height) * 3;
 }
 
-void require_same_size(const render::Image& a, const render::Image& b) {
+void require_same_size(const io::Image& a, const io::Image& b) {
   if (!same_size(a, b)) throw std::invalid_argument("images of different sizes");
 }
 
@@ -83,7 +83,7 @@ void largest_region(std::vector<std::uint8_t>& over, int max_delta, int w, int h
 
 }  // namespace
 
-Comparison compare_images(const render::Image& actual, const render::Image& expected, const CompareOptions& o) {
+Comparison compare_images(const io::Image& actual, const io::Image& expected, const CompareOptions& o) {
   Comparison c;
   c.width = actual.width;
   c.height = actual.height;
@@ -151,17 +151,17 @@ Comparison compare_images(const render::Image& actual, const render::Image& expe
   return c;
 }
 
-render::Image amplified_difference(const render::Image& actual, const render::Image& expected, int gain) {
+io::Image amplified_difference(const io::Image& actual, const io::Image& expected, int gain) {
   require_same_size(actual, expected);
-  render::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
+  io::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
   for (std::size_t i = 0; i < actual.rgb.size(); ++i)
     out.rgb[i] = static_cast<std::uint8_t>(std::min(255, std::abs(int(actual.rgb[i]) - int(expected.rgb[i])) * gain));
   return out;
 }
 
-render::Image over_threshold_mask(const render::Image& actual, const render::Image& expected, int max_delta) {
+io::Image over_threshold_mask(const io::Image& actual, const io::Image& expected, int max_delta) {
   require_same_size(actual, expected);
-  render::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
+  io::Image out{actual.width, actual.height, std::vector<std::uint8_t>(actual.rgb.size())};
   for (std::size_t i = 0; i < actual.rgb.size(); i += 3) {
     int m = 0;
     for (int ch = 0; ch < 3; ++ch) m = std::max(m, std::abs(int(actual.rgb[i + ch]) - int(expected.rgb[i + ch])));
@@ -176,7 +176,7 @@ render::Image over_threshold_mask(const render::Image& actual, const render::Ima
   return out;
 }
 
-void outline_box(render::Image& img, const Box& box, const std::uint8_t (&rgb)[3], int margin) {
+void outline_box(io::Image& img, const Box& box, const std::uint8_t (&rgb)[3], int margin) {
   if (box.empty() || img.width <= 0 || img.height <= 0) return;
   const int x0 = box.x0 - margin, y0 = box.y0 - margin, x1 = box.x1 + margin, y1 = box.y1 + margin;
   auto put = [&](int x, int y) {
@@ -188,7 +188,7 @@ void outline_box(render::Image& img, const Box& box, const std::uint8_t (&rgb)[3
   for (int y = y0; y <= y1; ++y) put(x0, y), put(x1, y);
 }
 
-void outline_offenders(render::Image& img, const Comparison& c) {
+void outline_offenders(io::Image& img, const Comparison& c) {
   static constexpr std::uint8_t kYellow[3] = {255, 230, 0}, kCyan[3] = {0, 230, 255};
   if (!c.window_ok) outline_box(img, c.window_box, kCyan, 3);
   outline_box(img, c.region_box, kYellow, 2);

@@ -13,7 +13,7 @@
 
 #include <string>
 
-#include "render/image.hpp"
+#include "io/image.hpp"
 
 namespace tumble::golden {
 
@@ -49,23 +49,23 @@ struct Comparison {
 
 /// Compares `actual` with `expected`. Never throws for valid Images;
 /// different sizes give size_mismatch (and pass = false).
-Comparison compare_images(const render::Image& actual, const render::Image& expected,
+Comparison compare_images(const io::Image& actual, const io::Image& expected,
                           const CompareOptions& options = {});
 
 /// |actual - expected| per channel times `gain` (clamped to 255) on black:
 /// differences of a few levels become visible. Sizes must match.
-render::Image amplified_difference(const render::Image& actual, const render::Image& expected, int gain = 16);
+io::Image amplified_difference(const io::Image& actual, const io::Image& expected, int gain = 16);
 
 /// The pixels over the threshold in magenta, on the expected image darkened
 /// to a quarter for context. Sizes must match.
-render::Image over_threshold_mask(const render::Image& actual, const render::Image& expected, int max_delta);
+io::Image over_threshold_mask(const io::Image& actual, const io::Image& expected, int max_delta);
 
 /// Draws a 1 px outline `margin` px outside `box` (clipped to the image) in
 /// colour `rgb`; the pixels inside stay visible. Does nothing for an empty box.
-void outline_box(render::Image& img, const Box& box, const std::uint8_t (&rgb)[3], int margin = 2);
+void outline_box(io::Image& img, const Box& box, const std::uint8_t (&rgb)[3], int margin = 2);
 
 /// Outlines where `c` found the change: the largest region in yellow and,
 /// when it is over its limit, the worst window in cyan.
-void outline_offenders(render::Image& img, const Comparison& c);
+void outline_offenders(io::Image& img, const Comparison& c);
 
 }  // namespace tumble::golden

@@ -4,7 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "render/png_io.hpp"
+#include "io/atomic_file.hpp"
+#include "io/png.hpp"
 
 namespace tumble::golden {
 
@@ -30,8 +31,8 @@ Report::Report(fs::path dir, std::string title) : dir_(std::move(dir)), title_(s
   fs::remove_all(dir_ / "img", ec);
 }
 
-void Report::add_image(const std::string& id, const std::string& title, const render::Image& actual,
-                       const render::Image* expected, const Comparison* cmp, const CompareOptions& options, bool pass,
+void Report::add_image(const std::string& id, const std::string& title, const io::Image& actual,
+                       const io::Image* expected, const Comparison* cmp, const CompareOptions& options, bool pass,
                        const std::string& status, const std::string& note) {
   Case c;
   c.title = title;
@@ -41,15 +42,15 @@ void Report::add_image(const std::string& id, const std::string& title, const re
   c.figures = cmp ? cmp->summary : "";
   if (!pass) {
     fs::create_directories(dir_ / "img");
-    auto put = [&](const std::string& kind, const render::Image& img) {
+    auto put = [&](const std::string& kind, const io::Image& img) {
       const std::string rel = "img/" + id + "." + kind + ".png";
-      render::write_png_atomic(dir_ / rel, img);
+      io::write_png_atomic(dir_ / rel, img);
       return rel;
     };
     // The offending region is outlined on actual, expected and difference
     // (same box on each); the mask shows the raw over-threshold pixels.
     const bool compared = expected && cmp && !cmp->size_mismatch;
-    auto outlined = [&](render::Image img) {
+    auto outlined = [&](io::Image img) {
       if (compared) outline_offenders(img, *cmp);
       return img;
     };
@@ -113,9 +114,7 @@ fs::path Report::write() const {
       << html_escape(c.status) << "</td><td>" << html_escape(c.figures) << "</td></tr>\n";
   h << "</table>\n</body></html>\n";
   const fs::path path = dir_ / "index.html";
-  std::ofstream out(path, std::ios::binary);
-  out << h.str();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  io::atomic_write_file(path, h.str());
   return path;
 }
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "golden/compare.hpp"
-#include "render/image.hpp"
+#include "io/image.hpp"
 
 namespace tumble::golden {
 
@@ -22,8 +22,8 @@ class Report {
   /// One image case. `expected` may be null (missing or unreadable golden);
   /// `cmp` is null then too. Failing cases write their images at once.
   /// `note` is free text shown under the figures (e.g. the GL renderers).
-  void add_image(const std::string& id, const std::string& title, const render::Image& actual,
-                 const render::Image* expected, const Comparison* cmp, const CompareOptions& options, bool pass,
+  void add_image(const std::string& id, const std::string& title, const io::Image& actual,
+                 const io::Image* expected, const Comparison* cmp, const CompareOptions& options, bool pass,
                  const std::string& status, const std::string& note);
 
   /// A case without images (golden physics).

@@ -5,10 +5,9 @@
 
 #include <string>
 
-namespace tumble::golden {
+#include "io/trajectory_csv.hpp"
 
-/// The header line (without newline) of `tumble simulate` and of trajectory goldens.
-inline constexpr const char* kTrajectoryHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy";
+namespace tumble::golden {
 
 struct TrajectoryTolerance {
   double rtol = 1e-6;  ///< relative

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/png_io.hpp"
+#include "io/png.hpp"
 
 namespace tumble::render {
 
@@ -32,7 +32,7 @@ void FrameEncoder::rethrow_locked(std::unique_lock<std::mutex>& lock) {
   std::rethrow_exception(e);
 }
 
-void FrameEncoder::submit(std::filesystem::path path, Image image) {
+void FrameEncoder::submit(std::filesystem::path path, io::Image image) {
   std::unique_lock lock(mutex_);
   rethrow_locked(lock);
   space_or_idle_.wait(lock, [&] { return queue_.size() < capacity_ || error_; });
@@ -53,10 +53,10 @@ std::size_t FrameEncoder::frames_written() const {
   return written_;
 }
 
-Image FrameEncoder::recycle() {
+io::Image FrameEncoder::recycle() {
   const std::lock_guard lock(mutex_);
   if (spare_.empty()) return {};
-  Image img = std::move(spare_.back());
+  io::Image img = std::move(spare_.back());
   spare_.pop_back();
   return img;
 }
@@ -74,7 +74,7 @@ void FrameEncoder::worker() {
 
     std::exception_ptr failure;
     try {
-      write_png_atomic(job.first, job.second);
+      io::write_png_atomic(job.first, job.second);
     } catch (...) {
       failure = std::current_exception();
     }

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/image.hpp"
+#include "io/image.hpp"
 
 namespace tumble::render {
 
@@ -29,7 +29,7 @@ class FrameEncoder {
 
   /// Queues a frame for write_png_atomic, blocking while the queue is full.
   /// Rethrows the first error of an earlier frame, if any.
-  void submit(std::filesystem::path path, Image image);
+  void submit(std::filesystem::path path, io::Image image);
 
   /// Waits until every submitted frame is on disk; rethrows the first error.
   void flush();
@@ -39,17 +39,17 @@ class FrameEncoder {
   /// The pixel storage of an already written frame (or an empty Image), to
   /// render the next frame into: fresh multi-MB buffers are page-faulted in
   /// on every frame otherwise, which costs as much as the PNG encode.
-  Image recycle();
+  io::Image recycle();
 
  private:
   void worker();
   void rethrow_locked(std::unique_lock<std::mutex>& lock);
 
-  using Job = std::pair<std::filesystem::path, Image>;
+  using Job = std::pair<std::filesystem::path, io::Image>;
   mutable std::mutex mutex_;
   std::condition_variable work_ready_, space_or_idle_;
   std::deque<Job> queue_;
-  std::vector<Image> spare_;  // written frames, kept for recycle()
+  std::vector<io::Image> spare_;  // written frames, kept for recycle()
   std::size_t capacity_;
   std::size_t max_spare_;  // fixed before the workers start (they read it)
   std::size_t in_flight_ = 0;

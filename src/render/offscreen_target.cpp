@@ -67,7 +67,7 @@ void OffscreenTarget::bind_for_drawing() const {
   gl_.Viewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::read_rgb(Image& img) {
+void OffscreenTarget::read_rgb(io::Image& img) {
   if (samples_ > 0) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.id());
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.id());

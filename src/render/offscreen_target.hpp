@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/gl_object.hpp"
-#include "render/image.hpp"
+#include "io/image.hpp"
 
 namespace tumble::render {
 
@@ -20,7 +20,7 @@ class OffscreenTarget {
   void bind_for_drawing() const;
   /// Resolves MSAA (if any) and reads back a top-down RGB image into `out`,
   /// reusing its storage (fresh multi-MB buffers cost page faults per frame).
-  void read_rgb(Image& out);
+  void read_rgb(io::Image& out);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -38,7 +38,7 @@ class Renderer::Impl {
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
-  void render(const viz::DrawList& frame, Image& out);
+  void render(const viz::DrawList& frame, io::Image& out);
   const OffscreenTarget& target() const { return target_; }
 
  private:
@@ -68,13 +68,13 @@ Renderer::Renderer(GlContext& context, int width, int height, int msaa,
 
 Renderer::~Renderer() = default;
 
-Image Renderer::render(const viz::DrawList& frame) {
-  Image img;
+io::Image Renderer::render(const viz::DrawList& frame) {
+  io::Image img;
   impl_->render(frame, img);
   return img;
 }
 
-void Renderer::render(const viz::DrawList& frame, Image& out) { impl_->render(frame, out); }
+void Renderer::render(const viz::DrawList& frame, io::Image& out) { impl_->render(frame, out); }
 
 int Renderer::width() const { return impl_->target().width(); }
 int Renderer::height() const { return impl_->target().height(); }
@@ -110,7 +110,7 @@ void Renderer::Impl::set_viewport(const PixelRect& rect) {
   gl_.Scissor(rect.x, gl_y, rect.width, rect.height);
 }
 
-void Renderer::Impl::render(const viz::DrawList& frame, Image& out) {
+void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
@@ -127,7 +127,7 @@ void Renderer::Impl::render(const viz::DrawList& frame, Image& out) {
   const int count = static_cast<int>(frame.views.size());
   std::vector<PixelRect> rects;
   for (int i = 0; i < count; ++i) {
-    rects.push_back(view_rect(i, count, frame.columns, target_.width(), target_.height()));
+    rects.push_back(view_rect(frame.views[i], i, count, frame.columns, target_.width(), target_.height()));
     if (rects.back().width > 0 && rects.back().height > 0) {
       draw_view(frame.views[i], rects.back(), background);
     }

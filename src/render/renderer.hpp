@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "render/gl_context.hpp"
-#include "render/image.hpp"
+#include "io/image.hpp"
 #include "render/resource_dir.hpp"
 #include "viz/draw_list.hpp"
 
@@ -28,9 +28,9 @@ class Renderer {
   /// Renders all views (grid of `columns`, row-major, each view's label in
   /// its top-left corner) plus the frame overlay texts. Makes the context
   /// current on the calling thread.
-  Image render(const viz::DrawList& frame);
+  io::Image render(const viz::DrawList& frame);
   /// Same, into `out`, reusing its pixel storage (cheaper in a frame loop).
-  void render(const viz::DrawList& frame, Image& out);
+  void render(const viz::DrawList& frame, io::Image& out);
 
   int width() const;
   int height() const;

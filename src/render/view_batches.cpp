@@ -87,7 +87,7 @@ void add_polyline(const viz::PolylineItem& p, ViewBatches& out) {
   const double last = static_cast<double>(p.points.size() - 1);
   for (std::size_t i = 0; i < p.points.size(); ++i) {
     glm::vec4 c = p.color;
-    c.a *= static_cast<float>(0.04 + 0.96 * (static_cast<double>(i) / last));
+    if (p.fade) c.a *= static_cast<float>(0.04 + 0.96 * (static_cast<double>(i) / last));
     line.strip.push_back({glm::vec3(p.points[i]), c});
   }
   out.polylines.push_back(std::move(line));

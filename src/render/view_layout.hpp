@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -31,6 +32,17 @@ inline PixelRect view_rect(int index, int count, int columns, int frame_w, int f
   return {x0 + gap_x, y0 + gap_y, x1 - x0 - gap_x, y1 - y0 - gap_y};
 }
 
+/// Where view `index` lands: its own viewport (fractions of the frame) when
+/// it has one, else its cell of the grid.
+inline PixelRect view_rect(const viz::View& view, int index, int count, int columns, int frame_w, int frame_h) {
+  if (!view.viewport) return view_rect(index, count, columns, frame_w, frame_h);
+  const glm::dvec4 f = *view.viewport;
+  const int x0 = int(std::lround(f.x * frame_w)), y0 = int(std::lround(f.y * frame_h));
+  const int x1 = int(std::lround((f.x + f.z) * frame_w)), y1 = int(std::lround((f.y + f.w) * frame_h));
+  const int gap_x = x0 > 0 ? 1 : 0, gap_y = y0 > 0 ? 1 : 0;  // separator, as on the grid
+  return {x0 + gap_x, y0 + gap_y, x1 - x0 - gap_x, y1 - y0 - gap_y};
+}
+
 struct CameraMatrices {
   glm::mat4 view;
   glm::mat4 proj;
@@ -39,9 +51,11 @@ struct CameraMatrices {
 inline CameraMatrices camera_matrices(const viz::Camera& cam, float aspect) {
   const glm::mat4 view = glm::lookAt(glm::vec3(cam.position), glm::vec3(cam.target),
                                      glm::vec3(cam.up));
+  const float hh = float(cam.ortho_half_height);
   const glm::mat4 proj =
-      glm::perspective(glm::radians(float(cam.fov_y_deg)), aspect, float(cam.near_m),
-                       float(cam.far_m));
+      hh > 0 ? glm::ortho(-hh * aspect, hh * aspect, -hh, hh, float(cam.near_m), float(cam.far_m))
+             : glm::perspective(glm::radians(float(cam.fov_y_deg)), aspect, float(cam.near_m),
+                                float(cam.far_m));
   return {view, proj};
 }
 

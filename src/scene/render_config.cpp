@@ -19,13 +19,14 @@ void read_output(TableReader& r, Scene& s) {
     else r.error("msaa", "expected 0, 2 or 4, found " + std::to_string(*m));
   }
   o.background = r.vec3("background", Range::closed(0, 1)).value_or(o.background);
+  s.render.explain.time_scale = r.number("time_scale", Range::closed(1e-4, 1e4)).value_or(1.0);
   if (auto v = r.string("video")) {
     if (*v == "mp4") o.video = VideoFormat::mp4;
     else if (*v == "gif") o.video = VideoFormat::gif;
     else if (*v == "none") o.video = VideoFormat::none;
     else r.error("video", "expected \"mp4\", \"gif\" or \"none\", found \"" + *v + "\"");
   }
-  if (o.fps * s.simulation.duration > kMaxFrames)
+  if (o.fps * s.simulation.duration / s.render.explain.time_scale > kMaxFrames)
     r.error("fps", "duration × fps exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
 }
 
@@ -63,7 +64,21 @@ void read_draw(TableReader& r, Scene& s) {
   d.omega = r.boolean("omega").value_or(d.omega);
   d.trails = r.number("trails", Range::closed(0, 1e4)).value_or(d.trails);
   d.grid = r.boolean("grid").value_or(d.grid);
-  d.overlay = r.boolean("overlay").value_or(d.overlay);
+  if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
+    // A list of the overlay's items: only those are shown.
+    d.overlay_items = {false, false, false, false};
+    for (const std::string& item : r.strings("overlay").value_or(std::vector<std::string>{})) {
+      if (item == "time") d.overlay_items.time = true;
+      else if (item == "method") d.overlay_items.method = true;
+      else if (item == "step") d.overlay_items.step = true;
+      else if (item == "energy") d.overlay_items.energy = true;
+      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", found \"" + item + "\"");
+    }
+    d.overlay = d.overlay_items.any();
+  } else {
+    d.overlay = r.boolean("overlay").value_or(d.overlay);
+  }
+  s.render.explain.labels = r.boolean("labels").value_or(false);
   d.legend = r.boolean("legend").value_or(d.legend);
 }
 
@@ -98,7 +113,7 @@ void read_compare(TableReader& r, Scene& s) {
 void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   scene.render.output.fps = scene.simulation.fps;
   if (auto t = root.subtable("output")) {
-    TableReader r(*t, "output", ctx.diag, {"width", "height", "fps", "msaa", "background", "video"});
+    TableReader r(*t, "output", ctx.diag, {"width", "height", "fps", "msaa", "background", "video", "time_scale"});
     read_output(r, scene);
   }
   if (auto t = root.subtable("camera")) {
@@ -107,7 +122,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   }
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
-                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend"});
+                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels"});
     read_draw(r, scene);
   }
   if (auto t = root.subtable("compare")) {

@@ -80,7 +80,8 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
   s.content_hash = fnv1a_hex(text);
   detail::LoadContext ctx{diag, base_dir, 0, {}};
   TableReader r(root, "", diag,
-                {"name", "simulation", "forces", "bodies", "output", "camera", "draw", "compare"});
+                {"name", "simulation", "forces", "bodies", "output", "camera", "draw", "compare", "views", "captions",
+                  "title", "slow_motion"});
   s.name = r.string("name").value_or("scene");
   // The name becomes the default output folder out/<name> and the video's file
   // name: keep it a plain file name, so a render never writes elsewhere.
@@ -98,6 +99,7 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
   read_forces(r, ctx, s);
   detail::read_bodies(r, ctx, s);
   detail::read_render_config(r, ctx, s);
+  detail::read_explain_config(r, ctx, s);
   if (!diag.ok()) throw SceneError(diag.take_errors());
   s.warnings = diag.take_warnings();
   return s;

@@ -18,6 +18,7 @@
 #include "core/method_choice.hpp"
 #include "core/particle_cloud.hpp"
 #include "core/propagator.hpp"
+#include "scene/explain.hpp"
 
 namespace tumble::scene {
 
@@ -76,10 +77,17 @@ struct CameraConfig {
   std::string follow;                    ///< body name; empty = fixed camera
 };
 
+/// Lines of the overlay, each switchable (`[draw] overlay = ["time", ...]`).
+struct OverlayItems {
+  bool time = true, method = true, step = true, energy = true;
+  bool any() const { return time || method || step || energy; }
+};
+
 struct DrawConfig {
   bool box = true, axes = true, particles = false, L = false, omega = false;
   double trails = 0;                     ///< s of axis-tip history; 0 = off
   bool grid = false, overlay = true, legend = true;
+  OverlayItems overlay_items;            ///< which parts of the overlay line (overlay = true)
 };
 
 struct RenderConfig {
@@ -87,6 +95,7 @@ struct RenderConfig {
   CameraConfig camera;
   DrawConfig draw;
   std::vector<Method> compare_methods;   ///< [compare] methods; empty = no comparison
+  ExplainConfig explain;                 ///< time_scale, slow motion, captions, title, views
 };
 
 struct Body {

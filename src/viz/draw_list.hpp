@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,7 @@ struct PolylineItem {
   std::vector<glm::dvec3> points;  ///< world, m, oldest first
   Color color;
   float width_px;
+  bool fade = true;                ///< false: one alpha along the line (curves, plots)
 };
 
 /// Ground grid in the plane through `origin` with normal +z (world).
@@ -69,6 +71,8 @@ struct Camera {
   glm::dvec3 up{0.0, 0.0, 1.0};
   double fov_y_deg = 35.0;              ///< vertical field of view, degrees
   double near_m = 0.05, far_m = 500.0;
+  /// > 0: orthographic, showing ± this many m vertically (plots); 0 = perspective.
+  double ortho_half_height = 0;
 };
 
 /// One viewport's content. Several of them form a comparison grid.
@@ -81,6 +85,9 @@ struct View {
   std::vector<GridItem> grids;
   std::vector<TextItem> texts;   ///< overlay, drawn last, in this viewport
   std::string label;             ///< e.g. the method name in a comparison
+  /// x, y, width, height as fractions of the frame from its top-left corner;
+  /// unset = the view's cell of the DrawList's grid.
+  std::optional<glm::dvec4> viewport;
 };
 
 /// A whole frame: views laid out on a grid of `columns` (row-major).

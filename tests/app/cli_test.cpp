@@ -1,6 +1,8 @@
 // `tumble` end to end: output formats, exit codes, atomic CSV.
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -10,15 +12,16 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
-#include "app/atomic_file.hpp"
 #include "cli_fixture.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy";
+constexpr const char* kHeader =
+    "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy,wbx,wby,wbz,axis1_L,axis2_L,axis3_L";
 
 TEST_F(Cli, Version) {
   const Result r = run("--version");
@@ -34,7 +37,7 @@ TEST_F(Cli, SimulateWritesHeaderAndEndsAtDuration) {
   ASSERT_EQ(l.size(), 1u + 301u);  // header + frames k/30 for k = 0..300
   EXPECT_EQ(l[0], kHeader);
   const auto first = split(l[1]), last = split(l.back());
-  ASSERT_EQ(first.size(), 19u);
+  ASSERT_EQ(first.size(), 25u);
   EXPECT_EQ(first[0], "0");
   EXPECT_EQ(first[1], "reference");
   EXPECT_EQ(last[0], "10");
@@ -42,6 +45,23 @@ TEST_F(Cli, SimulateWritesHeaderAndEndsAtDuration) {
   EXPECT_EQ(first[16], "20");
   EXPECT_NEAR(std::stod(first[18]), 100.0002, 1e-10);  // energy ½ Σ I ω²
   EXPECT_NEAR(std::stod(last[18]), 100.0002, 1e-4);    // splitting: bounded energy error
+  // ω in the cloud's axes starts as the scene's omega_body; axis 2 starts
+  // atan2(|(0.01, 0.03)|, 20) from L, axis 1 and 3 close to a right angle.
+  EXPECT_NEAR(std::stod(first[19]), 0.01, 1e-12);
+  EXPECT_NEAR(std::stod(first[20]), 10.0, 1e-12);
+  EXPECT_NEAR(std::stod(first[21]), 0.01, 1e-12);
+  EXPECT_NEAR(std::stod(first[23]), std::atan2(std::hypot(0.01, 0.03), 20.0), 1e-12);
+  EXPECT_NEAR(std::stod(first[22]), std::acos(0.01 / std::sqrt(0.01 * 0.01 + 400 + 0.03 * 0.03)), 1e-12);
+  // The flip: the intermediate axis turns from along L to against it (≈ π) and
+  // back; ω_body's y component changes sign with it.
+  double max_angle2 = 0, min_wby = 1e9;
+  for (std::size_t i = 1; i < l.size(); ++i) {
+    const auto f = split(l[i]);
+    max_angle2 = std::max(max_angle2, std::stod(f[23]));
+    min_wby = std::min(min_wby, std::stod(f[20]));
+  }
+  EXPECT_GT(max_angle2, 3.0);
+  EXPECT_LT(min_wby, -9.0);
   for (const auto& e : fs::directory_iterator(dir_))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "temp file left: " << e.path();
 }
@@ -81,12 +101,19 @@ TEST_F(Cli, AutoToleranceSaysWhatItPicked) {
 TEST_F(Cli, InfoJsonForTheReferenceScene) {
   const Result r = run("info " + scene("reference.toml") + " --json");
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* s : {"\"name\": \"reference\"", "\"mass\": 3,", "\"com\": [0, 0, 0]",
-                        "\"inertia\": [[1, 0, 0], [0, 2, 0], [0, 0, 3]]", "\"principal_moments\": [1, 2, 3]",
-                        "\"principal_axes\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]",
-                        "\"box\": {\"center\": [0, 0, 0], \"half_extents\": [1, 1, 0]}"})
-    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
-  EXPECT_EQ(r.out.rfind("{\n  \"bodies\": [", 0), 0u);
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.at("bodies").size(), 1u) << r.out;
+  const auto& b = j["bodies"][0];
+  using V = std::vector<double>;
+  using M = std::vector<V>;
+  EXPECT_EQ(b.at("name"), "reference");
+  EXPECT_EQ(b.at("mass").get<double>(), 3);
+  EXPECT_EQ(b.at("com").get<V>(), V({0, 0, 0}));
+  EXPECT_EQ(b.at("inertia").get<M>(), M({{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}));
+  EXPECT_EQ(b.at("principal_moments").get<V>(), V({1, 2, 3}));
+  EXPECT_EQ(b.at("principal_axes").get<M>(), M({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}));
+  EXPECT_EQ(b.at("box").at("center").get<V>(), V({0, 0, 0}));
+  EXPECT_EQ(b.at("box").at("half_extents").get<V>(), V({1, 1, 0}));
 }
 
 TEST_F(Cli, InfoTextNamesEveryBody) {
@@ -120,22 +147,24 @@ TEST_F(Cli, DivergenceExits3AndKeepsRows) {
   EXPECT_EQ(split(l[1])[0], "0");
 }
 
+// A forced body's blow-up (damping only removes energy) is caught by the energy
+// balance, not only non-finite numbers; the coarse step is warned about first.
+TEST_F(Cli, DampedBlowUpExits3WithTimeStepBodyAndMethod) {
+  const fs::path csv = dir_ / "damped.csv";
+  const Result r = run("simulate '" + (kSource / "tests/app/data/damped_blowup_euler.toml").string() + "' --csv '" +
+                       csv.string() + "'");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("warning: body 'reference': dt = 0.5 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("diverged at t=0.5 s, step 1, body 'reference', method euler"), std::string::npos) << r.err;
+  const auto l = lines(slurp(csv));
+  ASSERT_EQ(l.size(), 1u + 15u);  // frames k/30 for t < 0.5 s, as computed before the failure
+  EXPECT_EQ(split(l[1])[0], "0");
+}
+
 TEST_F(Cli, UnwritableCsvIsAnIoError) {
   const Result r = run("simulate " + scene("reference.toml") + " --csv '" + (dir_ / "no/such/dir/x.csv").string() + "'");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
-}
-
-TEST_F(Cli, AtomicFileLeavesNothingWithoutCommit) {
-  const fs::path p = dir_ / "a.txt";
-  {
-    tumble::app::AtomicFile f(p);
-    f.write("partial");
-  }
-  EXPECT_TRUE(fs::is_empty(dir_));
-  tumble::app::atomic_write_file(p, "whole");
-  EXPECT_EQ(slurp(p), "whole");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
 }
 
 }  // namespace

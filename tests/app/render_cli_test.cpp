@@ -69,4 +69,14 @@ TEST_F(RenderCli, DivergedRenderKeepsFramesAndMarksManifestIncomplete) {
   EXPECT_NE(slurp(dir_ / "div" / "manifest.json").find("\"complete\": false"), std::string::npos);
 }
 
+TEST_F(RenderCli, DampedBlowUpRenderExits3) {
+  if (!render_available()) GTEST_SKIP() << "no GL backend";
+  const Result r = run("render " + data("damped_blowup_euler.toml") + " -o '" + dir_.string() +
+                       "/damped' --width 64 --height 48 --video none --progress none");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("diverged at t=0.5 s, step 1, body 'reference', method euler"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "damped" / "frame_000000.png"));
+  EXPECT_NE(slurp(dir_ / "damped" / "manifest.json").find("\"complete\": false"), std::string::npos);
+}
+
 }  // namespace

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_fixture.hpp"
+#include "io/frame_files.hpp"
 
 extern char** environ;
 
@@ -40,10 +41,8 @@ class RobustRender : public Cli {
   }
   // Waits until frame `k` exists (the render is under way); false on timeout or early exit.
   static bool wait_for_frame(pid_t pid, const fs::path& out, int k) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%06d.png", k);
     for (int i = 0; i < 60000; ++i) {
-      if (fs::exists(out / name)) return true;
+      if (fs::exists(tumble::io::frame_path(out, k))) return true;
       int st;
       if (::waitpid(pid, &st, WNOHANG) == pid) return false;
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -74,8 +73,7 @@ class RobustRender : public Cli {
   // Every frame of `a` and `b` equal, byte for byte; both have `count` frames.
   void expect_same_frames(const fs::path& a, const fs::path& b, int count) const {
     for (int k = 0; k < count; ++k) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%06d.png", k);
+      const fs::path name = tumble::io::frame_path("", k);
       const std::string x = slurp(a / name), y = slurp(b / name);
       ASSERT_FALSE(x.empty()) << a / name;
       EXPECT_TRUE(x == y) << name << " differs";
@@ -135,7 +133,7 @@ TEST_F(RobustRender, KilledRenderResumesByteIdenticalToACleanRun) {
   wait_exit(pid, &sig);
   ASSERT_EQ(sig, SIGKILL);
   // What a kill -9 in the middle of a write leaves: a temp file. Resume removes it.
-  std::ofstream(out / "frame_000150.png.tmp.99999") << "partial";
+  std::ofstream(out / "frame_000150.png.tmp-99999") << "partial";
   std::ofstream(out / "manifest.json.tmp-99999") << "{";
   for (const std::string& n : names(out))
     if (n.rfind("frame_", 0) == 0 && n.find(".tmp") == std::string::npos) {

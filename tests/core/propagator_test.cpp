@@ -1,12 +1,14 @@
 // Propagator: samples land exactly on the requested times (a scene's frames),
-// fixed-step methods split each interval into ⌈Δ/dt⌉ equal steps, and a run
-// that blows up throws Diverged naming the time, step, body and method.
+// fixed-step methods step on the grid t_n = n·dt whatever the sample times
+// (issue #10 §4), and a run that blows up, forced or not, throws Diverged
+// naming the time, step, body and method (issue #10 §5).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <optional>
 #include <string>
 
+#include "core/dynamics.hpp"
 #include "core/error.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/propagator.hpp"
@@ -18,8 +20,8 @@ namespace tumble {
 namespace {
 
 // A scene-like run: 30 fps for 2 s with dt = 1e-2 (frames are 1/30 s apart, not a
-// multiple of dt). Every sample must be at exactly the frame time, each frame takes
-// ⌈(1/30)/0.01⌉ = 4 steps, and the states agree with the exact solution.
+// multiple of dt). Every sample must be at exactly the frame time, the grid takes
+// 2 / 0.01 = 200 steps, and the states agree with the exact solution.
 TEST(Propagator, SceneLikeRunSamplesExactTimes) {
   const RigidBodyModel m = testing::reference_model();
   const BodyState s0 = testing::reference_state(m);
@@ -37,9 +39,9 @@ TEST(Propagator, SceneLikeRunSamplesExactTimes) {
       worst = std::max(worst, rotation_angle_between(s.q, ex.orientation(t)));
     }
     if (method == Method::rk4 || method == Method::splitting4) {
-      EXPECT_EQ(p.steps(), 60 * 4) << testing::name_of(method);
+      EXPECT_EQ(p.steps(), 200) << testing::name_of(method);
     }
-    // rk4/splitting4 at h = 1/120 s: ~1e-5 rad over the first flip; exact: round-off.
+    // rk4/splitting4 at h = 1e-2 s: ~1e-5 rad over the first flip; exact: round-off.
     EXPECT_LT(worst, method == Method::exact ? 1e-11 : 1e-4) << testing::name_of(method);
     // Re-requesting the current time is a no-op.
     const BodyState again = p.advance_to(2.0);
@@ -94,8 +96,8 @@ TEST(Propagator, DivergingRunThrowsWithTimeStepBodyAndMethod) {
   std::printf("%s\n", what.c_str());
 }
 
-// With forces the energy is not invariant; a non-finite state is what trips the
-// guard: linear damping k/M = 100/s with dt = 1 s makes Euler multiply P by -99.
+// Linear damping k/M = 100/s with dt = 1 s makes Euler multiply P by -99 per
+// step: damping can only remove energy, so the balance trips.
 TEST(Propagator, NonFiniteStateThrowsDiverged) {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "damped");
   m.forces.linear_damping = 100.0;
@@ -111,6 +113,111 @@ TEST(Propagator, NonFiniteStateThrowsDiverged) {
   EXPECT_NE(what.find("diverged at t="), std::string::npos) << what;
   EXPECT_NE(what.find("damped"), std::string::npos) << what;
   EXPECT_NE(what.find("euler"), std::string::npos) << what;
+}
+
+// Issue #10 §5: explicit Euler with angular_damping = 50 at dt = 0.5 s multiplies
+// Π by (1 - 25/Iᵢ) per step (energy 1e237 at t = 10 s before the guard). The
+// energy balance stops it within the first steps, naming time, step, body, method.
+TEST(Propagator, DampedBlowUpOfAForcedBodyThrows) {
+  RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "damped top");
+  m.forces.angular_damping = 50.0;
+  const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0.5, 2, 0.5});
+  StepConfig cfg;
+  cfg.method = Method::euler;
+  cfg.dt = 0.5;
+  EXPECT_TRUE(coarse_step_warning(m, s0, cfg).has_value());
+  Propagator p(m, s0, cfg);
+  std::optional<Diverged> e;
+  try {
+    for (int k = 1; k <= 300; ++k) p.advance_to(k / 30.0);
+  } catch (const Diverged& d) {
+    e = d;
+  }
+  ASSERT_TRUE(e) << "expected Diverged";
+  const std::string what = e->what();
+  EXPECT_NE(what.find("damped top"), std::string::npos) << what;
+  EXPECT_NE(what.find("euler"), std::string::npos) << what;
+  EXPECT_LE(e->time, 2.0) << what;
+  std::printf("%s\n", what.c_str());
+  // The same body at a step that resolves the damping (dt k/I1 = 0.05) runs to the end.
+  cfg.dt = 1e-3;
+  EXPECT_FALSE(coarse_step_warning(m, s0, cfg).has_value());
+  Propagator fine(m, s0, cfg);
+  EXPECT_NO_THROW(fine.advance_to(10.0));
+  EXPECT_LT(kinetic_energy(m, fine.state()), kinetic_energy(m, s0));
+}
+
+// A driven body is not flagged: a constant torque pumps energy in, and the
+// balance credits its work (a thruster spinning a body up for 10 s).
+TEST(Propagator, DrivenBodyPassesTheEnergyBalance) {
+  for (Method method : {Method::euler, Method::rk4, Method::splitting}) {
+    RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "driven");
+    m.forces.torque_world = {0, 0, 5};
+    m.forces.has_gravity = true;
+    m.forces.gravity = {0, 0, -9.81};
+    m.forces.point_forces.push_back({{0, 0, 20}, {1, 0, 0}, Frame::body});
+    const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0, 0, 0.1});
+    StepConfig cfg;
+    cfg.method = method;
+    cfg.dt = 1e-2;
+    Propagator p(m, s0, cfg);
+    EXPECT_NO_THROW(p.advance_to(10.0)) << testing::name_of(method);
+    EXPECT_GT(kinetic_energy(m, p.state()), 100 * kinetic_energy(m, s0)) << testing::name_of(method);
+  }
+}
+
+// Issue #10 §4: the trajectory of a fixed-step method does not depend on the
+// sample times. Sampled at 7, 30 and 240 fps (and once at the end only), every
+// fixed-step method reaches the same state at t = 10 s, bit for bit: the grid
+// steps are the same operations; samples are partial steps off the grid.
+TEST(Propagator, StateAt10sDoesNotDependOnTheFrameRate) {
+  RigidBodyModel forced = testing::body_with_moments({1, 2, 3}, 2.0, "forced");
+  forced.forces.has_gravity = true;
+  forced.forces.gravity = {0, 0, -9.81};
+  forced.forces.angular_damping = 0.05;
+  forced.forces.point_forces.push_back({{0.3, 0, 0}, {0, 0.2, 0}, Frame::body});
+  for (const RigidBodyModel& m : {testing::reference_model(), forced}) {
+    BodyState s0 = testing::reference_state(m);
+    s0.P = {0.5, 0, 3};
+    for (Method method : kAllMethods) {
+      const MethodInfo& info = method_info(method);
+      if (info.adaptive || (info.closed_form_if_free && m.forces.empty())) continue;
+      StepConfig cfg;
+      cfg.method = method;
+      cfg.dt = 1e-2;
+      Propagator once(m, s0, cfg);
+      const BodyState end = once.advance_to(10.0);
+      for (double fps : {7.0, 30.0, 240.0}) {
+        Propagator p(m, s0, cfg);
+        const long frames = std::lround(10.0 * fps);
+        for (long k = 1; k <= frames; ++k) p.advance_to(static_cast<double>(k) / fps);
+        const std::string where = testing::name_of(method) + " " + m.name + " fps " + std::to_string(fps);
+        EXPECT_EQ(p.steps(), 1000) << where;
+        EXPECT_EQ(p.state().q.coeffs(), end.q.coeffs()) << where;
+        EXPECT_EQ(p.state().L, end.L) << where;
+        EXPECT_EQ(p.state().c, end.c) << where;
+        EXPECT_EQ(p.state().P, end.P) << where;
+      }
+    }
+  }
+}
+
+// A sample between grid points is a partial step: within the method's error of
+// the exact motion, and the next grid point is unaffected by it.
+TEST(Propagator, SampleBetweenGridPointsIsAPartialStep) {
+  const RigidBodyModel m = testing::reference_model();
+  const BodyState s0 = testing::reference_state(m);
+  const FreeRotationExact ex(m.inertia, s0.q, s0.L);
+  StepConfig cfg;
+  cfg.method = Method::rk4;
+  cfg.dt = 1e-2;
+  Propagator p(m, s0, cfg);
+  const BodyState mid = p.advance_to(0.505);
+  EXPECT_EQ(p.steps(), 50);
+  EXPECT_EQ(p.time(), 0.505);
+  EXPECT_LT(rotation_angle_between(mid.q, ex.orientation(0.505)), 1e-6);  // rk4 at 1e-2 s: 2.6e-7
+  const BodyState direct = testing::run_steps(Method::rk4, m, s0, 1e-2, 51);
+  EXPECT_LT(rotation_angle_between(p.advance_to(0.51).q, direct.q), 1e-15);  // same steps (up to q's sign)
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ namespace {
 using tumble::golden::Box;
 using tumble::golden::compare_images;
 using tumble::golden::CompareOptions;
-using tumble::render::Image;
+using tumble::io::Image;
 
 Image flat(int w, int h, std::uint8_t v) { return {w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3, v)}; }
 

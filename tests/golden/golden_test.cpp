@@ -10,7 +10,8 @@
 #include "cli_fixture.hpp"
 #include "golden/compare.hpp"
 #include "golden/trajectory.hpp"
-#include "render/png_io.hpp"
+#include "io/frame_files.hpp"
+#include "io/png.hpp"
 #include "scene/scene.hpp"
 
 namespace {
@@ -22,11 +23,16 @@ struct GoldenScene {
   const char* at;    ///< frame times (k/30 s): early, middle, late
 };
 
-// Times are multiples of 1/30 s (every shipped scene renders at 30 fps); the
-// last one bounds the simulation (fixed camera) and the trajectory.
+// Times are frame times (k/30 s for the classic scenes, which render at
+// 30 fps); the last one bounds the simulation (fixed camera) and the trajectory.
 const GoldenScene kScenes[] = {
     {"dzhanibekov", "0.5,4,12"},   {"methods_compare", "0.5,6,15"}, {"reference", "0.5,3,9"},
     {"stable_spin", "0.5,5,11"},   {"symmetric_top", "0.5,4,9"},    {"thrown_box", "0.2,0.9,1.6"},
+    // Explanatory views: simulated times (time_scale 0.5; 1.9 s is in the
+    // 1/8-speed segment around the first flip). Every view kind, captions,
+    // the title card (0.5 s) and labels.
+    {"dzhanibekov_explained", "0.5,1.9,4"},
+    {"poinsot", "0.5,3,7"},
 };
 
 bool updating() {
@@ -108,7 +114,7 @@ TEST_F(DeterminismCli, LpNumThreadsOneAndTwoGiveIdenticalBytes) {
                               scene(sc) + " --frames 120:120 --width 320 --height 240 --msaa 4 --video none --progress none -o '" +
                               out + "' >'" + out + ".log' 2>&1";
       ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd << "\n" << slurp(out + ".log");
-      files[threads - 1] = slurp(fs::path(out) / "frame_000120.png");
+      files[threads - 1] = slurp(tumble::io::frame_path(out, 120));
       ASSERT_FALSE(files[threads - 1].empty());
     }
     EXPECT_TRUE(files[0] == files[1]) << sc << ": LP_NUM_THREADS=1 and 2 differ";
@@ -125,8 +131,7 @@ TEST_F(DeterminismCli, GoldenFramesMatchTumbleRender) {
                   std::to_string(frame) + " --width 320 --height 240 --msaa 4 --video none --progress none -o '" + out + "'")
                   .code,
               0);
-    char name[64];
-    std::snprintf(name, sizeof name, "frame_%06d.png", frame);
+    const std::string name = tumble::io::frame_path("", frame).string();
     char golden[96];
     std::snprintf(golden, sizeof golden, "%s_f%06d_msaa4.png", sc, frame);
     const Result r = run("compare '" + out + "/" + name + "' '" + (kSource / "tests/golden" / sc / golden).string() + "'");
@@ -136,14 +141,14 @@ TEST_F(DeterminismCli, GoldenFramesMatchTumbleRender) {
 
 // ---- the comparison ----
 
-tumble::render::Image flat(int w, int h, std::uint8_t v) {
+tumble::io::Image flat(int w, int h, std::uint8_t v) {
   return {w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3, v)};
 }
 
 // The comparison itself on synthetic images: compare_test.cpp.
 
 TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
-  const std::string h = std::string(tumble::golden::kTrajectoryHeader) + "\n";
+  const std::string h = std::string(tumble::io::kTrajectoryHeader) + "\n";
   const std::string e = h + "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5\n";
   EXPECT_TRUE(tumble::golden::compare_trajectories(h + "0,b,1.0000001,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5\n", e).pass);
   const auto bad = tumble::golden::compare_trajectories(h + "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5.0001\n", e);
@@ -154,8 +159,8 @@ TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
 }
 
 TEST_F(GoldenCli, CompareExitCodes) {
-  auto w = [&](const char* n, const tumble::render::Image& img) {
-    tumble::render::write_png_atomic(dir_ / n, img);
+  auto w = [&](const char* n, const tumble::io::Image& img) {
+    tumble::io::write_png_atomic(dir_ / n, img);
     return "'" + (dir_ / n).string() + "'";
   };
   auto img = flat(64, 48, 200);
@@ -189,17 +194,17 @@ TEST_F(GoldenCli, CompareExitCodes) {
 // and its windowed mean; the figures and the outlined difference show where.
 TEST_F(GoldenCli, CompareReportsTheLocalFigures) {
   auto img = flat(320, 240, 100);
-  tumble::render::write_png_atomic(dir_ / "a.png", img);
+  tumble::io::write_png_atomic(dir_ / "a.png", img);
   for (int y = 20; y < 23; ++y)
     for (int x = 30; x < 33; ++x) img.rgb[(static_cast<std::size_t>(y) * 320 + x) * 3 + 1] = 160;
-  tumble::render::write_png_atomic(dir_ / "b.png", img);
+  tumble::io::write_png_atomic(dir_ / "b.png", img);
   const std::string ab = "compare '" + (dir_ / "b.png").string() + "' '" + (dir_ / "a.png").string() + "'";
   Result r = run(ab + " --diff '" + (dir_ / "d.png").string() + "'");
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("fraction over 8:  0.000117 (limit 0.0005)\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("largest region:    9 px, box (30,20)-(32,22) 3x3 (limit 6)  FAIL"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("worst 9x9 mean:  6.67 levels"), std::string::npos) << r.out;
-  const auto d = tumble::render::read_png(dir_ / "d.png");
+  const auto d = tumble::io::read_png(dir_ / "d.png");
   EXPECT_EQ(d.pixel(28, 18)[0], 255) << "yellow outline 2 px outside the region";
   EXPECT_EQ(d.pixel(31, 21)[1], 255) << "the region itself: 60 x 16 clamped";
   // Each limit is an option.
@@ -235,9 +240,9 @@ TEST_F(GoldenCli, ChangedImageWritesTheFourPicturesAndTheIndex) {
   const fs::path png = dir_ / "g" / "tiny_render_f000001_msaa0.png";
   ASSERT_TRUE(fs::exists(png)) << run("golden --help").out;
   EXPECT_NE(slurp(dir_ / "g" / "tiny_render_f000001_msaa0.json").find("\"gl_renderer\": \""), std::string::npos);
-  auto img = tumble::render::read_png(png);
+  auto img = tumble::io::read_png(png);
   for (auto& v : img.rgb) v = static_cast<std::uint8_t>(255 - v);
-  tumble::render::write_png_atomic(png, img);
+  tumble::io::write_png_atomic(png, img);
   const Result r = run(cmd);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;

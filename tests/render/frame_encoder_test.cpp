@@ -4,10 +4,12 @@
 #include <string>
 
 #include "render/frame_encoder.hpp"
-#include "render/png_io.hpp"
+#include "io/png.hpp"
 
 namespace tumble::render {
 namespace {
+using io::Image;
+using io::read_png;
 namespace fs = std::filesystem;
 
 Image solid(int w, int h, std::uint8_t v) {

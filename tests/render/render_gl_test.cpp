@@ -11,13 +11,15 @@
 #include <string>
 
 #include "render/gl_context.hpp"
-#include "render/png_io.hpp"
+#include "io/png.hpp"
 #include "render/renderer.hpp"
 #include "render/view_layout.hpp"
 #include "test_scenes.hpp"
 
 namespace tumble::render {
 namespace {
+using io::Image;
+using io::write_png_atomic;
 
 struct Case {
   GlBackend backend;

@@ -121,17 +121,14 @@ unsigned char* tumble_zlib_compress(unsigned char* data, int data_len, int* out_
 #include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
 
-#include <unistd.h>
-
-#include <cstdio>
 #include <mutex>
 #include <stdexcept>
-#include <string>
-#include <system_error>
+#include <string_view>
 
-#include "render/png_io.hpp"
+#include "io/atomic_file.hpp"
+#include "io/png.hpp"
 
-namespace tumble::render {
+namespace tumble::io {
 namespace {
 
 // stb's filter override is a file-level global; it is set exactly once, before
@@ -140,6 +137,10 @@ namespace {
 // Sub/Up/Average/Paeth and stb's per-row heuristic, which is ~4x slower).
 constexpr int kPngFilter = 0;
 std::once_flag g_filter_once;
+
+std::string_view as_chars(const std::vector<std::uint8_t>& bytes) {
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+}
 
 struct MallocDeleter {
   void operator()(unsigned char* p) const { STBIW_FREE(p); }
@@ -161,23 +162,7 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
 }
 
 void write_png_atomic(const std::filesystem::path& path, const Image& image) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp." + std::to_string(::getpid());
-  try {
-    const std::vector<std::uint8_t> bytes = encode_png(image);
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (f == nullptr) throw std::system_error(errno, std::generic_category(), "open");
-    const bool wrote = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    const int write_errno = errno;
-    if (std::fclose(f) != 0 || !wrote) {
-      throw std::system_error(wrote ? errno : write_errno, std::generic_category(), "write");
-    }
-    std::filesystem::rename(tmp, path);
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw std::runtime_error("cannot write PNG " + path.string() + ": " + e.what());
-  }
+  atomic_write_file(path, as_chars(encode_png(image)), Durability::rename_only);
 }
 
-}  // namespace tumble::render
+}  // namespace tumble::io

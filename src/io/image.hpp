@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace tumble::render {
+namespace tumble::io {
 
 struct Image {
   int width = 0;
@@ -16,4 +16,4 @@ struct Image {
   }
 };
 
-}  // namespace tumble::render
+}  // namespace tumble::io

@@ -1,21 +1,36 @@
-#include "app/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 #include <cerrno>
 #include <cstring>
 
 #include <unistd.h>
 
-namespace tumble::app {
+namespace tumble::io {
 
 namespace {
+constexpr std::string_view kTempTag = ".tmp-";
+
 [[noreturn]] void fail(const std::filesystem::path& p, const char* what) {
   throw IoError("cannot " + std::string(what) + " '" + p.string() + "': " + std::strerror(errno));
 }
 }  // namespace
 
-AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
-  tmp_ = path_;
-  tmp_ += ".tmp-" + std::to_string(::getpid());
+std::filesystem::path temp_path_for(const std::filesystem::path& path) {
+  std::filesystem::path tmp = path;
+  tmp += std::string(kTempTag) + std::to_string(::getpid());
+  return tmp;
+}
+
+std::string_view temp_target_name(std::string_view name) {
+  const std::size_t at = name.rfind(kTempTag);
+  if (at == std::string_view::npos || at == 0) return {};
+  const std::string_view pid = name.substr(at + kTempTag.size());
+  if (pid.empty() || pid.find_first_not_of("0123456789") != std::string_view::npos) return {};
+  return name.substr(0, at);
+}
+
+AtomicFile::AtomicFile(std::filesystem::path path, Durability d)
+    : path_(std::move(path)), tmp_(temp_path_for(path_)), durability_(d) {
   f_ = std::fopen(tmp_.c_str(), "wb");
   if (!f_) fail(tmp_, "create");
 }
@@ -36,7 +51,7 @@ void AtomicFile::commit() {
   if (!f_) return;
   std::FILE* f = f_;
   f_ = nullptr;
-  const bool ok = std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
+  const bool ok = std::fflush(f) == 0 && (durability_ == Durability::rename_only || ::fsync(::fileno(f)) == 0);
   const int saved = errno;
   if (std::fclose(f) != 0 || !ok) {
     errno = ok ? errno : saved;
@@ -53,10 +68,10 @@ void AtomicFile::commit() {
   }
 }
 
-void atomic_write_file(const std::filesystem::path& path, std::string_view contents) {
-  AtomicFile f(path);
+void atomic_write_file(const std::filesystem::path& path, std::string_view contents, Durability d) {
+  AtomicFile f(path, d);
   f.write(contents);
   f.commit();
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::io

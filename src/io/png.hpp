@@ -6,19 +6,19 @@
 #include <filesystem>
 #include <vector>
 
-#include "render/image.hpp"
+#include "io/image.hpp"
 
-namespace tumble::render {
+namespace tumble::io {
 
 /// The PNG file bytes of an RGB image. Thread-safe. Throws on bad input.
 std::vector<std::uint8_t> encode_png(const Image& image);
 
-/// Writes `path.tmp.<pid>` then renames it onto `path`, so readers never see
-/// a half-written frame. On failure the temp file is removed and a
-/// std::runtime_error naming `path` is thrown. Thread-safe for distinct paths.
+/// Encodes and writes through atomic_write_file (no fsync: see Durability),
+/// so readers never see a half-written frame. Throws IoError naming the
+/// path. Thread-safe for distinct paths.
 void write_png_atomic(const std::filesystem::path& path, const Image& image);
 
-/// Reads any 8-bit PNG as RGB. Throws std::runtime_error naming the path.
+/// Reads any 8-bit PNG as RGB. Throws IoError naming the path.
 Image read_png(const std::filesystem::path& path);
 
-}  // namespace tumble::render
+}  // namespace tumble::io

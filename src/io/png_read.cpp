@@ -9,11 +9,11 @@
 #pragma GCC diagnostic pop
 
 #include <memory>
-#include <stdexcept>
 
-#include "render/png_io.hpp"
+#include "io/atomic_file.hpp"
+#include "io/png.hpp"
 
-namespace tumble::render {
+namespace tumble::io {
 
 Image read_png(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
@@ -21,10 +21,10 @@ Image read_png(const std::filesystem::path& path) {
       stbi_load(path.c_str(), &w, &h, &channels, 3), stbi_image_free);
   if (!data) {
     // stbi_failure_reason uses a global; the message is only a hint anyway.
-    throw std::runtime_error("cannot read PNG " + path.string());
+    throw IoError("cannot read PNG " + path.string());
   }
   const std::size_t n = static_cast<std::size_t>(w) * h * 3;
   return Image{w, h, std::vector<std::uint8_t>(data.get(), data.get() + n)};
 }
 
-}  // namespace tumble::render
+}  // namespace tumble::io

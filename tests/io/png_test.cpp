@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "render/png_io.hpp"
+#include "io/png.hpp"
 
-namespace tumble::render {
+namespace tumble::io {
 namespace {
 namespace fs = std::filesystem;
 
@@ -121,4 +121,4 @@ TEST(PngIo, Encodes720pQuickly) {
 }
 
 }  // namespace
-}  // namespace tumble::render
+}  // namespace tumble::io

@@ -1,0 +1,18 @@
+# `cmake --install`: the core as a CMake package (find_package(tumble) ->
+# tumble::core). Headers keep their tree: include/tumble/core/*.hpp.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(TUMBLE_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tumble)
+file(GLOB TUMBLE_CORE_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/core/*.hpp)
+install(FILES ${TUMBLE_CORE_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tumble/core)
+install(TARGETS tumble_core EXPORT tumbleTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(EXPORT tumbleTargets NAMESPACE tumble:: DESTINATION ${TUMBLE_CMAKE_DIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tumbleConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/tumbleConfig.cmake INSTALL_DESTINATION ${TUMBLE_CMAKE_DIR})
+# 0.x: a minor version may break the API.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/tumbleConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/tumbleConfig.cmake ${PROJECT_BINARY_DIR}/tumbleConfigVersion.cmake
+  DESTINATION ${TUMBLE_CMAKE_DIR})

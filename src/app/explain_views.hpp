@@ -1,0 +1,38 @@
+// The laid-out views of an explanatory video ([[views]]) and its text layers
+// (captions, title card): turns the scene's settings and the simulated runs
+// into GL-free draw-list views, one builder per view kind (src/viz).
+#pragma once
+
+#include <vector>
+
+#include "app/render_job.hpp"
+
+namespace tumble::app {
+
+class ExplainViews {
+ public:
+  ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const std::vector<Run>& runs, int width, int height);
+  /// One view per [[views]] table, each in its viewport.
+  void add_views(viz::DrawList& dl, long k) const;
+  /// Captions and the title card over the whole frame.
+  void add_text(viz::DrawList& dl, long k) const;
+
+ private:
+  struct Slot {
+    int width_px = 0, height_px = 0;
+    std::size_t body = 0;
+    viz::Camera camera;         // world / body_frame
+    double lo = -1, hi = 1;     // plot: value range over the whole run
+  };
+  viz::View view_at(std::size_t i, long k) const;
+  const FrameBuilder& fb_;
+  const scene::Scene& scene_;
+  const std::vector<Run>& runs_;
+  int width_, height_;
+  std::vector<Slot> slots_;
+};
+
+/// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).
+double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0);
+
+}  // namespace tumble::app

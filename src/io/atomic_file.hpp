@@ -1,0 +1,54 @@
+// Output that appears complete or not at all: write to a temp file beside the
+// target, then rename (atomic on POSIX within one filesystem). The one temp
+// name scheme of tumble, so a folder's leftovers can be recognised.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace tumble::io {
+
+/// I/O failure (permission, disk full, missing folder); the message names the path.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// `<path>.tmp-<pid>`: where an atomic write of `path` goes first.
+std::filesystem::path temp_path_for(const std::filesystem::path& path);
+
+/// The file name that `temp_path_for` gives, without its `.tmp-<pid>` tail, or
+/// empty when `name` is not such a temp name (a leftover of a killed process).
+std::string_view temp_target_name(std::string_view name);
+
+/// Whether a completed file reaches the disk before the rename. Frames skip
+/// it: a per-frame fsync would dominate the write, and a frame lost in a
+/// crash is redrawn by the resumed run, which checks the manifest.
+enum class Durability { fsync, rename_only };
+
+/// Streams into temp_path_for(path); commit() flushes (fsyncs) and renames
+/// onto `path`. Destroyed without commit, it removes the temp file.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path path, Durability d = Durability::fsync);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(std::string_view bytes);
+  void commit();
+
+ private:
+  std::filesystem::path path_, tmp_;
+  Durability durability_;
+  std::FILE* f_ = nullptr;
+};
+
+/// Writes `contents` to `path` atomically. Throws IoError.
+void atomic_write_file(const std::filesystem::path& path, std::string_view contents,
+                       Durability d = Durability::fsync);
+
+}  // namespace tumble::io

@@ -1,0 +1,55 @@
+// Scene settings of explanatory videos (issue 11): time mapping (time_scale,
+// slow-motion segments), captions, a title card and laid-out views.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tumble::scene {
+
+/// A stretch of simulated time played at its own speed.
+struct SlowMotion {
+  double start = 0, end = 0;  ///< simulated s
+  double time_scale = 0.25;   ///< simulated s per video s inside [start, end]
+};
+
+/// Text shown while the simulated time is in [start, end], fading in and out.
+struct Caption {
+  double start = 0, end = 0;  ///< simulated s
+  std::string text;
+};
+
+/// A title over the first `duration` s of video, fading out.
+struct TitleCard {
+  std::string text, subtitle;
+  double duration = 0;        ///< video s; 0 = no title
+};
+
+enum class ViewKind { world, body_frame, momentum_sphere, plot, poinsot };
+
+/// One `[[views]]` table.
+struct ViewConfig {
+  ViewKind kind = ViewKind::world;
+  /// x, y, width, height as fractions of the frame from its top-left corner; none = full frame.
+  std::optional<std::array<double, 4>> viewport;
+  std::string body;                 ///< body name; empty = the first body
+  std::vector<std::string> series;  ///< plot: wbx wby wbz |w| energy_error axis1_L axis2_L axis3_L
+  std::string title;                ///< drawn in the view's corner
+};
+
+/// Names of the plot series, in the order of `plot_series_names()`.
+const std::vector<std::string>& plot_series_names();
+const char* view_kind_name(ViewKind k);
+
+struct ExplainConfig {
+  double time_scale = 1;           ///< [output] time_scale: simulated s per video s
+  std::vector<SlowMotion> slow_motion;
+  std::vector<Caption> captions;
+  TitleCard title;
+  std::vector<ViewConfig> views;   ///< empty: the classic single world view (or [compare] grid)
+  bool labels = false;             ///< [draw] labels: body names next to the bodies
+};
+
+}  // namespace tumble::scene

@@ -1,0 +1,162 @@
+// [[views]], [[captions]], [title], [[slow_motion]]: explanatory-video settings.
+#include <algorithm>
+
+#include "scene/frame_clock.hpp"
+#include "scene/internal.hpp"
+
+namespace tumble::scene {
+
+const std::vector<std::string>& plot_series_names() {
+  static const std::vector<std::string> names = {"wbx", "wby", "wbz", "|w|", "energy_error", "axis1_L", "axis2_L",
+                                                 "axis3_L"};
+  return names;
+}
+
+const char* view_kind_name(ViewKind k) {
+  switch (k) {
+    case ViewKind::world: return "world";
+    case ViewKind::body_frame: return "body_frame";
+    case ViewKind::momentum_sphere: return "momentum_sphere";
+    case ViewKind::plot: return "plot";
+    case ViewKind::poinsot: return "poinsot";
+  }
+  return "?";
+}
+
+namespace detail {
+
+namespace {
+
+std::string indexed(std::string_view key, std::size_t i) { return std::string(key) + "[" + std::to_string(i) + "]"; }
+
+void read_viewport(TableReader& r, ViewConfig& v) {
+  const toml::node* n = r.node("viewport");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 4) {
+    r.error("viewport", "expected [x, y, width, height] as fractions of the frame from its top-left corner, found " +
+                            describe(*n));
+    return;
+  }
+  std::array<double, 4> f{};
+  for (std::size_t i = 0; i < 4; ++i) {
+    auto x = read_number(*a->get(i), r.key_path("viewport") + "[" + std::to_string(i) + "]", Range::closed(0, 1),
+                         r.diag());
+    if (!x) return;
+    f[i] = *x;
+  }
+  if (f[2] <= 0 || f[3] <= 0 || f[0] + f[2] > 1 + 1e-9 || f[1] + f[3] > 1 + 1e-9) {
+    r.error("viewport", "expected width, height > 0 with x + width <= 1 and y + height <= 1");
+    return;
+  }
+  v.viewport = f;
+}
+
+void check_body(TableReader& r, const LoadContext& ctx, const std::string& name) {
+  const std::vector<std::string_view> names(ctx.body_names.begin(), ctx.body_names.end());
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::string msg = "expected the name of a body, found \"" + name + "\"";
+  const std::string hint = closest(name, names);
+  if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
+  r.error("body", msg);
+}
+
+void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
+  const auto list = root.tables("views");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    TableReader r(*list[i], indexed("views", i), ctx.diag, {"kind", "viewport", "body", "series", "title"});
+    ViewConfig v;
+    const auto kind = r.string("kind");
+    if (!kind) {
+      if (!r.has("kind")) r.error("kind", "missing; expected world, body_frame, momentum_sphere, plot or poinsot");
+      continue;
+    }
+    bool known = false;
+    for (ViewKind k : {ViewKind::world, ViewKind::body_frame, ViewKind::momentum_sphere, ViewKind::plot,
+                       ViewKind::poinsot})
+      if (*kind == view_kind_name(k)) v.kind = k, known = true;
+    if (!known) r.error("kind", "expected world, body_frame, momentum_sphere, plot or poinsot, found \"" + *kind + "\"");
+    read_viewport(r, v);
+    v.body = r.string("body").value_or("");
+    if (!v.body.empty()) check_body(r, ctx, v.body);
+    v.title = r.string("title").value_or("");
+    if (auto series = r.strings("series")) {
+      for (const std::string& name : *series) {
+        const auto& all = plot_series_names();
+        if (std::find(all.begin(), all.end(), name) == all.end())
+          r.error("series", "expected names from wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, axis3_L, found \"" +
+                                name + "\"");
+      }
+      v.series = *series;
+    }
+    if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"wbx", "wby", "wbz"};
+    if (v.kind != ViewKind::plot && r.has("series")) r.error("series", "only a plot view has series");
+    s.render.explain.views.push_back(std::move(v));
+  }
+  if (!s.render.explain.views.empty() && !s.render.compare_methods.empty())
+    root.error("views", "[[views]] and [compare] do not combine; a comparison lays out its own grid");
+}
+
+void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
+  const auto list = root.tables("captions");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text"});
+    Caption c;
+    c.start = r.number("start", Range::non_negative()).value_or(0);
+    c.end = r.number("end", Range::non_negative()).value_or(s.simulation.duration);
+    if (c.end <= c.start) r.error("end", "expected end > start (simulated s)");
+    auto text = r.string("text");
+    if (!text) {
+      if (!r.has("text")) r.error("text", "missing; a caption needs text = \"...\"");
+    } else {
+      c.text = *text;
+    }
+    s.render.explain.captions.push_back(std::move(c));
+  }
+}
+
+void read_slow_motion(TableReader& root, LoadContext& ctx, Scene& s) {
+  const auto list = root.tables("slow_motion");
+  auto& out = s.render.explain.slow_motion;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    TableReader r(*list[i], indexed("slow_motion", i), ctx.diag, {"start", "end", "time_scale"});
+    SlowMotion m;
+    const auto a = r.number("start", Range::closed(0, s.simulation.duration));
+    const auto b = r.number("end", Range::closed(0, s.simulation.duration));
+    if (!a && !r.has("start")) r.error("start", "missing (simulated s)");
+    if (!b && !r.has("end")) r.error("end", "missing (simulated s)");
+    if (!a || !b) continue;
+    m.start = *a, m.end = *b;
+    m.time_scale = r.number("time_scale", Range::closed(1e-4, 1e4)).value_or(m.time_scale);
+    if (m.end <= m.start) {
+      r.error("end", "expected end > start");
+      continue;
+    }
+    for (const SlowMotion& o : out)
+      if (m.start < o.end && o.start < m.end) r.error("start", "overlaps an earlier slow_motion segment");
+    out.push_back(m);
+  }
+  std::sort(out.begin(), out.end(), [](const SlowMotion& x, const SlowMotion& y) { return x.start < y.start; });
+  if (!out.empty() && root.diag().ok() &&
+      frame_clock(s, s.render.output.fps).count() > static_cast<long>(kMaxFrames))
+    root.error("slow_motion", "the slowed video exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
+}
+
+}  // namespace
+
+void read_explain_config(TableReader& root, LoadContext& ctx, Scene& s) {
+  read_views(root, ctx, s);
+  read_captions(root, ctx, s);
+  read_slow_motion(root, ctx, s);
+  if (auto t = root.subtable("title")) {
+    TableReader r(*t, "title", ctx.diag, {"text", "subtitle", "duration"});
+    TitleCard& c = s.render.explain.title;
+    c.text = r.string("text").value_or("");
+    c.subtitle = r.string("subtitle").value_or("");
+    c.duration = r.number("duration", Range::closed(0, 60)).value_or(3.0);
+    if (c.text.empty()) r.error("text", "missing; a title card needs text = \"...\"");
+  }
+}
+
+}  // namespace detail
+}  // namespace tumble::scene

@@ -1,0 +1,31 @@
+// Text of explanatory videos: captions that fade in and out, a title card,
+// body-name labels that face the camera (screen text placed at the body's
+// projected position) and the overlay line built from switchable items.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+/// Opacity in [0, 1] at video time `tau` of text shown over [start, end]
+/// (video s): linear fades of `fade` s (at most a quarter of the span).
+float fade_alpha(double tau, double start, double end, double fade = 0.4);
+
+/// Pixel position (top-left origin) of world point `p` seen by `cam` in a
+/// width × height viewport, as the renderer projects it; false when behind the camera.
+bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out);
+
+/// A caption line centred near the bottom of a frame_w × frame_h frame.
+TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h);
+
+/// Title (and subtitle) centred in the frame, with opacity `alpha`.
+std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
+                                  int frame_h);
+
+/// Approximate width of `text` at `size_px` (the UI font's average advance), px.
+float approx_text_width(const std::string& text, float size_px);
+
+}  // namespace tumble::viz

@@ -1,0 +1,38 @@
+// The momentum sphere (principal frame): for a torque-free body Π = Rᵀ L keeps
+// |Π| = |L| (the sphere) and Σ Π_i²/I_i = 2E (the energy ellipsoid), so Π runs
+// along their intersection, a polhode. Levels between the I1 and I3 extremes
+// circle the axes of the smallest and largest moment; the level 2E = |L|²/I2
+// is the separatrix: two great circles through ±e2, the intermediate axis.
+// (Landau & Lifshitz, Mechanics §37; Goldstein, Classical Mechanics §5.6.)
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+/// Closed polhode curves on |Π| = `L` with Σ Π_i²/I_i = `two_E` (kg·m²/s, J),
+/// principal frame, I1 ≤ I2 ≤ I3; `n` points each (first = last). Empty when
+/// the level is outside [L²/I3, L²/I1]; at the separatrix level (|L|²/I2
+/// within 1e-12 relative) the four half great circles through ±e2.
+std::vector<std::vector<Eigen::Vector3d>> polhodes(const Eigen::Vector3d& inertia, double L, double two_E, int n);
+
+/// The separatrix: both great circles Π3 = ±k Π1, k² = (1/I1 - 1/I2)/(1/I2 - 1/I3), radius L.
+std::vector<std::vector<Eigen::Vector3d>> separatrix(const Eigen::Vector3d& inertia, double L, int n);
+
+/// What the momentum-sphere view draws for one body.
+struct MomentumSphereInput {
+  Eigen::Vector3d inertia;                  ///< principal moments, ascending, kg·m²
+  Eigen::Vector3d momentum;                 ///< Π now (principal frame), kg·m²/s
+  std::vector<Eigen::Vector3d> history;     ///< past Π, oldest first
+  double two_E = 0;                         ///< 2 × rotational energy, J
+  std::string title;
+};
+
+/// Fills `view` (camera included): drawn in units of |L| (sphere of radius 1).
+void build_momentum_sphere(View& view, const MomentumSphereInput& in, float font_px);
+
+}  // namespace tumble::viz

@@ -1,0 +1,92 @@
+#include "viz/poinsot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "viz/scene_view.hpp"
+
+namespace tumble::viz {
+
+namespace {
+
+glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+// Two unit vectors spanning the plane ⊥ n.
+void plane_basis(const Eigen::Vector3d& n, Eigen::Vector3d& u, Eigen::Vector3d& v) {
+  const Eigen::Vector3d a = std::abs(n.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  u = n.cross(a).normalized();
+  v = n.cross(u);
+}
+
+}  // namespace
+
+PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vector3d& inertia, const Eigen::Vector3d& L) {
+  PoinsotGeometry p;
+  p.axes = q.toRotationMatrix();
+  const Eigen::Vector3d Pi = q.conjugate() * L;
+  const Eigen::Vector3d w_principal = Pi.cwiseQuotient(inertia);
+  const double two_E = Pi.dot(w_principal);
+  p.semi_axes = (two_E * inertia.cwiseInverse()).cwiseSqrt();
+  const double Ln = L.norm();
+  p.normal = Ln > 0 ? Eigen::Vector3d(L / Ln) : Eigen::Vector3d::UnitZ();
+  p.plane_distance = Ln > 0 ? two_E / Ln : 0;
+  p.contact = q * w_principal;
+  return p;
+}
+
+void build_poinsot(View& view, const PoinsotInput& in, float font_px) {
+  const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
+  const double scale = 1.0 / std::max(p.semi_axes.maxCoeff(), 1e-300);
+  // Camera: the plane below the ellipsoid (up = -L̂), seen slightly from above.
+  Eigen::Vector3d u, v;
+  plane_basis(p.normal, u, v);
+  const Eigen::Vector3d up = -p.normal;
+  const Eigen::Vector3d target = 0.5 * p.plane_distance * scale * p.normal;
+  view.camera = Camera{};
+  view.camera.target = g(target);
+  view.camera.position = g(target + 4.2 * (0.85 * u + 0.25 * v) + 1.6 * up);
+  view.camera.up = g(up);
+  view.camera.fov_y_deg = 35;
+  view.camera.near_m = 0.3;
+  view.camera.far_m = 30;
+  const double pi = std::numbers::pi;
+  // The ellipsoid as a wireframe fixed to the body: rings around each axis.
+  auto ellipsoid_point = [&](double th, double ph) {
+    const Eigen::Vector3d e(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+    return Eigen::Vector3d(p.axes * p.semi_axes.cwiseProduct(e) * scale);
+  };
+  const Color wire{0.35f, 0.45f, 0.7f, 0.55f};
+  for (int ring = 1; ring < 8; ++ring) {
+    PolylineItem lat{{}, wire, 1.0f, false}, lon{{}, wire, 1.0f, false};
+    for (int i = 0; i <= 72; ++i) {
+      lat.points.push_back(g(ellipsoid_point(pi * ring / 8, 2 * pi * i / 72)));
+      lon.points.push_back(g(ellipsoid_point(pi * i / 72 * 2, pi * ring / 8)));
+    }
+    view.polylines.push_back(std::move(lat));
+    view.polylines.push_back(std::move(lon));
+  }
+  for (int i = 0; i < 3; ++i)
+    view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * scale * 1.15), 0.012, kAxisColors[i]});
+  // The invariable plane: a square grid centred on the foot of L.
+  const Eigen::Vector3d foot = p.plane_distance * scale * p.normal;
+  const Color plane{0.45f, 0.47f, 0.52f, 0.5f};
+  const double half = 1.6;
+  for (int i = -4; i <= 4; ++i) {
+    const double s = half * i / 4;
+    view.polylines.push_back({{g(foot + s * u - half * v), g(foot + s * u + half * v)}, plane, 1.0f, false});
+    view.polylines.push_back({{g(foot - half * u + s * v), g(foot + half * u + s * v)}, plane, 1.0f, false});
+  }
+  // L, ω to the contact point, polhode (body-fixed, carried by R) and herpolhode (on the plane).
+  view.arrows.push_back({{0, 0, 0}, g(p.normal * 1.3 * std::max(1.0, p.plane_distance * scale)), 0.015, kLColor});
+  view.arrows.push_back({{0, 0, 0}, g(p.contact * scale), 0.015, kOmegaColor});
+  PolylineItem polhode{{}, {0.95f, 0.6f, 0.05f, 1.0f}, 2.5f, true}, herpolhode{{}, {0.1f, 0.1f, 0.15f, 1.0f}, 2.0f, true};
+  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * scale));
+  for (const Eigen::Vector3d& w : in.omega_world_history) herpolhode.points.push_back(g(w * scale));
+  if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
+  if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
+  view.points.push_back({g(p.contact * scale), 0.035, {0.1f, 0.1f, 0.15f, 1.0f}});
+  if (!in.title.empty()) view.texts.push_back({in.title, {10.0f, 8.0f}, font_px, {0.12f, 0.13f, 0.16f, 1.0f}});
+}
+
+}  // namespace tumble::viz

@@ -1,0 +1,45 @@
+// Poinsot's construction (Goldstein, Classical Mechanics §5.6; Landau &
+// Lifshitz, Mechanics §37). In ω-space the body-fixed ellipsoid
+// ωᵀ J ω = 2E (J = R J0 Rᵀ, the world inertia) holds ω's tip. Its normal
+// there is ∇(ωᵀJω) = 2Jω = 2L, fixed in space, and the tip's distance along L̂
+// is ω·L/|L| = 2E/|L|, constant: the ellipsoid touches the fixed invariable
+// plane {x : x·L̂ = 2E/|L|} at ω's tip and, as the contact point is on the
+// instantaneous axis (at rest), rolls on it without slipping. The tip traces
+// the polhode on the ellipsoid and the herpolhode on the plane.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+/// The construction at one instant, world frame, ω-space units (rad/s).
+struct PoinsotGeometry {
+  Eigen::Matrix3d axes;         ///< columns: the ellipsoid's axes (the body's principal axes, world)
+  Eigen::Vector3d semi_axes;    ///< sqrt(2E / I_i), rad/s
+  Eigen::Vector3d normal;       ///< L̂, the invariable plane's normal
+  double plane_distance = 0;    ///< 2E/|L|, rad/s
+  Eigen::Vector3d contact;      ///< ω_world: where the ellipsoid touches the plane
+};
+
+/// `q` = world ← principal, `inertia` ascending (kg·m²), `L` world (kg·m²/s).
+PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vector3d& inertia, const Eigen::Vector3d& L);
+
+struct PoinsotInput {
+  Eigen::Quaterniond q;                 ///< world ← principal, now
+  Eigen::Vector3d inertia;              ///< ascending, kg·m²
+  Eigen::Vector3d L;                    ///< world, kg·m²/s
+  std::vector<Eigen::Vector3d> omega_principal_history;  ///< ω in the principal frame, oldest first (polhode)
+  std::vector<Eigen::Vector3d> omega_world_history;      ///< ω in the world, oldest first (herpolhode)
+  std::string title;
+};
+
+/// Fills `view` (camera included); ω-space scaled so the ellipsoid's largest semi-axis is 1.
+void build_poinsot(View& view, const PoinsotInput& in, float font_px);
+
+}  // namespace tumble::viz

@@ -1,0 +1,45 @@
+// A strip chart: chosen series over time, drawn so far, with a playhead.
+// Orthographic camera over the plane z = 0; the chart maps [t0, t1] × [lo, hi]
+// into the view, so lines and the labels (pixels) line up exactly.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+struct Series {
+  std::string name;
+  std::vector<double> values;  ///< one per sample of StripChartInput::times
+  Color color;
+};
+
+struct StripChartInput {
+  std::vector<double> times;   ///< s, ascending; samples up to the playhead
+  std::vector<Series> series;
+  double t0 = 0, t1 = 1;       ///< s, the time axis
+  double lo = -1, hi = 1;      ///< value axis (the caller's unit)
+  double playhead = 0;         ///< s
+  std::string title;
+};
+
+/// Fills `view` (camera included) for a viewport of `width_px` × `height_px`.
+void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px);
+
+/// Maps chart coordinates (t, value) to the world plane the chart is drawn in.
+class ChartMap {
+ public:
+  ChartMap(const StripChartInput& in, int width_px, int height_px, float font_px);
+  glm::dvec3 at(double t, double v) const;
+  glm::vec2 pixel(const glm::dvec3& world) const;  ///< top-left origin, px
+  double aspect() const { return aspect_; }
+
+ private:
+  double t0_, t1_, lo_, hi_, aspect_;
+  double x0_, x1_, y0_, y1_;  // plot rectangle in world units (y up, half height 1)
+  int w_, h_;
+};
+
+}  // namespace tumble::viz

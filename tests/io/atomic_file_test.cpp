@@ -1,0 +1,72 @@
+// The atomic writer and its temp names.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/atomic_file.hpp"
+
+namespace tumble::io {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("tumble_io_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(AtomicFile, LeavesNothingWithoutCommit) {
+  const fs::path dir = fresh_dir("nocommit");
+  const fs::path p = dir / "a.txt";
+  {
+    AtomicFile f(p);
+    f.write("partial");
+    EXPECT_TRUE(fs::exists(temp_path_for(p)));  // the bytes go to the temp name first
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  atomic_write_file(p, "whole");
+  EXPECT_EQ(slurp(p), "whole");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  atomic_write_file(p, "again", Durability::rename_only);
+  EXPECT_EQ(slurp(p), "again");
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, FailureNamesThePath) {
+  const fs::path bad = fresh_dir("fail") / "missing" / "x.json";
+  try {
+    atomic_write_file(bad, "x");
+    FAIL() << "expected IoError";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(TempNames, TheTempNameOfAFileLeadsBackToIt) {
+  const std::string tmp = temp_path_for("out/frame_000001.png").filename().string();
+  EXPECT_EQ(tmp, "frame_000001.png.tmp-" + std::to_string(::getpid()));
+  EXPECT_EQ(temp_target_name(tmp), "frame_000001.png");
+  EXPECT_EQ(temp_target_name("manifest.json.tmp-99999"), "manifest.json");
+}
+
+TEST(TempNames, FinishedFilesAreNotTempFiles) {
+  for (const char* name : {"manifest.json", "frame_000001.png", "a.tmp-", "a.tmp-12x", ".tmp-12", "notes.tmp-old",
+                           "frame_000001.png.tmp.99999"})
+    EXPECT_EQ(temp_target_name(name), "") << name;
+}
+
+}  // namespace
+}  // namespace tumble::io

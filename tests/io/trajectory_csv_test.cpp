@@ -1,0 +1,50 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+#include "core/dynamics.hpp"
+#include "io/trajectory_csv.hpp"
+
+namespace tumble::io {
+namespace {
+
+std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+  return out;
+}
+
+TEST(TrajectoryCsv, RowHasTheHeaderColumnsAndReadsBackExactly) {
+  RigidBodyModel m;
+  m.name = "box";
+  m.mass = 2;
+  m.inertia = {1, 2, 3};
+  m.inv_inertia = {1, 0.5, 1.0 / 3.0};
+  BodyState s;
+  s.c = {0.1, -2, 1e-17};
+  s.P = {2, 4, 6};  // v = (1, 2, 3)
+  s.L = {0.3, 0.2, 0.1};
+  std::string out;
+  append_trajectory_row(out, 1.0 / 3.0, "rk4:box", m, s);
+  ASSERT_EQ(out.back(), '\n');
+  out.pop_back();
+  const auto f = fields(out), names = fields(kTrajectoryHeader);
+  ASSERT_EQ(f.size(), names.size());
+  EXPECT_EQ(std::strtod(f[0].c_str(), nullptr), 1.0 / 3.0);
+  EXPECT_EQ(f[1], "rk4:box");
+  EXPECT_EQ(std::strtod(f[4].c_str(), nullptr), 1e-17);
+  EXPECT_EQ(f[9], "1");
+  EXPECT_EQ(f[11], "3");
+  EXPECT_EQ(std::strtod(f[18].c_str(), nullptr), total_energy(m, s));
+}
+
+TEST(TrajectoryCsv, FormatDoubleRoundTrips) {
+  for (double v : {0.1, 1.0 / 3.0, -2.5e-300, 6.02214076e23}) EXPECT_EQ(std::strtod(format_double(v).c_str(), nullptr), v);
+  EXPECT_EQ(format_double(30), "30");
+}
+
+}  // namespace
+}  // namespace tumble::io

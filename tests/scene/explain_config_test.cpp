@@ -1,0 +1,120 @@
+// Explanatory-video settings: the frame clock (time_scale, slow motion) and
+// the loader's checks of [[views]], [[captions]], [title], [[slow_motion]].
+#include <gtest/gtest.h>
+
+#include "scene/frame_clock.hpp"
+#include "scene/scene.hpp"
+
+namespace tumble::scene {
+namespace {
+
+TEST(FrameClock, WithoutScalingFrameKShowsExactlyKOverFps) {
+  const FrameClock c(10, 30);
+  EXPECT_EQ(c.count(), 301);
+  for (long k : {0L, 1L, 7L, 299L, 300L}) EXPECT_EQ(c.time(k), static_cast<double>(k) / 30);
+}
+
+TEST(FrameClock, QuarterTimeScaleIsFourTimesSlower) {
+  const FrameClock c(2, 30, 0.25);
+  EXPECT_EQ(c.count(), 241);  // 2 s simulated, 8 s of video at 30 fps
+  EXPECT_DOUBLE_EQ(c.time(120), 1.0);
+  EXPECT_DOUBLE_EQ(c.time(240), 2.0);
+  EXPECT_EQ(c.frame_at(0.5), 60);
+  EXPECT_EQ(c.frame_at(0.51), -1);
+}
+
+TEST(FrameClock, SlowMotionSegmentStretchesOnlyItsSpan) {
+  // 1 s at full speed, [1, 2] at 0.1 (10 s of video), then 1 s at full speed.
+  const FrameClock c(3, 10, 1.0, {{1.0, 2.0, 0.1}});
+  EXPECT_EQ(c.count(), 121);  // 12 s of video
+  EXPECT_DOUBLE_EQ(c.time(10), 1.0);
+  EXPECT_DOUBLE_EQ(c.time(60), 1.5);
+  EXPECT_DOUBLE_EQ(c.time(110), 2.0);
+  EXPECT_DOUBLE_EQ(c.time(120), 3.0);
+  EXPECT_DOUBLE_EQ(c.video_time(1.5), 6.0);
+  for (long k = 1; k < c.count(); ++k) EXPECT_GT(c.time(k), c.time(k - 1));
+}
+
+Scene load(const std::string& extra) {
+  const std::string base = R"(
+name = "x"
+[simulation]
+duration = 2.0
+fps = 30
+[[bodies]]
+name = "racket"
+shape = { type = "box", size = [3, 1, 0.4], resolution = 4, mass = 1 }
+omega_body = [0.01, 5, 0.01]
+)";
+  return load_scene_from_string(base + extra, "x.toml");
+}
+
+std::string error_of(const std::string& extra) {
+  try {
+    load(extra);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ExplainConfig, ReadsViewsCaptionsTitleAndSlowMotion) {
+  const Scene s = load(R"(
+[output]
+time_scale = 0.5
+[draw]
+labels = true
+overlay = ["time", "energy"]
+[title]
+text = "Flip"
+duration = 2
+[[views]]
+kind = "world"
+viewport = [0, 0, 0.5, 1]
+[[views]]
+kind = "plot"
+body = "racket"
+series = ["wbx", "axis2_L"]
+viewport = [0.5, 0, 0.5, 1]
+[[captions]]
+start = 0.2
+end = 1.0
+text = "spin"
+[[slow_motion]]
+start = 1.0
+end = 1.5
+time_scale = 0.1
+)");
+  const ExplainConfig& e = s.render.explain;
+  EXPECT_EQ(e.time_scale, 0.5);
+  EXPECT_TRUE(e.labels);
+  EXPECT_TRUE(s.render.draw.overlay_items.time && s.render.draw.overlay_items.energy);
+  EXPECT_FALSE(s.render.draw.overlay_items.method || s.render.draw.overlay_items.step);
+  ASSERT_EQ(e.views.size(), 2u);
+  EXPECT_EQ(e.views[1].kind, ViewKind::plot);
+  EXPECT_EQ(e.views[1].series.size(), 2u);
+  EXPECT_EQ((*e.views[1].viewport)[0], 0.5);
+  ASSERT_EQ(e.captions.size(), 1u);
+  EXPECT_EQ(e.captions[0].text, "spin");
+  ASSERT_EQ(e.slow_motion.size(), 1u);
+  EXPECT_EQ(e.title.text, "Flip");
+  EXPECT_EQ(frame_clock(s, 30).count(), 1 + 30 * (1.0 / 0.5 + 0.5 / 0.1 + 0.5 / 0.5));
+}
+
+TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {
+  EXPECT_NE(error_of("[[views]]\nkind = \"polar\"\n").find("views[0].kind"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"world\"\nviewport = [0.6, 0, 0.5, 1]\n").find("x + width <= 1"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nbody = \"rackett\"\n").find("did you mean \"racket\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nseries = [\"wq\"]\n").find("views[0].series"), std::string::npos);
+  EXPECT_NE(error_of("[[captions]]\nstart = 1\nend = 0.5\ntext = \"a\"\n").find("end > start"), std::string::npos);
+  EXPECT_NE(error_of("[[slow_motion]]\nstart = 0.5\nend = 1\n[[slow_motion]]\nstart = 0.8\nend = 1.2\n").find("overlaps"),
+            std::string::npos);
+  EXPECT_NE(error_of("[output]\ntime_scale = 0\n").find("output.time_scale"), std::string::npos);
+  EXPECT_NE(error_of("[draw]\noverlay = [\"time\", \"fps\"]\n").find("draw.overlay"), std::string::npos);
+  EXPECT_NE(error_of("[title]\nduration = 2\n").find("title.text"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tumble::scene
