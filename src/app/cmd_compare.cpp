@@ -1,6 +1,7 @@
 // `tumble compare A.png B.png`: the golden-image comparison on two files.
 // Exit 0 same (within the tolerance), 1 different (including different
 // sizes), 2 bad input (unreadable file, bad option).
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -22,6 +23,16 @@ void check_tolerance(const golden::CompareOptions& c) {
   if (c.max_delta < 0 || c.max_delta > 255) throw InputError("--max-delta: expected 0..255, found " + std::to_string(c.max_delta));
   if (!(c.max_fraction >= 0 && c.max_fraction <= 1))
     throw InputError("--max-fraction: expected a number in [0, 1], found " + format_double(c.max_fraction));
+  if (c.max_region < 0) throw InputError("--max-region: expected an integer >= 0, found " + std::to_string(c.max_region));
+  if (c.window < 1 || c.window > 255) throw InputError("--window: expected 1..255 px, found " + std::to_string(c.window));
+  if (!(c.max_window_mean >= 0 && c.max_window_mean <= 255))
+    throw InputError("--max-window-mean: expected a number in [0, 255], found " + format_double(c.max_window_mean));
+}
+
+std::string box_text(const golden::Box& b) {
+  if (b.empty()) return "none";
+  return "(" + std::to_string(b.x0) + "," + std::to_string(b.y0) + ")-(" + std::to_string(b.x1) + "," +
+         std::to_string(b.y1) + ") " + std::to_string(b.x1 - b.x0 + 1) + "x" + std::to_string(b.y1 - b.y0 + 1);
 }
 
 int run_compare(const CompareCliOptions& o) {
@@ -36,9 +47,20 @@ int run_compare(const CompareCliOptions& o) {
   }
   const golden::Comparison c = golden::compare_images(a, b, o.cmp);
   std::cout << (c.pass ? "same: " : "different: ") << c.summary << "\n";
+  if (!c.size_mismatch) {
+    std::printf("  fraction over %d:  %.6f (limit %g)%s\n", o.cmp.max_delta, c.fraction, o.cmp.max_fraction,
+                c.fraction_ok ? "" : "  FAIL");
+    std::printf("  largest region:    %ld px, box %s (limit %ld)%s\n", c.region, box_text(c.region_box).c_str(),
+                o.cmp.max_region, c.region_ok ? "" : "  FAIL");
+    std::printf("  worst %dx%d mean:  %.2f levels, box %s (limit %g)%s\n", o.cmp.window, o.cmp.window, c.window_mean,
+                box_text(c.window_box).c_str(), o.cmp.max_window_mean, c.window_ok ? "" : "  FAIL");
+    std::fflush(stdout);
+  }
   if (!o.diff.empty() && !c.size_mismatch) {
-    io::write_png_atomic(o.diff, golden::amplified_difference(a, b));
-    std::cout << "difference x16 written to " << o.diff << "\n";
+    io::Image d = golden::amplified_difference(a, b);
+    golden::outline_offenders(d, c);
+    io::write_png_atomic(o.diff, d);
+    std::cout << "difference x16 written to " << o.diff << " (largest region outlined in yellow, worst window in cyan)\n";
   }
   return c.pass ? kOk : 1;
 }
@@ -52,6 +74,15 @@ void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c) {
   cmd->add_option("--max-fraction", c.max_fraction,
                   "Fail when more than this fraction of pixels differ (default " +
                       format_short(golden::CompareOptions{}.max_fraction) + ")");
+  cmd->add_option("--max-region", c.max_region,
+                  "Fail when a connected region of differing pixels is larger than this, px (default " +
+                      std::to_string(golden::CompareOptions{}.max_region) + ")");
+  cmd->add_option("--window", c.window,
+                  "Side of the square window of the pooled mean difference, px (default " +
+                      std::to_string(golden::CompareOptions{}.window) + ")");
+  cmd->add_option("--max-window-mean", c.max_window_mean,
+                  "Fail when the mean difference over some window exceeds this, levels 0..255 (default " +
+                      format_short(golden::CompareOptions{}.max_window_mean) + ")");
 }
 
 void check_golden_tolerance(const golden::CompareOptions& c) { check_tolerance(c); }

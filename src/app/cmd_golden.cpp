@@ -1,4 +1,4 @@
-// `tumble golden SCENE --at t1,t2 --dir DIR [--update]`: makes or checks
+// `tumble golden SCENE --at t1,t2 | --frames k1,k2 --dir DIR [--update]`: makes or checks
 // golden images (and a golden trajectory) of a scene. Physics is checked
 // first, so a physics change is reported as such before the pixels differ.
 // Exit 0 all pass (or --update), 1 a golden differs or is missing, 2 bad input.
@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 constexpr int kGoldenFailed = 1;
 
 struct GoldenOptions {
-  std::string scene, at, dir, report, msaa, gl;
+  std::string scene, at, frames, dir, report, msaa, gl;
   int width = 320, height = 240;
   long every = 10;
   bool update = false, physics_only = false;
@@ -64,28 +64,44 @@ double parse_num(const std::string& what, const std::string& s) {
   return v;
 }
 
-/// Times -> frame numbers; each time must be a frame time of the scene (k/fps,
-/// or the simulated time frame k shows under [output] time_scale / slow motion).
-std::vector<long> frames_at(const std::string& at, const scene::FrameClock& clock) {
+/// A time in s: a decimal number or a simple fraction "a/b" (e.g. 1/30).
+double parse_time(const std::string& s) {
+  const auto slash = s.find('/');
+  if (slash == std::string::npos) return parse_num("--at", s);
+  const double den = parse_num("--at", s.substr(slash + 1));
+  if (den == 0) throw InputError("--at " + s + ": division by zero");
+  return parse_num("--at", s.substr(0, slash)) / den;
+}
+
+/// Golden frames from `--at` times (each matched to the nearest frame k =
+/// round(video_time(t) * fps), so any time within half a frame of a frame
+/// time names that frame; time_scale / slow motion are the clock's) or from `--frames` numbers; sorted, without repeats.
+std::vector<long> golden_frames(const std::string& at, const std::string& frames, const scene::FrameClock& clock) {
   const double fps = clock.fps();
   const long count = clock.count();
+  if (at.empty() == frames.empty())
+    throw InputError(at.empty() ? "give --at times or --frames numbers, e.g. --at 0.5,2 or --frames 15,60"
+                                : "--at and --frames: give one of them, not both");
+  const bool by_time = !at.empty();
+  const char* opt = by_time ? "--at" : "--frames";
+  const auto items = split_list(by_time ? at : frames);
+  if (items.empty()) throw InputError(std::string(opt) + ": expected a comma-separated list, e.g. " +
+                                      (by_time ? "--at 0.5,2" : "--frames 15,60"));
   std::set<long> ks;
-  const auto items = split_list(at);
-  if (items.empty()) throw InputError("--at: expected times in s, e.g. --at 0.5,2");
   for (const std::string& item : items) {
-    const double t = parse_num("--at", item);
-    const long k = t < 0 ? -1 : std::lround(clock.video_time(t) * fps);
-    if (t < 0 || std::abs(clock.time(k) - t) > 1e-9 * std::max(1.0, std::abs(t))) {
-      const long lo = t < 0 ? 0 : static_cast<long>(std::floor(clock.video_time(t) * fps));
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "--at %s: not a frame time of the scene (t = k/fps, fps %g); nearest: %.6g s and %.6g s",
-                    item.c_str(), fps, clock.time(std::max(0L, lo)), clock.time(std::max(0L, lo + 1)));
-      throw InputError(buf);
+    double k = 0;
+    if (by_time) {
+      const double t = parse_time(item);
+      if (t < 0) throw InputError("--at " + item + ": expected a time >= 0 s");
+      k = std::round(clock.video_time(t) * fps);
+    } else {
+      k = parse_num("--frames", item);
+      if (k < 0 || k != std::floor(k)) throw InputError("--frames " + item + ": expected a frame number (integer >= 0)");
     }
-    if (k >= count)
-      throw InputError("--at " + item + ": past the end of the scene (last frame t = " +
-                       format_double(clock.time(count - 1)) + " s)");
-    ks.insert(k);
+    if (k >= static_cast<double>(count))
+      throw InputError(std::string(opt) + " " + item + ": past the end of the scene (last frame " +
+                       std::to_string(count - 1) + ", t = " + format_double(clock.time(count - 1)) + " s)");
+    ks.insert(static_cast<long>(k));
   }
   return {ks.begin(), ks.end()};
 }
@@ -120,7 +136,7 @@ int run_golden(const GoldenOptions& o) {
   }
   const double fps = s.render.output.fps;
   const scene::FrameClock clock = scene::frame_clock(s, fps);
-  const std::vector<long> ks = frames_at(o.at, clock);
+  const std::vector<long> ks = golden_frames(o.at, o.frames, clock);
   const fs::path dir = o.dir;
   const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
   std::error_code ec;
@@ -254,7 +270,9 @@ void add_golden_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "golden", "Check (or --update) golden images and a golden trajectory of a scene at chosen times");
   cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
-  cmd->add_option("--at", o->at, "Times in s, comma-separated; each must be a frame time k/fps")->required();
+  cmd->add_option("--at", o->at,
+                  "Times in s, comma-separated (decimals or fractions such as 1/30); each picks the nearest frame");
+  cmd->add_option("--frames", o->frames, "Frame numbers instead of --at, comma-separated (frame k shows t = k/fps)");
   cmd->add_option("--dir", o->dir, "Folder of the goldens (<name>_f<frame>_msaa<N>.png/.json, <name>.trajectory.csv)")
       ->required();
   cmd->add_flag("--update", o->update, "Write the goldens from this run instead of checking them");

@@ -47,10 +47,17 @@ void Report::add_image(const std::string& id, const std::string& title, const io
       io::write_png_atomic(dir_ / rel, img);
       return rel;
     };
-    c.actual = put("actual", actual);
-    if (expected) c.expected = put("expected", *expected);
-    if (expected && cmp && !cmp->size_mismatch) {
-      c.diff = put("diff", amplified_difference(actual, *expected));
+    // The offending region is outlined on actual, expected and difference
+    // (same box on each); the mask shows the raw over-threshold pixels.
+    const bool compared = expected && cmp && !cmp->size_mismatch;
+    auto outlined = [&](io::Image img) {
+      if (compared) outline_offenders(img, *cmp);
+      return img;
+    };
+    c.actual = put("actual", outlined(actual));
+    if (expected) c.expected = put("expected", outlined(*expected));
+    if (compared) {
+      c.diff = put("diff", outlined(amplified_difference(actual, *expected)));
       c.mask = put("mask", over_threshold_mask(actual, *expected, options.max_delta));
     }
   }
@@ -85,7 +92,9 @@ fs::path Report::write() const {
   int failed = 0;
   for (const Case& c : cases_) failed += !c.pass;
   h << "<p>" << failed << " of " << cases_.size() << " cases failed. Diff: |actual − expected| × 16; "
-    << "mask: pixels over the threshold in magenta on the expected image darkened.</p>\n";
+    << "mask: pixels over the threshold in magenta on the expected image darkened. "
+    << "Outlined on actual, expected and difference: the largest connected region of differing pixels "
+    << "(yellow) and, when over its limit, the window of the largest mean difference (cyan).</p>\n";
   for (const Case& c : cases_) {
     if (c.pass) continue;
     h << "<div class=\"case\"><h2><span class=\"fail\">" << html_escape(c.status) << "</span> " << html_escape(c.title)

@@ -140,46 +140,7 @@ tumble::io::Image flat(int w, int h, std::uint8_t v) {
   return {w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3, v)};
 }
 
-TEST(Compare, IdenticalImagesPassWithZeroFigures) {
-  const auto a = flat(40, 30, 100);
-  const auto c = tumble::golden::compare_images(a, a);
-  EXPECT_TRUE(c.pass);
-  EXPECT_EQ(c.max_delta, 0);
-  EXPECT_EQ(c.over, 0);
-  EXPECT_EQ(c.rms, 0.0);
-}
-
-TEST(Compare, LowBitNoiseUnderTheThresholdPasses) {
-  auto a = flat(40, 30, 100), b = a;
-  for (std::size_t i = 0; i < b.rgb.size(); i += 7) b.rgb[i] = static_cast<std::uint8_t>(100 + (i % 9) - 4);
-  const auto c = tumble::golden::compare_images(a, b);
-  EXPECT_TRUE(c.pass) << c.summary;
-  EXPECT_EQ(c.max_delta, 4);
-  EXPECT_EQ(c.over, 0);
-}
-
-TEST(Compare, CountsPixelsOverTheThresholdByTheirLargestChannel) {
-  auto a = flat(100, 100, 100), b = a;
-  b.rgb[0 * 3 + 2] = 109;  // blue +9: over 8
-  b.rgb[1 * 3 + 0] = 108;  // +8: not over
-  const auto c = tumble::golden::compare_images(a, b, {8, 0.0});
-  EXPECT_EQ(c.over, 1);
-  EXPECT_EQ(c.max_delta, 9);
-  EXPECT_DOUBLE_EQ(c.fraction, 1e-4);
-  EXPECT_FALSE(c.pass);  // max_fraction 0
-  EXPECT_TRUE(tumble::golden::compare_images(a, b, {8, 1e-4}).pass);
-  const auto mask = tumble::golden::over_threshold_mask(a, b, 8);
-  EXPECT_EQ(mask.rgb[0], 255);
-  EXPECT_EQ(mask.rgb[3], 108 / 4);  // not over: the expected pixel, darkened
-  EXPECT_EQ(tumble::golden::amplified_difference(a, b).rgb[2], 9 * 16);
-}
-
-TEST(Compare, DifferentSizesFailWithoutThrowing) {
-  const auto c = tumble::golden::compare_images(flat(32, 24, 0), flat(24, 32, 0));
-  EXPECT_FALSE(c.pass);
-  EXPECT_TRUE(c.size_mismatch);
-  EXPECT_NE(c.summary.find("32x24"), std::string::npos) << c.summary;
-}
+// The comparison itself on synthetic images: compare_test.cpp.
 
 TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
   const std::string h = std::string(tumble::io::kTrajectoryHeader) + "\n";
@@ -219,6 +180,31 @@ TEST_F(GoldenCli, CompareExitCodes) {
   EXPECT_NE(r.err.find("junk.png"), std::string::npos) << r.err;
   EXPECT_EQ(run("compare '" + (dir_ / "nope.png").string() + "' " + a).code, 2);
   EXPECT_EQ(run("compare " + a + " " + a + " --max-delta 300").code, 2);
+  EXPECT_EQ(run("compare " + a + " " + a + " --window 0").code, 2);
+  EXPECT_EQ(run("compare " + a + " " + a + " --max-region -1").code, 2);
+  EXPECT_EQ(run("compare " + a + " " + a + " --max-window-mean 256").code, 2);
+}
+
+// A 3x3 patch +60 (9 of 76800 pixels, under --max-fraction) fails by its region
+// and its windowed mean; the figures and the outlined difference show where.
+TEST_F(GoldenCli, CompareReportsTheLocalFigures) {
+  auto img = flat(320, 240, 100);
+  tumble::io::write_png_atomic(dir_ / "a.png", img);
+  for (int y = 20; y < 23; ++y)
+    for (int x = 30; x < 33; ++x) img.rgb[(static_cast<std::size_t>(y) * 320 + x) * 3 + 1] = 160;
+  tumble::io::write_png_atomic(dir_ / "b.png", img);
+  const std::string ab = "compare '" + (dir_ / "b.png").string() + "' '" + (dir_ / "a.png").string() + "'";
+  Result r = run(ab + " --diff '" + (dir_ / "d.png").string() + "'");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("fraction over 8:  0.000117 (limit 0.0005)\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("largest region:    9 px, box (30,20)-(32,22) 3x3 (limit 6)  FAIL"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("worst 9x9 mean:  6.67 levels"), std::string::npos) << r.out;
+  const auto d = tumble::io::read_png(dir_ / "d.png");
+  EXPECT_EQ(d.pixel(28, 18)[0], 255) << "yellow outline 2 px outside the region";
+  EXPECT_EQ(d.pixel(31, 21)[1], 255) << "the region itself: 60 x 16 clamped";
+  // Each limit is an option.
+  EXPECT_EQ(run(ab + " --max-region 9 --max-window-mean 6.7").code, 0);
+  EXPECT_EQ(run(ab + " --max-region 9 --window 3 --max-window-mean 59").code, 1);  // 3x3 mean = 60
 }
 
 const char* kTiny = TUMBLE_SOURCE_DIR "/tests/app/data/tiny_render.toml";
@@ -262,10 +248,25 @@ TEST_F(GoldenCli, ChangedImageWritesTheFourPicturesAndTheIndex) {
   EXPECT_NE(html.find("max delta"), std::string::npos);
 }
 
-TEST_F(GoldenCli, TimesMustBeFrameTimes) {
-  const Result r = run(std::string("golden '") + kTiny + "' --at 0.15 --dir '" + dir_.string() + "'");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("not a frame time"), std::string::npos) << r.err;
+// Times pick the nearest frame (within half a frame), as decimals or simple
+// fractions; --frames takes frame numbers (issue 13 item 5).
+TEST_F(GoldenCli, TimesPickTheNearestFrameOrFrameNumbers) {
+  const std::string base = std::string("golden '") + kTiny + "' --dir '" + (dir_ / "g").string() + "' --report '" +
+                           (dir_ / "rep").string() + "' --width 32 --height 24 --msaa 0 --every 100";
+  const Result made = run(base + " --at 1/10 --update");  // tiny_render: 10 fps
+  ASSERT_EQ(made.code, 0) << made.out << made.err;
+  EXPECT_TRUE(fs::exists(dir_ / "g" / "tiny_render_f000001_msaa0.png")) << made.out;
+  for (const char* pick : {"--at 0.1", "--at 0.0999999", "--at 0.14", "--at 0.06", "--frames 1", "--at 1/10,0.1"}) {
+    const Result r = run(base + " " + pick);
+    EXPECT_EQ(r.code, 0) << pick << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("(frame 1)"), std::string::npos) << pick << "\n" << r.out;
+  }
+  for (const char* bad : {"--at -0.1", "--at 0.7", "--frames 7", "--frames 1.5", "--frames -1", "--at 1/0", "--at x",
+                          "--at 0.1 --frames 1", ""}) {
+    const Result r = run(base + " " + bad);
+    EXPECT_EQ(r.code, 2) << "'" << bad << "'\n" << r.out << r.err;
+  }
+  EXPECT_NE(run(base + " --frames 7").err.find("last frame 6"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,50 @@
+#!/bin/sh
+# Deliberate small changes checked against the committed goldens (issue 16):
+# each mutant runs from a scratch copy (binary + shaders, or a scene file), so
+# the source tree is never touched. Prints per mutant how many of the 36
+# golden images fail with the current rule and with the old global rule alone
+# (more than 0.0005 of the pixels over delta 8), and the worst figures.
+#   usage: scripts/golden_mutations.sh [TUMBLE_BINARY] [OUT_DIR]
+set -eu
+T=$(realpath "${1:-build/release/src/app/tumble}")
+O=$(realpath -m "${2:-out/golden-mutations}")
+scenes="dzhanibekov:0.5,4,12 methods_compare:0.5,6,15 reference:0.5,3,9 stable_spin:0.5,5,11 symmetric_top:0.5,4,9 thrown_box:0.2,0.9,1.6"
+rm -rf "$O"
+mkdir -p "$O"
+check() { # label, binary, [scene folder instead of scenes/]
+  label=$1 bin=$2 sdir=${3:-scenes}
+  for sc in $scenes; do
+    name=${sc%%:*}; at=${sc#*:}
+    [ -f "$sdir/$name.toml" ] || continue
+    "$bin" golden "$sdir/$name.toml" --at "$at" --dir "tests/golden/$name" --msaa 4,0 \
+      --report "$O/report/$label/$name" || true
+  done | awk -v label="$label" '
+    /^(PASS|FAIL) / && /pixels over/ {
+      n++; if ($1 == "FAIL") f++;
+      match($0, /: [0-9]+ of/); o = substr($0, RSTART + 2, RLENGTH - 5) + 0; if (o > 0.0005 * 76800) old++;
+      match($0, /largest region [0-9]+/); r = substr($0, RSTART + 15, RLENGTH - 15) + 0;
+      match($0, /mean [0-9.]+/); m = substr($0, RSTART + 5, RLENGTH - 5) + 0;
+      match($0, /max delta [0-9]+/); d = substr($0, RSTART + 10, RLENGTH - 10) + 0;
+      if (o > O) O = o; if (r > R) R = r; if (m > M) M = m; if (d > D) D = d }
+    END { printf "%-34s %2d images: %2d fail (old rule %2d); worst: over %5d px, region %5d px, 9x9 mean %6.2f, max delta %3d\n",
+          label, n, f, old, O, R, M, D }'
+}
+shader_mutant() { # label, sed expression on shaders/mesh.frag
+  d="$O/$1"
+  mkdir -p "$d/bin"
+  cp "$T" "$d/bin/tumble"
+  cp -r shaders "$d/"
+  sed -i "$2" "$d/shaders/mesh.frag"
+  if cmp -s shaders/mesh.frag "$d/shaders/mesh.frag"; then echo "$1: the mutation did not apply" >&2; exit 1; fi
+  check "$1" "$d/bin/tumble"
+}
+check "unchanged" "$T"
+shader_mutant "specular x0.8" 's/vec3(u_specular \* spec)/vec3(0.8 * u_specular * spec)/'
+shader_mutant "specular exponent 40 -> 60" 's/), 40\.0);/), 60.0);/'
+shader_mutant "specular x0.5" 's/vec3(u_specular \* spec)/vec3(0.5 * u_specular * spec)/'
+shader_mutant "specular exponent 40 -> 32" 's/), 40\.0);/), 32.0);/'
+# 5.8 mm is 1 px at dzhanibekov's camera (2.22 m away, fov_y 35 deg, 240 px high).
+mkdir -p "$O/moved"
+sed 's/^position = \[0.0, 0.0, 0.0\]/position = [0.0, 0.0, 0.0058]/' scenes/dzhanibekov.toml >"$O/moved/dzhanibekov.toml"
+if cmp -s scenes/dzhanibekov.toml "$O/moved/dzhanibekov.toml"; then echo "move: did not apply" >&2; exit 1; fi
+check "dzhanibekov body moved 1 px up" "$T" "$O/moved"
