@@ -281,7 +281,7 @@ int run_render(const RenderOptions& o) {
     if (!v.ok()) {
       man.complete = false;
       man.video_error = v.message;
-      atomic_write_file(dir / "manifest.json", man.json());
+      io::atomic_write_file(dir / "manifest.json", man.json());
       std::cerr << "tumble: " << v.message << "\n"
                 << "tumble: all " << count << " frames are in " << dir.string() << "; make the video with: tumble render "
                 << quote_arg(o.scene) << " -o " << quote_arg(dir.string()) << " --resume\n";

@@ -62,7 +62,7 @@ TEST_F(RenderCli, DivergedRenderKeepsFramesAndMarksManifestIncomplete) {
 }
 
 TEST_F(RenderCli, DampedBlowUpRenderExits3) {
-  if (!render_available()) GTEST_SKIP() << "no GL backend";
+  TUMBLE_NEED_GL();
   const Result r = run("render " + data("damped_blowup_euler.toml") + " -o '" + dir_.string() +
                        "/damped' --width 64 --height 48 --video none --progress none");
   EXPECT_EQ(r.code, 3) << r.err;

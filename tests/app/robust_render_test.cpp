@@ -56,7 +56,7 @@ TEST_F(RobustRender, KilledRenderResumesByteIdenticalToACleanRun) {
   wait_exit(pid, &sig);
   ASSERT_EQ(sig, SIGKILL);
   // What a kill -9 in the middle of a write leaves: a temp file. Resume removes it.
-  std::ofstream(out / "frame_000150.png.tmp.99999") << "partial";
+  std::ofstream(out / "frame_000150.png.tmp-99999") << "partial";
   std::ofstream(out / "manifest.json.tmp-99999") << "{";
   for (const std::string& n : names(out))
     if (n.rfind("frame_", 0) == 0 && n.find(".tmp") == std::string::npos) {

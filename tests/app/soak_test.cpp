@@ -23,21 +23,30 @@ TEST_F(Soak, KilledAtRandomAndResumedEndsByteIdenticalToACleanRun) {
   const std::string range = "0:" + std::to_string(frames - 1);
   const std::string scene = data("soak_render.toml");
   const fs::path out = dir_ / "soak", clean = dir_ / "clean";
+  // The clean run first: its wall time scales the kill times, so a fast
+  // machine still gets killed mid-run and a slow one still finishes.
+  const auto c0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(run("render '" + scene + "' -o '" + clean.string() + "' --progress none --frames " + range).code, 0);
+  const double clean_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0).count();
   std::mt19937 rng(static_cast<unsigned>(env_long("TUMBLE_SOAK_SEED", 13)));
-  // Kill between 0.05 s and 1.5 s after the start: in the simulation, mid-frame, mid-rename.
-  std::uniform_int_distribution<int> delay_ms(50, 1500);
+  // Kill between 5 % and 95 % of a clean run's time after the start: in the
+  // simulation, mid-frame, mid-rename. After kMaxKills the last run finishes.
+  std::uniform_real_distribution<double> delay_ms(0.05 * clean_ms, 0.95 * clean_ms);
+  const int kMaxKills = 25;
   int kills = 0, runs = 0;
   const auto t0 = std::chrono::steady_clock::now();
-  for (bool done = false; !done && runs < 400; ++runs) {
+  for (bool done = false; !done; ++runs) {
     std::vector<std::string> extra = {"--frames", range};
     if (runs > 0) extra.push_back("--resume");
     const pid_t pid = spawn_render(scene, out, extra);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(delay_ms(rng));
+    const bool kill_this = kills < kMaxKills;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::microseconds(
+                                                                  static_cast<long>(1000 * delay_ms(rng)));
     int st = 0;
     bool exited = false;
-    while (!exited && std::chrono::steady_clock::now() < deadline) {
+    while (!exited && (!kill_this || std::chrono::steady_clock::now() < deadline)) {
       exited = ::waitpid(pid, &st, WNOHANG) == pid;
-      if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     if (exited) {
       ASSERT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0) << slurp(dir_ / "spawn.err");
@@ -49,7 +58,6 @@ TEST_F(Soak, KilledAtRandomAndResumedEndsByteIdenticalToACleanRun) {
     }
   }
   const double soak_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  ASSERT_EQ(run("render '" + scene + "' -o '" + clean.string() + "' --progress none --frames " + range).code, 0);
   std::cout << "soak: " << frames << " frames, " << kills << " kill -9, " << runs << " runs, " << soak_s << " s\n";
   EXPECT_GT(kills, 0) << "the render finished before the first kill: nothing was tested";
   EXPECT_EQ(names(out), names(clean));  // no stray temp files, no missing frames

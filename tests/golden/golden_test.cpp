@@ -28,6 +28,7 @@ struct GoldenScene {
 const GoldenScene kScenes[] = {
     {"dzhanibekov", "0.5,4,12"},   {"methods_compare", "0.5,6,15"}, {"reference", "0.5,3,9"},
     {"stable_spin", "0.5,5,11"},   {"symmetric_top", "0.5,4,9"},    {"thrown_box", "0.2,0.9,1.6"},
+    {"dzhanibekov_explained", "0.5,1.9,4"}, {"poinsot", "0.5,3,7"},
 };
 
 bool updating() {
