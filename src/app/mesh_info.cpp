@@ -13,12 +13,6 @@ std::string vec(const Eigen::Vector3d& v) {
   return "[" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) + "]";
 }
 
-std::string mat(const Eigen::Matrix3d& m) {
-  std::string out = "[";
-  for (int r = 0; r < 3; ++r) out += (r ? ", " : "") + vec(m.row(r).transpose());
-  return out + "]";
-}
-
 std::string short_num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.4g", v);

@@ -17,7 +17,9 @@ TEST(BodyLook, SolidLatticeKeepsOnlyItsShell) {
   for (auto i : visible) kept[i] = true;
   for (std::size_t i = 0; i < box.size(); ++i) {
     const Eigen::Vector3d p = box[i].position.cwiseAbs();
-    if (p.x() > 0.48 || p.y() > 0.23 || p.z() > 0.18) EXPECT_TRUE(kept[i]) << i;
+    if (p.x() > 0.48 || p.y() > 0.23 || p.z() > 0.18) {
+      EXPECT_TRUE(kept[i]) << i;
+    }
   }
   // A sparse cloud hides nothing.
   EXPECT_EQ(visible_particles(make_box({1, 1, 1}, {3, 3, 3}, 1.0)).size(), 27u);
