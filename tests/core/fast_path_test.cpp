@@ -171,7 +171,8 @@ TEST(FastPath, SplittingMatchesReferenceToRoundOff) {
     // h|ω| up to ~17·h: at 0.7 and 3 half angles pass π/4 and take libm. Each
     // sub-flow's angle depends on Π from the previous one, so a 1-ulp difference
     // grows by ~(h|ω|) per sub-flow: at h = 3 (h|ω| ≈ 50) that is ~1e-11.
-    for (auto [h, tol] : {std::pair{1e-3, 2e-15}, {0.05, 2e-15}, {0.7, 1e-14}, {3.0, 1e-10}}) {
+    // At h = 0.7 gcc gives 1e-14 and clang (the sanitizer build) 1.8e-14.
+    for (auto [h, tol] : {std::pair{1e-3, 2e-15}, {0.05, 2e-15}, {0.7, 5e-14}, {3.0, 1e-10}}) {
       Eigen::Quaterniond q = c.s.q;
       free_rotation_splitting(c.m, c.s.L, q, h);
       const Eigen::Quaterniond ref = reference_splitting(c.m, c.s.L, c.s.q, h);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,7 +41,7 @@ Image frame_like(int w, int h) {
         if (d < r) {
           const double shade = 0.5 + 0.5 * (cx - x + cy - y) / (2 * r);
           p[0] = std::uint8_t(200 * shade);
-          p[1] = std::uint8_t(60 * shade + 20 * k);
+          p[1] = std::uint8_t(std::min(255.0, 60 * shade + 20 * k));  // in range: a wider value is UB
           p[2] = std::uint8_t(40 + 10 * k);
         }
       }
