@@ -96,7 +96,7 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       viz::MomentumSphereInput in;
       in.inertia = m.inertia;
       in.momentum = momentum_body(state(kk));
-      for (long j = 0; j <= kk; ++j) in.history.push_back(momentum_body(state(j)));
+      for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][slot.body]));
       in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
       in.title = vc.title;
       viz::build_momentum_sphere(v, in, fb_.font_px());
@@ -122,9 +122,9 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       in.q = state(kk).q;
       in.inertia = m.inertia;
       in.L = state(kk).L;
-      for (long j = 0; j <= kk; ++j) {
-        in.omega_principal_history.push_back(omega_principal(m, state(j)));
-        in.omega_world_history.push_back(omega_world(m, state(j)));
+      for (std::size_t j = 0; j < run.path_end(kk); ++j) {  // with sub-frame samples: smooth curves
+        in.omega_principal_history.push_back(omega_principal(m, run.path[j][slot.body]));
+        in.omega_world_history.push_back(omega_world(m, run.path[j][slot.body]));
       }
       in.title = vc.title;
       viz::build_poinsot(v, in, fb_.font_px());

@@ -41,11 +41,22 @@ std::pair<long, long> parse_frame_range(const std::string& spec, long count) {
   return {a, b};
 }
 
+int sub_samples(const std::vector<const RigidBodyModel*>& models, const std::vector<BodyState>& states, double h) {
+  double turn = 0;  // rad, the largest turn of any body over h
+  for (std::size_t b = 0; b < states.size() && b < models.size(); ++b)
+    turn = std::max(turn, omega_world(*models[b], states[b]).norm() * h);
+  if (!std::isfinite(turn)) return 1;
+  return static_cast<int>(std::clamp(std::ceil(turn / kMaxTurnPerSample), 1.0, static_cast<double>(kMaxSubSamples)));
+}
+
 std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
   std::vector<std::optional<Method>> methods;
   for (Method m : s.render.compare_methods) methods.push_back(m);
   if (methods.empty()) methods.push_back(s.simulation.method);
   const scene::FrameClock clock = scene::frame_clock(s, fps);
+  const bool curves = s.render.draw.trails > 0 || !s.render.explain.views.empty();
+  std::vector<const RigidBodyModel*> models;
+  for (const scene::Body& b : s.bodies) models.push_back(&b.model);
   std::vector<Run> runs;
   for (const auto& method : methods) {
     Run run;
@@ -75,8 +86,26 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
     try {
       for (long k = 0; k < frames; ++k) {
         const double t = clock.time(k);
+        if (curves && k > 0) {
+          // Sub-frame samples: dense output between grid points, never fed
+          // back, so the frames are the same with or without them.
+          const double t0 = clock.time(k - 1);
+          const int n = sub_samples(models, run.frames.back(), t - t0);
+          for (int j = 1; j < n; ++j) {
+            const double tj = t0 + (t - t0) * j / n;
+            std::vector<BodyState> sub;
+            for (auto& p : props) sub.push_back(p->advance_to(tj));
+            run.path.push_back(std::move(sub));
+            run.path_t.push_back(tj);
+          }
+        }
         std::vector<BodyState> states;
         for (auto& p : props) states.push_back(p->advance_to(t));
+        if (curves) {
+          run.path_of_frame.push_back(run.path.size());
+          run.path.push_back(states);
+          run.path_t.push_back(t);
+        }
         run.frames.push_back(std::move(states));
       }
     } catch (const Diverged& e) {
@@ -175,8 +204,8 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
   trails_.resize(runs.size());
   if (draw_.trail_seconds > 0)
     for (size_t r = 0; r < runs.size(); ++r)
-      for (size_t k = 0; k < runs[r].frames.size(); ++k)
-        trails_[r].record(clock_.time(static_cast<long>(k)), snapshots(s, runs[r].frames[k]));
+      for (size_t j = 0; j < runs[r].path.size(); ++j)
+        trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
   if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.duration > 0)
     explain_ = std::make_unique<ExplainViews>(*this, s, runs, width, height);
 }

@@ -45,8 +45,9 @@ inline constexpr double kAxisOvershoot = 1.3;
 /// largest half extent, so a flat body still shows all three axes).
 glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i);
 
-/// Per-body history of axis-tip positions, for trails. Fed every frame from
-/// t = 0, so a frame range renders the same trails as a full run.
+/// Per-body history of axis-tip positions, for trails. Fed every sample from
+/// t = 0 (frames and sub-frame samples), so a frame range renders the same
+/// trails as a full run.
 class TrailRecorder {
  public:
   void record(double t, const std::vector<BodySnapshot>& bodies);
