@@ -71,9 +71,16 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   const long kk = std::min(k, last);
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
   auto state = [&](long j) -> const BodyState& { return run.frames[static_cast<std::size_t>(j)][slot.body]; };
+  // A titled world view's text starts below the title, which the renderer
+  // draws top-left (size and pad: renderer.cpp's draw_text).
+  float title_px = 0;
+  if (!vc.title.empty()) {
+    const float size = std::clamp(static_cast<float>(slot.height_px) * 0.055f, 11.0f, 26.0f);
+    title_px = 0.6f * std::round(0.6f * size) + 1.25f * size;
+  }
   viz::View v;
   switch (vc.kind) {
-    case scene::ViewKind::world: v = fb_.world_view(0, k, slot.camera, slot.width_px, slot.height_px); break;
+    case scene::ViewKind::world: v = fb_.world_view(0, k, slot.camera, slot.width_px, slot.height_px, title_px); break;
     case scene::ViewKind::body_frame: {
       // The camera keeps its offset and up in the body's own axes: the body
       // stands still while L and the world turn around it.
@@ -88,7 +95,7 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
         cam.position = cam.target + to_glm(off_k);
         cam.up = to_glm(up_k);
       }
-      v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px);
+      v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, title_px);
       break;
     }
     case scene::ViewKind::momentum_sphere: {
@@ -133,14 +140,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   }
   if (vc.viewport) v.viewport = glm::dvec4((*vc.viewport)[0], (*vc.viewport)[1], (*vc.viewport)[2], (*vc.viewport)[3]);
   else v.viewport = glm::dvec4(0, 0, 1, 1);
-  if (!vc.title.empty() && (vc.kind == scene::ViewKind::world || vc.kind == scene::ViewKind::body_frame)) {
-    // The renderer draws the label in the top-left corner (its size: renderer.cpp's
-    // draw_text); the overlay line moves below it.
+  if (!vc.title.empty() && (vc.kind == scene::ViewKind::world || vc.kind == scene::ViewKind::body_frame))
     v.label = vc.title;
-    const float label_px = std::clamp(static_cast<float>(slot.height_px) * 0.055f, 11.0f, 26.0f);
-    for (viz::TextItem& t : v.texts)
-      if (t.position_px.y < label_px) t.position_px.y += 1.6f * label_px;
-  }
   return v;
 }
 

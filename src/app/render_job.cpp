@@ -211,7 +211,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
 }
 
 viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& camera, int width_px,
-                                   int height_px) const {
+                                   int height_px, float top_px) const {
   const double t = clock_.time(k);
   const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
   const Run& run = runs_[r];
@@ -234,7 +234,9 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
       for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
       v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
     }
+    const std::size_t labels_begin = v.texts.size();
     if (scene_.render.explain.labels) add_labels(v, snaps, width_px, height_px, font_px_);
+    const std::size_t labels_end = v.texts.size();
     if (scene_.render.draw.overlay) {
       // Largest relative energy error over the bodies: the failure users look
       // for. Only where energy is conserved (gravity is in it, as potential):
@@ -267,12 +269,17 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
       part(items.method && runs_.size() == 1, run.label);
       part(items.step, run.step_label);
       part(items.energy, energy);
-      v.texts.push_back({line, {12.0f, runs_.size() > 1 ? 30.0f : 12.0f}, font_px_, ink});
+      const float y = top_px + (runs_.size() > 1 ? 30.0f : 12.0f);
+      v.texts.push_back({line, {12.0f, y}, font_px_, ink});
+      // Name labels stay clear of the overlay line (a body near the top of a
+      // small view put its name on it).
+      for (std::size_t i = labels_begin; i < labels_end; ++i)
+        v.texts[i].position_px.y = std::max(v.texts[i].position_px.y, y + 1.5f * font_px_);
     }
   }
   if (run.diverged && k > last)
     v.texts.push_back({"diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s",
-                       {12.0f, 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
+                       {12.0f, top_px + 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
   return v;
 }
 

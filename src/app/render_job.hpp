@@ -60,8 +60,10 @@ class FrameBuilder {
   ~FrameBuilder();
   viz::DrawList build(long k) const;
 
-  /// Run `r`'s world view at frame k (bodies, grid, overlay, labels) seen by `camera`.
-  viz::View world_view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px) const;
+  /// Run `r`'s world view at frame k (bodies, grid, overlay, labels) seen by
+  /// `camera`; its text starts `top_px` below the viewport's top (room for a title).
+  viz::View world_view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
+                       float top_px = 0) const;
   const scene::FrameClock& clock() const { return clock_; }
   float font_px() const { return font_px_; }
 

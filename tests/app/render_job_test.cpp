@@ -8,6 +8,7 @@
 #include "app/render_job.hpp"
 #include "core/dynamics.hpp"
 #include "scene/scene.hpp"
+#include "viz/draw_list.hpp"
 
 namespace {
 
@@ -78,6 +79,33 @@ TEST(SmoothCurves, SubSamplesFollowTheTurnPerFrame) {
   EXPECT_EQ(tumble::app::sub_samples(models, {s}, 10.0), tumble::app::kMaxSubSamples);
   s.L.setZero();
   EXPECT_EQ(tumble::app::sub_samples(models, {s}, 1.0), 1);        // at rest: frames only
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 11: text in small views does not overlap. The poinsot scene at the
+// golden size (320 × 240) has four 160 × 120 views with titles, an overlay
+// line and body name labels.
+TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
+  const tumble::scene::Scene s = tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/poinsot.toml");
+  const double fps = s.render.output.fps;
+  const long k = 420;
+  const auto runs = simulate_runs(s, k + 1, fps);
+  const tumble::app::FrameBuilder fb(s, runs, fps, 320, 240);
+  const tumble::viz::DrawList dl = fb.build(k);
+  int overlays = 0;
+  for (const tumble::viz::View& v : dl.views)
+    for (const tumble::viz::TextItem& o : v.texts) {
+      if (o.text.rfind("t =", 0) != 0) continue;
+      ++overlays;
+      // The title: renderer.cpp's draw_text puts it at the top-left, 11 px high here.
+      if (!v.label.empty()) EXPECT_GE(o.position_px.y, 0.6f * 7 + 1.25f * 11) << v.label;
+      for (const tumble::viz::TextItem& t : v.texts)
+        if (&t != &o) EXPECT_GE(std::abs(t.position_px.y - o.position_px.y), 1.25f * o.size_px) << "'" << t.text << "' on '" << o.text << "'";
+    }
+  EXPECT_EQ(overlays, 2);  // the two world views (the poinsot views have none)
 }
 
 }  // namespace
