@@ -1,9 +1,12 @@
 #include "app/render_bench.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "app/render_job.hpp"
+#include "app/video.hpp"
+#include "app/video_stream.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
 #include "render/frame_encoder.hpp"
@@ -26,6 +29,9 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   const double fps = s.render.output.fps;
   frames = std::min(frames, scene::frame_clock(s, fps).count());
   std::filesystem::create_directories(out_dir);
+  // An earlier, longer bench's frames would be read into this one's video.
+  for (const auto& f : std::filesystem::directory_iterator(out_dir))
+    if (io::is_frame_file(f.path().filename().string())) std::filesystem::remove(f.path());
   auto ctx = render::create_gl_context(render::default_gl_backend());
   render::Renderer renderer(*ctx, 1280, 720, 4);
 
@@ -65,17 +71,41 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
     encoder.flush();
   }
   const double total = seconds_since(t0);
+
+  // The video, both ways, from the same frames: PNG files read back by ffmpeg
+  // (the end-to-end run above, then the encode), and raw frames piped to it.
+  if (ffmpeg_available()) {
+    const auto tv = Clock::now();
+    const VideoResult v = encode_video(out_dir, static_cast<int>(std::lround(fps)), VideoFormat::mp4, 18,
+                                       out_dir / "png_path.mp4");
+    if (v.ok()) r.png_video_fps = frames / (total + seconds_since(tv));
+    const auto ts = Clock::now();
+    {
+      const std::vector<Run> runs3 = simulate_runs(s, frames, fps);
+      const FrameBuilder builder3(s, runs3, fps, 1280, 720);
+      VideoStream stream(1280, 720, static_cast<int>(std::lround(fps)), VideoFormat::mp4, 18, out_dir / "stream_path.mp4");
+      io::Image img;
+      for (long k = 0; k < frames && stream.running(); ++k) {
+        renderer.render(builder3.build(k), img);
+        stream.write(img, {});
+      }
+      if (stream.finish().ok()) r.stream_video_fps = frames / seconds_since(ts);
+    }
+  }
   r.end_to_end_fps = frames / total;
   r.encode_only_fps = frames / encode;
   r.render_ms = 1000 * render_s / frames;
 
-  char buf[512];
+  char buf[1024];
   std::snprintf(buf, sizeof buf,
                 "# tumble bench --render\n\nScene `%s`, %ld frames, 1280x720, 4x MSAA, %s (%s).\n\n"
                 "| measure | value |\n|---|---|\n| end to end | %.1f frames/s |\n| encode-only limit (2 threads) | "
-                "%.1f frames/s |\n| end-to-end / encode-only | %.2f |\n| build + draw + read back, mean | %.1f ms/frame |\n",
+                "%.1f frames/s |\n| end-to-end / encode-only | %.2f |\n| build + draw + read back, mean | %.1f ms/frame |\n"
+                "| H.264 video via PNG files (render, then ffmpeg reads them) | %.1f frames/s |\n"
+                "| H.264 video, raw frames piped to ffmpeg (--frames-out none) | %.1f frames/s |\n",
                 scene_path.string().c_str(), frames, ctx->renderer().c_str(), ctx->version().c_str(),
-                r.end_to_end_fps, r.encode_only_fps, r.end_to_end_fps / r.encode_only_fps, r.render_ms);
+                r.end_to_end_fps, r.encode_only_fps, r.end_to_end_fps / r.encode_only_fps, r.render_ms, r.png_video_fps,
+                r.stream_video_fps);
   io::atomic_write_file(out_dir / "render.md", buf);
   log << buf;
   return r;
