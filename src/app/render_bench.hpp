@@ -15,6 +15,8 @@ struct RenderBenchResult {
   /// Frames to an H.264 video, frames/s (0 without ffmpeg): through PNG files
   /// (end to end, then ffmpeg reads them), and piped raw (--frames-out none).
   double png_video_fps = 0, stream_video_fps = 0;
+  /// The same two paths in CPU time (tumble + ffmpeg, user + system), ms per frame.
+  double png_video_cpu_ms = 0, stream_video_cpu_ms = 0;
 };
 
 /// Renders the first `frames` frames of `scene_path` at 1280×720 with 4× MSAA
