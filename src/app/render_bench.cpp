@@ -102,7 +102,7 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
       const FrameBuilder builder3(s, runs3, fps, 1280, 720);
       VideoStream stream(1280, 720, static_cast<int>(std::lround(fps)), VideoFormat::mp4, 18, out_dir / "stream_path.mp4");
       io::Image img;
-      for (long k = 0; k < frames && stream.running(); ++k) {
+      for (long k = 0; k < frames && stream.running() && !stream.broken(); ++k) {
         renderer.render(builder3.build(k), img);
         stream.write(img, {});
       }

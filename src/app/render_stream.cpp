@@ -31,7 +31,7 @@ int stream_render(const StreamJob& j) {
   for (; k < count && k < j.good; ++k) {
     if ((signal = j.stop()) != 0) break;
     j.renderer.render(j.builder.build(k), img);
-    if ((signal = stream.write(img, j.stop)) != 0) break;
+    if ((signal = stream.write(img, j.stop)) != 0 || stream.broken()) break;
     progress.update(k + 1);
   }
   progress.finish();

@@ -35,6 +35,8 @@ class VideoStream {
   VideoResult abort(int signal);
 
   bool running() const { return pid_ > 0; }
+  /// ffmpeg stopped reading (it exited): no use drawing more frames.
+  bool broken() const { return broken_; }
   const VideoResult& status() const { return status_; }
 
  private:
