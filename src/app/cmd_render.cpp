@@ -250,8 +250,9 @@ int run_render(const RenderOptions& o) {
   }
   // Every new frame exists: the earlier render's other frames can go (before
   // the encode, which would read a stale frame past the last as one of ours).
+  // A shard makes no video, so the earlier render's (same name or not) goes too.
   remove_stale(dir, existing, man.settings_hash, own, first, last,
-               out.video == scene::VideoFormat::none ? std::string() : video_file_name(s, out.video));
+               shard || out.video == scene::VideoFormat::none ? std::string() : video_file_name(s, out.video));
   man.replacing = false;
   const bool full = !shard;  // a shard's video is made by `tumble assemble`
   if (full && out.video != scene::VideoFormat::none) {

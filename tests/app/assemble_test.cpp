@@ -82,6 +82,26 @@ TEST_F(Assemble, AMissingShardFailsNamingTheGap) {
   EXPECT_NE(slurp(out / "manifest.json").find("\"complete\": true"), std::string::npos);
 }
 
+TEST_F(Assemble, ShardsReplacingAnEditedRenderLeaveNothingOfIt) {
+  TUMBLE_NEED_GL();
+  const fs::path out = dir_ / "replace", narrow = dir_ / "narrow";
+  ASSERT_EQ(run("render '" + data("tiny_render.toml") + "' -o '" + out.string() + "' --video mp4 --progress none").code, 0);
+  // Other settings: the 96 px render's manifest and video go at once, its frames as the shards write theirs.
+  const std::string cmd = "parallel --will-cite -j4 \"'" + tumble_bin() + "' render '" + data("tiny_render.toml") +
+                          "' -o '" + out.string() + "' --video mp4 --width 48 --progress none --frames {}\" ::: 0:1 "
+                          "2:3 4:5 6:6 >'" + (dir_ / "parallel.out").string() + "' 2>&1";
+  const int st = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0) << slurp(dir_ / "parallel.out");
+  EXPECT_FALSE(fs::exists(out / "manifest.json"));
+  EXPECT_FALSE(fs::exists(out / "tiny_render.mp4")) << "the 96 px video is still there";
+  ASSERT_EQ(run("assemble '" + out.string() + "' --progress none").code, 0);
+  ASSERT_EQ(run("render '" + data("tiny_render.toml") + "' -o '" + narrow.string() +
+                "' --video mp4 --width 48 --progress none").code, 0);
+  EXPECT_EQ(names(out), names(narrow));
+  expect_same_frames(out, narrow, 7);
+  EXPECT_TRUE(slurp(out / "tiny_render.mp4") == slurp(narrow / "tiny_render.mp4"));
+}
+
 TEST_F(Assemble, AnIncompleteOrForeignPartIsNamed) {
   TUMBLE_NEED_GL();
   const fs::path out = dir_ / "bad";
