@@ -117,6 +117,22 @@ TEST_F(Assemble, AnIncompleteOrForeignPartIsNamed) {
   EXPECT_NE(r.err.find("--frames 4:6 --resume"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frames 4:6 of 0:6 are missing"), std::string::npos) << r.err;
 
+  // Complete, but of other settings (as if rendered at another size): named with both hashes.
+  const std::string hash = "\"settings_hash\": \"";
+  const size_t at = text.find(hash);
+  ASSERT_NE(at, std::string::npos) << text;
+  std::string other = text;
+  other.replace(at + hash.size(), 16, "0123456789abcdef");
+  other.replace(other.find("\"complete\": false"), 17, "\"complete\": true");
+  std::ofstream(part) << other;
+  r = run("assemble '" + out.string() + "' --progress none");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("manifest.part-000004-000006.json (scene hash"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("settings hash 0123456789abcdef"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("is not a shard of the same render as manifest.part-000000-000003.json"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(out / "manifest.json"));
+
   std::ofstream(part) << "{\"tool\": \"tumble\"}";
   r = run("assemble '" + out.string() + "' --progress none");
   EXPECT_EQ(r.code, 2) << r.err;
