@@ -21,6 +21,7 @@ TEST_PACKAGES=(
   assimp-testmodels                              # tests: real and malformed meshes
   openscad                                       # scenes/: regenerates the shipped STL from .scad
   gnuplot-nox                                    # `tumble bench` charts (run as a program)
+  parallel                                       # tests: shards rendered by GNU Parallel, then assembled
   libbullet-dev libode-dev                       # optional peers for `tumble bench`
   clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)
 )

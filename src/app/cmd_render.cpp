@@ -17,7 +17,10 @@
 #include "app/frame_renderer.hpp"
 #include "app/progress.hpp"
 #include "app/render_output.hpp"
+#include "app/manifest_parts.hpp"
 #include "app/render_job.hpp"
+#include "app/render_stream.hpp"
+#include "app/stop_signals.hpp"
 #include "app/video.hpp"
 #include "render/frame_encoder.hpp"
 #include "render/gl_context.hpp"
@@ -31,7 +34,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderOptions {
-  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl;
+  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png";
   std::optional<int> width, height, msaa;
   std::optional<double> fps;
   bool resume = false, force = false;
@@ -72,49 +75,21 @@ RenderPlan plan_render(const RenderOptions& o) {
   const Quality q = parse_quality(o.quality);
   if (o.progress != "auto" && o.progress != "none")
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
+  if (o.frames_out != "png" && o.frames_out != "none")
+    throw InputError("--frames-out: expected png or none, found '" + o.frames_out + "'");
   const render::GlBackend backend = parse_backend_option(o.gl);
   scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
   scene::OutputConfig& out = s.render.output;
+  if (o.frames_out == "none" && out.video == scene::VideoFormat::none)
+    throw InputError("--frames-out none writes only the video, and the video is none: nothing to write; "
+                     "choose --video mp4 or gif");
+  if (o.frames_out == "none" && !o.frames.empty())
+    throw InputError("--frames-out none streams the whole video; --frames needs PNG frames (--frames-out png)");
   if (o.quality != "high" || !o.msaa) out.msaa = std::min(out.msaa, q.msaa);
   if (o.msaa) out.msaa = *o.msaa;
   const long count = scene::frame_clock(s, out.fps).count();
   return {std::move(s), q, backend, count};
 }
-
-// ---- Interruption -----------------------------------------------------------
-// The one piece of global mutable state in the program, and the accepted
-// exception: a signal handler may only store to a volatile sig_atomic_t. It
-// holds the number of the first SIGINT/SIGTERM received (0 = none); the render
-// loop polls it between frames.
-volatile std::sig_atomic_t g_stop_signal = 0;
-
-extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
-
-/// While alive, SIGINT and SIGTERM ask the render loop to stop after the frames
-/// in flight. One-shot (SA_RESETHAND): a second Ctrl-C kills at once, which is
-/// still safe because every file is written by temp file + rename.
-class StopSignals {
- public:
-  StopSignals() {
-    g_stop_signal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND;
-    ::sigaction(SIGINT, &sa, &old_int_);
-    ::sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~StopSignals() {
-    ::sigaction(SIGINT, &old_int_, nullptr);
-    ::sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-  int received() const { return g_stop_signal; }
-
- private:
-  struct sigaction old_int_ {}, old_term_ {};
-};
 
 std::string quote_arg(const std::string& a) {
   if (a.find_first_of(" '\"\\$`") == std::string::npos) return a;
@@ -157,7 +132,12 @@ int run_render(const RenderOptions& o) {
     for (const auto& l : labels) key += l + ",";
     man.settings_hash = settings_hash(s, key);
   }
-  const Existing existing = inspect_output(dir, man, o.force);
+  // A shard (a range short of the whole render) records itself in its own
+  // part, so shards running at once never overwrite each other's manifest.
+  const bool shard = asked.first != 0 || asked.second != count - 1;
+  const std::string own = shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
+  const fs::path man_path = dir / own;
+  const Existing existing = inspect_output(dir, man, own, o.force);
   std::pair<long, long> range = asked;
   if (o.frames.empty() && o.resume && existing.resumable && existing.first >= 0 && existing.last < count &&
       existing.first <= existing.last)
@@ -169,7 +149,12 @@ int run_render(const RenderOptions& o) {
     std::cerr << "tumble: replacing the earlier render of " << s.name << " in " << dir.string()
               << " (scene or settings changed): frames are overwritten one by one, the rest removed at the end\n";
   // A process killed mid-write leaves its temp files; they are never valid output.
-  for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
+  // A shard removes only its own: the others' in-flight temp files look the same.
+  for (const fs::path& t : list_dir(dir, is_stale_temp)) {
+    const std::string target(io::temp_target_name(t.filename().string()));
+    const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
+    if (!shard || target == own || (k >= first && k <= last)) remove_file(t);
+  }
 
   const std::vector<Run> runs = simulate_runs(s, count, fps);
   for (const Run& r : runs)
@@ -195,10 +180,19 @@ int run_render(const RenderOptions& o) {
   man.gl_version = ctx->version();
   man.gl_renderer = ctx->renderer();
   man.backend = std::string(render::to_string(backend));
+  man.frames_out = o.frames_out;
+  man.video_format = out.video == scene::VideoFormat::none ? "none" : out.video == scene::VideoFormat::mp4 ? "mp4" : "gif";
+  man.crf = plan.quality.crf;
 
   // From here on, files change: Ctrl-C / SIGTERM stop between frames instead
   // of killing the process, so the manifest tells what is on disk.
   const StopSignals stop;
+  if (o.frames_out == "none") {
+    io::atomic_write_file(man_path, man.json());
+    std::string rerun = "tumble render " + quote_arg(o.scene) + " -o " + quote_arg(dir.string()) + " --frames-out none";
+    return stream_render({dir, s, builder, renderer, man, existing, good, o.progress != "none",
+                          [&] { return stop.received(); }, rerun, runs[0].diverged.value_or("stopped early")});
+  }
   long drawn = 0;  // frames this run submitted (whole on disk once the encoder is flushed)
   auto on_disk = [&] {
     if (man.replacing) return drawn;  // the earlier render's frames are not ours
@@ -207,7 +201,7 @@ int run_render(const RenderOptions& o) {
     return n;
   };
   if (resume) man.written = on_disk();
-  io::atomic_write_file(dir / "manifest.json", man.json());
+  io::atomic_write_file(man_path, man.json());
 
   Progress progress(last - first + 1, o.progress != "none");
   long skipped = 0;
@@ -231,7 +225,7 @@ int run_render(const RenderOptions& o) {
   } catch (const std::runtime_error& e) {  // a frame could not be written: disk full, permissions
     man.written = on_disk();
     try {
-      io::atomic_write_file(dir / "manifest.json", man.json());
+      io::atomic_write_file(man_path, man.json());
     } catch (const std::exception&) {  // the disk that failed the frame may fail this too
     }
     throw io::IoError(e.what());
@@ -242,12 +236,12 @@ int run_render(const RenderOptions& o) {
   man.complete = man.written == last - first + 1;
   if (!man.complete || signal != 0) {
     man.complete = false;
-    io::atomic_write_file(dir / "manifest.json", man.json());
+    io::atomic_write_file(man_path, man.json());
     if (signal != 0) {
       std::cerr << "tumble: interrupted (" << (signal == SIGINT ? "SIGINT" : "SIGTERM") << "): kept " << man.written
                 << " of " << last - first + 1 << " frames in " << dir.string() << "\n"
                 << "tumble: continue with: tumble render " << quote_arg(o.scene) << " -o " << quote_arg(dir.string())
-                << " --resume\n";
+                << (shard ? " --frames " + o.frames : std::string()) << " --resume\n";
       return 128 + signal;
     }
     std::cerr << "tumble: " << runs[0].diverged.value_or("stopped early") << "\n"
@@ -256,10 +250,11 @@ int run_render(const RenderOptions& o) {
   }
   // Every new frame exists: the earlier render's other frames can go (before
   // the encode, which would read a stale frame past the last as one of ours).
-  remove_stale(dir, existing, first, last,
-               out.video == scene::VideoFormat::none ? std::string() : video_file_name(s, out.video));
+  // A shard makes no video, so the earlier render's (same name or not) goes too.
+  remove_stale(dir, existing, man.settings_hash, own, first, last,
+               shard || out.video == scene::VideoFormat::none ? std::string() : video_file_name(s, out.video));
   man.replacing = false;
-  const bool full = first == 0 && last == count - 1;
+  const bool full = !shard;  // a shard's video is made by `tumble assemble`
   if (full && out.video != scene::VideoFormat::none) {
     // The video is part of a complete render: until it exists the manifest says
     // "complete": false, and --resume (every frame already on disk) makes it.
@@ -273,7 +268,7 @@ int run_render(const RenderOptions& o) {
     if (!v.ok()) {
       man.complete = false;
       man.video_error = v.message;
-      io::atomic_write_file(dir / "manifest.json", man.json());
+      io::atomic_write_file(man_path, man.json());
       std::cerr << "tumble: " << v.message << "\n"
                 << "tumble: all " << count << " frames are in " << dir.string() << "; make the video with: tumble render "
                 << quote_arg(o.scene) << " -o " << quote_arg(dir.string()) << " --resume\n";
@@ -281,7 +276,7 @@ int run_render(const RenderOptions& o) {
     }
     man.video = video.filename().string();
   }
-  io::atomic_write_file(dir / "manifest.json", man.json());
+  io::atomic_write_file(man_path, man.json());
   std::cout << "rendered frames " << first << ".." << last << " of " << count << " into " << dir.string()
             << (skipped ? " (" + std::to_string(skipped) + " already on disk)" : std::string())
             << (man.video.empty() ? "" : " (video " + man.video + ")") << "\n";
@@ -300,6 +295,9 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--fps", o->fps, "Frames per second (frame k shows t = k·time_scale/fps)");
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
+  cmd->add_option("--frames-out", o->frames_out,
+                  "png (default: frame files, then the video from them) or none (frames piped to ffmpeg as raw "
+                  "RGB, only the video is written; an interrupted run keeps nothing)");
   cmd->add_option("--quality", o->quality, "low (no MSAA, CRF 28), medium (2x, CRF 23), high (4x, CRF 18)");
   cmd->add_option("--msaa", o->msaa, "MSAA samples 0, 2 or 4 (overrides --quality)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");

@@ -20,6 +20,7 @@ using Action = std::function<int()>;
 void add_simulate_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
+void add_assemble_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_golden_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   tumble::app::add_info_command(app, action);
 #ifdef TUMBLE_HAVE_RENDER
   tumble::app::add_render_command(app, action);
+  tumble::app::add_assemble_command(app, action);
   tumble::app::add_compare_command(app, action);
   tumble::app::add_golden_command(app, action);
 #endif

@@ -12,6 +12,11 @@ struct RenderBenchResult {
   double end_to_end_fps = 0;  ///< simulate + draw + read back + encode + write, frames/s
   double encode_only_fps = 0; ///< encode + write of the same frames, frames/s
   double render_ms = 0;       ///< mean draw + read-back time per frame, ms
+  /// Frames to an H.264 video, frames/s (0 without ffmpeg): through PNG files
+  /// (end to end, then ffmpeg reads them), and piped raw (--frames-out none).
+  double png_video_fps = 0, stream_video_fps = 0;
+  /// The same two paths in CPU time (tumble + ffmpeg, user + system), ms per frame.
+  double png_video_cpu_ms = 0, stream_video_cpu_ms = 0;
 };
 
 /// Renders the first `frames` frames of `scene_path` at 1280×720 with 4× MSAA

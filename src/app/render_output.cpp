@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/manifest_parts.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
@@ -22,7 +23,8 @@ std::string Manifest::json() const {
       {"fps", fps}, {"width", width}, {"height", height}, {"msaa", msaa}, {"frame_count", frame_count},
       {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
       {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", or_null(video)},
-      {"video_error", or_null(video_error)}, {"replacing", replacing}, {"complete", complete}});
+      {"video_error", or_null(video_error)}, {"video_format", video_format}, {"crf", crf},
+      {"frames_out", frames_out}, {"replacing", replacing}, {"complete", complete}});
 }
 
 namespace {
@@ -38,8 +40,8 @@ bool is_stale_temp(const std::string& name) {
   const auto ends_with = [&](std::string_view ext) {
     return target.size() > ext.size() && target.substr(target.size() - ext.size()) == ext;
   };
-  return io::is_frame_file(std::string(target)) || target == "manifest.json" || ends_with(".mp4") ||
-         ends_with(".gif");
+  return io::is_frame_file(std::string(target)) || target == "manifest.json" ||
+         is_part_manifest(std::string(target)) || ends_with(".mp4") || ends_with(".gif");
 }
 
 std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::string&)) {
@@ -88,42 +90,53 @@ bool same_scene_file(const std::optional<std::string>& path, const std::optional
 
 }  // namespace
 
-Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
+Existing inspect_output(const fs::path& dir, const Manifest& want, const std::string& own, bool force) {
   Existing ex;
-  const fs::path mpath = dir / "manifest.json";
   std::error_code ec;
-  const bool has_manifest = fs::exists(mpath, ec);
+  // manifest.json first, then the shards' parts: any of them may say whose folder this is.
+  // Frames are listed first: a shard writes its part before its first frame,
+  // so a frame seen here has its part seen below.
   const std::vector<fs::path> frames = list_dir(dir, io::is_frame_file);
+  std::vector<fs::path> manifests = list_dir(dir, [](const std::string& n) { return is_part_manifest(n); });
+  if (fs::exists(dir / "manifest.json", ec)) manifests.insert(manifests.begin(), dir / "manifest.json");
   std::string problem;
-  std::optional<std::string> old_video;
-  if (has_manifest) {
+  std::vector<std::string> videos;
+  for (const fs::path& mpath : manifests) {
+    const std::string name = mpath.filename().string();
     const std::optional<io::Json> m = io::read_json_file(mpath);
     const std::optional<std::string> hash = m ? string_field(*m, "scene_hash") : std::nullopt;
-    if (m) old_video = string_field(*m, "video");
+    const std::optional<std::string> old_video = m ? string_field(*m, "video") : std::nullopt;
+    if (old_video) videos.push_back(*old_video);
     const bool same_file = m && same_scene_file(string_field(*m, "scene"), string_field(*m, "scene_name"), want);
     const bool was_replacing = m && m->contains("replacing") && (*m)["replacing"] == true;
     if (!m || string_field(*m, "tool") != std::optional<std::string>("tumble") || !hash) {
-      problem = "holds a manifest.json that tumble did not write";
-    } else if (*hash != want.scene_hash && !same_file) {
+      problem = "holds a " + name + " that tumble did not write";
+      break;
+    }
+    if (*hash != want.scene_hash && !same_file) {
       problem = "holds a render of another scene (" + string_field(*m, "scene").value_or("?") + ", hash " + *hash +
                 "; this scene's hash is " + want.scene_hash + ")";
-    } else if (*hash != want.scene_hash || string_field(*m, "settings_hash") != want.settings_hash || was_replacing) {
+      break;
+    }
+    if (*hash != want.scene_hash || string_field(*m, "settings_hash") != want.settings_hash || was_replacing) {
       // The edit loop: the same scene file, changed (or other settings, or a
       // replacement that was interrupted). Its frames are replaced, not trusted.
       ex.replacing = true;
-      if (old_video) ex.old_video = *old_video;
-      return ex;
-    } else {
+      if (old_video && name == "manifest.json") ex.old_video = *old_video;
+    } else if (name == own) {
       ex.resumable = true;
       const auto r = m->find("frames");  // [A, B]
       if (r != m->end() && r->is_array() && r->size() == 2 && (*r)[0].is_number_integer() &&
           (*r)[1].is_number_integer())
         ex.first = (*r)[0].get<long>(), ex.last = (*r)[1].get<long>();
     }
-  } else if (!frames.empty()) {
-    problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";
   }
-  if (problem.empty()) return ex;
+  if (manifests.empty() && !frames.empty())
+    problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";
+  if (problem.empty()) {
+    if (ex.replacing) ex.resumable = false, ex.first = 0, ex.last = -1;
+    return ex;
+  }
   if (!force)
     throw InputError("tumble: output folder " + dir.string() + " " + problem +
                      ".\ntumble: choose another folder with -o, or add --force to replace that render");
@@ -132,29 +145,47 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, bool force) {
   std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
             << " frames)\n";
   for (const fs::path& f : frames) remove_file(f);
-  if (old_video && !old_video->empty() && *old_video != "null" && fs::path(*old_video).filename() == *old_video &&
-      *old_video != "manifest.json")
-    remove_file(dir / *old_video);
-  if (has_manifest) remove_file(mpath);
+  for (const std::string& v : videos)
+    if (fs::path(v).filename() == v && is_video_name(v)) remove_file(dir / v);
+  for (const fs::path& m : manifests) remove_file(m);
   return {};
 }
 
-void remove_stale(const fs::path& dir, const Existing& ex, long first, long last, const std::string& keep_video) {
+void remove_stale(const fs::path& dir, const Existing& ex, const std::string& settings_hash, const std::string& own,
+                  long first, long last, const std::string& keep_video) {
   if (!ex.replacing) return;
+  // Frames of shards with our settings stay (they may be rendering now: each
+  // writes its part before its first frame); parts of other settings go.
+  std::vector<std::pair<long, long>> keep = {{first, last}};
+  for (const Part& p : read_parts(dir)) {
+    if (p.ok && p.settings_hash == settings_hash) keep.emplace_back(p.first, p.last);
+    else if (p.file != own) remove_file(dir / p.file);
+  }
   for (const fs::path& f : list_dir(dir, io::is_frame_file)) {
     const long k = std::atol(f.filename().string().c_str() + 6);
-    if (k < first || k > last) remove_file(f);
+    if (std::none_of(keep.begin(), keep.end(), [k](const auto& r) { return k >= r.first && k <= r.second; }))
+      remove_file(f);
   }
   if (!ex.old_video.empty() && ex.old_video != keep_video && fs::path(ex.old_video).filename() == ex.old_video &&
       ex.old_video != "manifest.json" && is_video_name(ex.old_video))
     remove_file(dir / ex.old_video);
+  // A shard leaves manifest.json to `assemble`; an earlier render's is no longer true.
+  if (own != "manifest.json") {
+    std::error_code ec;
+    if (fs::exists(dir / "manifest.json", ec)) {
+      const Part m = read_part(dir / "manifest.json");
+      if (!m.ok || m.settings_hash != settings_hash) remove_file(dir / "manifest.json");
+    }
+  }
 }
 
-std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) {
+std::string video_file_name(const std::string& scene_name, scene::VideoFormat f) {
   // The loader restricts names to [A-Za-z0-9_.-]; still, never leave the folder.
-  std::string base = s.name;
+  std::string base = scene_name;
   if (base.empty() || fs::path(base).filename() != base || base == "." || base == "..") base = "video";
   return base + (f == scene::VideoFormat::mp4 ? ".mp4" : ".gif");
 }
+
+std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) { return video_file_name(s.name, f); }
 
 }  // namespace tumble::app

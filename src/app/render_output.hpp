@@ -16,6 +16,9 @@ struct Manifest {
   std::string scene_path, scene_name, scene_hash, settings_hash, method, step, gl_version, gl_renderer, backend;
   std::string video;        ///< file name in the folder; empty = none made ("video": null)
   std::string video_error;  ///< why a wanted video is missing (ffmpeg missing, failed, interrupted)
+  std::string frames_out = "png";  ///< "png", or "none": frames streamed into the video only
+  std::string video_format = "none";  ///< "mp4", "gif" or "none": what a complete render includes
+  int crf = 18;             ///< the video's H.264 CRF (from --quality)
   double dt = 0, fps = 0;  // dt: the scene's; `step` says what each run really used
   int width = 0, height = 0, msaa = 0;
   long frame_count = 0, first = 0, last = -1, written = 0;
@@ -47,14 +50,19 @@ struct Existing {
   bool replacing = false;
   std::string old_video;        ///< its video file name, if any
 };
+/// Reads manifest.json and every manifest part in `dir`; `own` is the one this
+/// run writes (manifest.json, or its part), the only one --resume continues.
 /// Refuses (InputError) to write over another scene's render unless `force`;
-/// with `force`, removes that render's frames, video and manifest first.
-Existing inspect_output(const std::filesystem::path& dir, const Manifest& want, bool force);
+/// with `force`, removes that render's frames, videos and manifests first.
+Existing inspect_output(const std::filesystem::path& dir, const Manifest& want, const std::string& own, bool force);
 /// After a replacing render wrote frames first..last: removes the earlier
-/// render's other frames and its video (unless it is `keep_video`).
-void remove_stale(const std::filesystem::path& dir, const Existing& ex, long first, long last,
-                  const std::string& keep_video);
+/// render's other frames (not those of parts with `settings_hash`: shards
+/// running beside us), its parts, its video (unless it is `keep_video`) and,
+/// when `own` is a part, its manifest.json.
+void remove_stale(const std::filesystem::path& dir, const Existing& ex, const std::string& settings_hash,
+                  const std::string& own, long first, long last, const std::string& keep_video);
 /// "<scene name>.mp4" / ".gif", never a path out of the folder.
+std::string video_file_name(const std::string& scene_name, scene::VideoFormat f);
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f);
 
 }  // namespace tumble::app

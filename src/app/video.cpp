@@ -91,24 +91,27 @@ ChildEnd run(const std::vector<std::string>& args, const StopPoll& stop, const E
 
 }  // namespace
 
+std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp) {
+  if (format == VideoFormat::mp4)
+    // yuv420p needs even sizes; +faststart puts the index first for streaming.
+    return {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf",
+            std::to_string(crf), "-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", "-f",
+            "mp4", tmp.string()};
+  return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-fflags",
+          "+bitexact", "-f", "gif", tmp.string()};
+}
+
+
 VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoFormat format, int crf,
                          const std::filesystem::path& output, const StopPoll& stop, const EncodeProgress& progress) {
   if (format == VideoFormat::none) return {VideoResult::not_wanted, 0, {}};
   if (!ffmpeg_available())
-    return {VideoResult::missing_ffmpeg, 0, "ffmpeg not found on PATH (Debian package: ffmpeg); frames were written, no video"};
-  // The temp name has no video extension, so the container is named (-f).
+    return {VideoResult::missing_ffmpeg, 0, std::string(kMissingFfmpeg) + "; frames were written, no video"};
   const std::filesystem::path tmp = io::temp_path_for(output);
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-nostats", "-progress",
                                    "pipe:1", "-framerate", std::to_string(fps), "-i",
                                    (frame_dir / io::kFramePattern).string()};
-  if (format == VideoFormat::mp4) {
-    // yuv420p needs even sizes; +faststart puts the index first for streaming.
-    args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-                             "-crf", std::to_string(crf), "-movflags", "+faststart", "-f", "mp4", tmp.string()});
-  } else {
-    args.insert(args.end(), {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer",
-                             "-f", "gif", tmp.string()});
-  }
+  for (std::string& a : ffmpeg_output_args(format, crf, tmp)) args.push_back(std::move(a));
   int stopped_by = 0;
   const ChildEnd end = run(args, stop, progress, stopped_by);
   if (stopped_by == 0 && stop) stopped_by = stop();

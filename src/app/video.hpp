@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -14,6 +15,14 @@ using scene::VideoFormat;
 
 /// True when an `ffmpeg` executable is on PATH.
 bool ffmpeg_available();
+
+inline constexpr const char* kMissingFfmpeg = "ffmpeg not found on PATH (Debian package: ffmpeg)";
+
+/// ffmpeg's output options for `format` into `tmp`: H.264 yuv420p at CRF
+/// `crf`, +faststart, padded to even sizes; GIF by palettegen/paletteuse. The
+/// temp name has no video extension, so the container is named (-f).
+/// Bit-exact (no encoder version in the file): the same frames give the same bytes.
+std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp);
 
 /// How an encode ended. `signal` is SIGINT/SIGTERM when it was interrupted
 /// (tumble asked to stop, or ffmpeg itself got the terminal's Ctrl-C).

@@ -4,6 +4,9 @@
 // A fake ffmpeg on PATH makes each case happen on cue.
 #include <sys/stat.h>
 
+#include <cstdio>
+#include <sstream>
+
 #include "render_fixture.hpp"
 
 namespace {
@@ -104,3 +107,102 @@ TEST_F(VideoRender, EncodeShowsProgress) {
 }
 
 }  // namespace
+
+// ---- --frames-out none: raw frames piped to ffmpeg, no PNG (issue 14) -------
+
+namespace {
+
+// What a command prints on stdout (e.g. ffprobe, ffmpeg -f framemd5).
+std::string capture(const std::string& cmd) {
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+    ::pclose(p);
+  }
+  return out;
+}
+std::string frame_count(const fs::path& video) {
+  return capture("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
+                 video.string() + "'");
+}
+// MD5 of every decoded frame, without the header (which names the input).
+std::string frame_md5s(const fs::path& video) {
+  std::string out;
+  std::istringstream in(capture("ffmpeg -v error -i '" + video.string() + "' -f framemd5 -"));
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty() && l[0] != '#') out += l + "\n";
+  return out;
+}
+
+}  // namespace
+
+TEST_F(VideoRender, StreamedVideoHasEveryFrameAndNoPngs) {
+  TUMBLE_NEED_GL();
+  const fs::path streamed = dir_ / "streamed", png = dir_ / "png";
+  Result r = run("render '" + data("tiny_render.toml") + "' -o '" + streamed.string() +
+                 "' --video mp4 --frames-out none --progress none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const std::string& n : names(streamed)) EXPECT_EQ(n.find("frame_"), std::string::npos) << n;
+  EXPECT_EQ(names(streamed), (std::vector<std::string>{"manifest.json", "tiny_render.mp4"}));
+  EXPECT_EQ(frame_count(streamed / "tiny_render.mp4"), "7\n");
+  const std::string m = slurp(streamed / "manifest.json");
+  EXPECT_NE(m.find("\"complete\": true"), std::string::npos) << m;
+  EXPECT_NE(m.find("\"frames_out\": \"none\""), std::string::npos) << m;
+  EXPECT_NE(m.find("\"frames_written\": 7"), std::string::npos) << m;
+  // The same pixels as the PNG path: every decoded frame equal.
+  r = run("render '" + data("tiny_render.toml") + "' -o '" + png.string() + "' --video mp4 --progress none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string a = frame_md5s(streamed / "tiny_render.mp4"), b = frame_md5s(png / "tiny_render.mp4");
+  EXPECT_EQ(lines(a).size(), 7u) << a;
+  EXPECT_EQ(a, b);
+}
+
+TEST_F(VideoRender, StreamedRenderRefusesWhatItCannotDo) {
+  const std::string scene = "render '" + data("tiny_render.toml") + "' -o '" + (dir_ / "x").string() + "' --progress none ";
+  Result r = run(scene + "--frames-out none --video none");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("nothing to write"), std::string::npos) << r.err;
+  r = run(scene + "--frames-out none --video mp4 --frames 0:2");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--frames needs PNG frames"), std::string::npos) << r.err;
+  r = run(scene + "--frames-out jpeg");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--frames-out: expected png or none, found 'jpeg'"), std::string::npos) << r.err;
+}
+
+TEST_F(VideoRender, StreamedRenderWithoutWorkingFfmpegExits1) {
+  TUMBLE_NEED_GL();
+  const std::vector<std::string> extra = {"--video", "mp4", "--frames-out", "none"};
+  // Missing: nothing drawn; failing at once: the broken pipe is an error, not a crash.
+  for (const std::string& path : {std::string("/nonexistent-tumble-path"),
+                                  fake_ffmpeg("echo 'fake encoder failure' >&2; exit 1")}) {
+    SCOPED_TRACE(path);
+    const fs::path out = dir_ / (path[1] == 'n' ? "missing" : "failing");
+    const pid_t pid = spawn_render(data("tiny_render.toml"), out, extra, path);
+    EXPECT_EQ(wait_exit(pid), 1) << slurp(dir_ / "spawn.err");
+    expect_incomplete_without_video(out);
+    EXPECT_EQ(names(out), std::vector<std::string>{"manifest.json"});
+  }
+}
+
+TEST_F(VideoRender, InterruptedStreamExits130AndLeavesNoVideo) {
+  TUMBLE_NEED_GL();
+  for (const int sig : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(sig);
+    const fs::path out = dir_ / ("stream" + std::to_string(sig)), mark = dir_ / ("started" + std::to_string(sig));
+    // Starts a half video, then reads nothing: tumble's writes block on the full pipe.
+    const std::string path = fake_ffmpeg("for a; do last=$a; done; echo half > \"$last\"; touch '" + mark.string() +
+                                         "'; exec sleep 60");
+    const pid_t pid = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4", "--frames-out", "none"}, path);
+    ASSERT_TRUE(wait_for_file(pid, mark)) << slurp(dir_ / "spawn.err");
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let the pipe fill
+    ::kill(pid, sig);
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_EQ(wait_exit(pid), 128 + sig) << slurp(dir_ / "spawn.err");
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(20)) << "did not stop the stream";
+    expect_incomplete_without_video(out);
+    EXPECT_EQ(names(out), std::vector<std::string>{"manifest.json"}) << "a half video or frames were left";
+    EXPECT_NE(slurp(dir_ / "spawn.err").find("nothing to resume"), std::string::npos) << slurp(dir_ / "spawn.err");
+  }
+}
