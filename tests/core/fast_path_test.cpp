@@ -35,10 +35,9 @@ std::vector<Case> cases(bool forced) {
     c.m = testing::body_with_moments({1 + 0.3 * std::abs(u(rng)), 2 + 0.2 * u(rng), 3 + 0.5 * std::abs(u(rng))},
                                      1 + std::abs(u(rng)));
     if (forced) {
-      c.m.forces.has_gravity = true;
-      c.m.forces.gravity = {0, 0, -9.81};
-      c.m.forces.point_forces.push_back({{u(rng), u(rng), u(rng)}, {u(rng), 0, 0}, Frame::body});
-      c.m.forces.angular_damping = 0.1 * std::abs(u(rng));
+      c.m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+      c.m.forces.terms.push_back(PointForce{{u(rng), u(rng), u(rng)}, {u(rng), 0, 0}, Frame::body});
+      c.m.forces.terms.push_back(AngularDamping{0.1 * std::abs(u(rng))});
     }
     c.s = testing::spinning_state(c.m, Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)),
                                   {10 * u(rng), 10 * u(rng), 10 * u(rng)});
