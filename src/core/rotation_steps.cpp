@@ -17,6 +17,25 @@ void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L,
   q = Eigen::Quaterniond(o.w, o.x, o.y, o.z);
 }
 
+void free_rotation_splitting_reference(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                                       Eigen::Quaterniond& q, double h) {
+  Eigen::Vector3d pi = q.conjugate() * L;
+  Eigen::Quaterniond r = Eigen::Quaterniond::Identity();
+  const int axes[5] = {0, 1, 2, 1, 0};
+  const double taus[5] = {0.5 * h, 0.5 * h, h, 0.5 * h, 0.5 * h};
+  for (int n = 0; n < 5; ++n) {
+    const int i = axes[n], j = (i + 1) % 3, k = (i + 2) % 3;
+    const double half = 0.5 * taus[n] * pi[i] * m.inv_inertia[i];
+    const double ch = std::cos(half), sh = std::sin(half);
+    const double c = ch * ch - sh * sh, s = 2 * ch * sh;
+    const double pj = pi[j], pk = pi[k];
+    pi[j] = c * pj + s * pk;
+    pi[k] = -s * pj + c * pk;
+    r = r * axis_rotation(i, 2 * half);
+  }
+  q = (q * r).normalized();
+}
+
 void free_rotation_midpoint(const RigidBodyModel& m, const Eigen::Vector3d& L,
                             Eigen::Quaterniond& q, double h) {
   const Eigen::Vector3d& inv_inertia = m.inv_inertia;

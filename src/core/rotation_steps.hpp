@@ -18,6 +18,13 @@ using FreeRotationMap = void (*)(const RigidBodyModel& m, const Eigen::Vector3d&
 void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L,
                              Eigen::Quaterniond& q, double h);
 
+/// The same map in plain form, in the seed's words: Π = q̄ L, then for each
+/// sub-flow i over τ the body turns by θ = τ Πᵢ/Iᵢ about principal axis i
+/// (Π turns by -θ: libm sin/cos, Eigen quaternion products), q ← normalise(q ⊗ r).
+/// The reference the tuned kernel (splitting_kernel.hpp) is held to.
+void free_rotation_splitting_reference(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                                       Eigen::Quaterniond& q, double h);
+
 /// Implicit midpoint rule on Euler's equations Π' = Π × I⁻¹Π (GNI IV.2.1: it keeps
 /// every quadratic invariant, so |Π|² and 2T, to round-off). Its update is
 /// Π₁ = cay(h ω̂ₘ)ᵀ Π₀, so advancing q by the same Cayley rotation keeps world L.
