@@ -7,5 +7,5 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 ${CXX:-g++} -std=c++20 -O2 -ffp-contract=off -I"$root/src" -I/usr/include/eigen3 \
-  "$root/scripts/splitting_order_study.cpp" "$root/build/release/src/core/libtumble_core.a" -o "$out/study" "$@"
-"$out/study"
+  "$root/scripts/splitting_order_study.cpp" "$root/build/release/src/core/libtumble_core.a" -o "$out/study"
+"$out/study" "$@"

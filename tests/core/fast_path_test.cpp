@@ -109,7 +109,7 @@ TEST(FastPath, SincosKernelWithinOneUlpOfLibm) {
     worst_s = std::max(worst_s, ulps(s, std::sin(x)));
     worst_c = std::max(worst_c, ulps(c, std::cos(x)));
   }
-  // The tiny-angle series on its own range |x| ≤ 1/64.
+  // The tiny-angle series on its own range |x| ≤ kTinyAngle = 1/32.
   std::uniform_real_distribution<double> t(-kernel::kTinyAngle, kernel::kTinyAngle);
   std::vector<double> tiny = {0.0, -0.0, 1e-300, 1e-9, kernel::kTinyAngle, -kernel::kTinyAngle};
   for (int i = 0; i < 200000; ++i) tiny.push_back(t(rng));
