@@ -127,6 +127,10 @@ int run_golden(const GoldenOptions& o) {
   if (o.every < 1) throw InputError("--every: expected an integer >= 1");
   for (int v : {o.width, o.height})
     if (v < 16 || v > 16384) throw InputError("--width/--height: expected 16..16384 px, found " + std::to_string(v));
+  // GL is set up like an option, before any file is written: an unknown
+  // backend or a machine without GL must not leave a half-updated golden set.
+  const render::GlBackend backend = o.physics_only ? render::GlBackend::osmesa : parse_backend_option(o.gl);
+  const std::unique_ptr<render::GlContext> ctx = o.physics_only ? nullptr : render::create_gl_context(backend);
   const scene::Scene s = load_scene_verbose(o.scene);
   std::vector<int> msaas;
   if (o.msaa.empty()) msaas.push_back(s.render.output.msaa);
@@ -179,9 +183,7 @@ int run_golden(const GoldenOptions& o) {
     }
   }
 
-  if (!o.physics_only) {
-    const render::GlBackend backend = o.gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(o.gl);
-    auto ctx = render::create_gl_context(backend);
+  if (ctx) {
     const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
     for (int msaa : msaas) {
       int samples = 0;

@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
 #include "app/commands.hpp"
+#include "app/frame_renderer.hpp"
 #include "app/progress.hpp"
 #include "app/render_output.hpp"
 #include "app/render_job.hpp"
@@ -45,15 +46,6 @@ Quality parse_quality(const std::string& q) {
   if (q == "medium") return {2, 23};
   if (q == "high") return {4, 18};
   throw InputError("--quality: expected low, medium or high, found '" + q + "'");
-}
-
-render::GlBackend parse_backend_option(const std::string& gl) {
-  const std::string where = gl.empty() ? "TUMBLE_GL" : "--gl";
-  try {
-    return gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(gl);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(where + ": " + e.what());
-  }
 }
 
 /// The options that are scene keys go into the scene before it is validated,

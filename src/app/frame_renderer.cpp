@@ -1,12 +1,22 @@
 #include "app/frame_renderer.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "io/trajectory_csv.hpp"
 #include "render/renderer.hpp"
 
 namespace tumble::app {
+
+render::GlBackend parse_backend_option(const std::string& gl) {
+  const std::string where = gl.empty() ? "TUMBLE_GL" : "--gl";
+  try {
+    return gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(gl);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where + ": " + e.what());
+  }
+}
 
 SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
     : scene_(s), fps_(s.render.output.fps), count_(scene::frame_clock(s, s.render.output.fps).count()) {

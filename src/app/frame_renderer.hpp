@@ -11,6 +11,10 @@
 
 namespace tumble::app {
 
+/// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
+/// naming the option for an unknown name, so it fails before any work.
+render::GlBackend parse_backend_option(const std::string& gl);
+
 /// A scene simulated at its frame times t_k = k/fps up to a last frame.
 class SceneFrames {
  public:

@@ -137,6 +137,15 @@ TEST_F(BadOption, UnknownGlBackendIsAnInputErrorBeforeTheSimulation) {
   expect_refused(r, "TUMBLE_GL: unknown GL backend 'vulkan'");
 }
 
+TEST_F(BadOption, GoldenWithAnUnknownGlBackendWritesNoGolden) {
+  // It used to write the golden trajectory first and fail late, with exit 1.
+  const fs::path gold = dir_ / "gold";
+  const std::string scene = "'" + (kSource / "scenes/dzhanibekov.toml").string() + "'";
+  const Result r = run("golden " + scene + " --at 1 --update --gl vulkan --dir '" + gold.string() + "'");
+  expect_refused(r, "--gl: unknown GL backend 'vulkan' (expected osmesa or egl)");
+  EXPECT_FALSE(fs::exists(gold / "dzhanibekov.trajectory.csv"));
+}
+
 TEST_F(BadOption, BackwardsFrameRangeNamesAAfterB) {
   expect_refused(render("--frames 10:5"), "--frames 10:5: the first frame (10) is after the last (5); expected A <= B");
 }

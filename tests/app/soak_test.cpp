@@ -23,15 +23,27 @@ TEST_F(Soak, KilledAtRandomAndResumedEndsByteIdenticalToACleanRun) {
   const std::string range = "0:" + std::to_string(frames - 1);
   const std::string scene = data("soak_render.toml");
   const fs::path out = dir_ / "soak", clean = dir_ / "clean";
-  // The clean run first: its wall time scales the kill times, so a fast
-  // machine still gets killed mid-run and a slow one still finishes.
+  // The clean run first: the time to its first frame (set-up and simulation)
+  // and its wall time scale the kill times, so a fast machine still gets
+  // killed mid-run and a slow one still makes progress between kills.
   const auto c0 = std::chrono::steady_clock::now();
-  ASSERT_EQ(run("render '" + scene + "' -o '" + clean.string() + "' --progress none --frames " + range).code, 0);
-  const double clean_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0).count();
+  auto ms_since = [](auto t) { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count(); };
+  const pid_t clean_pid = spawn_render(scene, clean, {"--frames", range});
+  double first_ms = -1;
+  int clean_st = 0;
+  while (::waitpid(clean_pid, &clean_st, WNOHANG) != clean_pid) {
+    if (first_ms < 0 && fs::exists(clean / "frame_000000.png")) first_ms = ms_since(c0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_TRUE(WIFEXITED(clean_st) && WEXITSTATUS(clean_st) == 0) << slurp(dir_ / "spawn.err");
+  const double clean_ms = ms_since(c0);
+  if (first_ms < 0) first_ms = clean_ms;
   std::mt19937 rng(static_cast<unsigned>(env_long("TUMBLE_SOAK_SEED", 13)));
-  // Kill between 5 % and 95 % of a clean run's time after the start: in the
-  // simulation, mid-frame, mid-rename. After kMaxKills the last run finishes.
-  std::uniform_real_distribution<double> delay_ms(0.05 * clean_ms, 0.95 * clean_ms);
+  // Kill from half the set-up time to 15 % of the frame-writing time past it:
+  // in the simulation, mid-frame, mid-rename, several times per run (with a
+  // fixed 5-95 % of the whole run, 2000 frames took only 2 kills). After
+  // kMaxKills the last run finishes.
+  std::uniform_real_distribution<double> delay_ms(0.5 * first_ms, first_ms + 0.15 * (clean_ms - first_ms));
   const int kMaxKills = 25;
   int kills = 0, runs = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -58,7 +70,8 @@ TEST_F(Soak, KilledAtRandomAndResumedEndsByteIdenticalToACleanRun) {
     }
   }
   const double soak_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << "soak: " << frames << " frames, " << kills << " kill -9, " << runs << " runs, " << soak_s << " s\n";
+  std::cout << "soak: " << frames << " frames, " << kills << " kill -9, " << runs << " runs, " << soak_s
+            << " s (clean run " << clean_ms / 1000 << " s, first frame after " << first_ms / 1000 << " s)\n";
   EXPECT_GT(kills, 0) << "the render finished before the first kill: nothing was tested";
   EXPECT_EQ(names(out), names(clean));  // no stray temp files, no missing frames
   expect_same_frames(out, clean, static_cast<int>(frames));
