@@ -307,7 +307,7 @@ inline int split_order4(const double inv[3]) {
 }
 
 /// splitting_rotation<false> with the order picked at run time (index into kSplitAxes).
-inline Quat splitting_rotation_ordered(int order, const Quat& q, const double l[3], const double inv[3], double h) {
+[[gnu::always_inline]] inline Quat splitting_rotation_ordered(int order, const Quat& q, const double l[3], const double inv[3], double h) {
   switch (order) {
     case 1: return splitting_rotation<false, 0, 2, 1>(q, l, inv, h);
     case 2: return splitting_rotation<false, 1, 0, 2>(q, l, inv, h);
