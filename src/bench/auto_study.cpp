@@ -22,10 +22,9 @@ struct AutoProblem {
 
 AutoProblem thruster() {
   ForceSet f;
-  f.has_gravity = true;
-  f.gravity = {0, 0, -9.81};
-  f.point_forces.push_back({Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
-  f.torque_body = {0, 0.3, 0};
+  f.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  f.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  f.terms.push_back(ConstantTorque{Eigen::Vector3d(0, 0.3, 0), Frame::body});
   AutoProblem p{diagonal_model("thruster", {1, 2, 3}, f), {}, {10, 1.0 / 30, 1e-6}};
   p.s0 = spinning_state(p.model, {0.5, 3, 0.2});
   return p;

@@ -58,9 +58,8 @@ Problem forced_problem() {
                   "(0, 0, -9.81) m/s^2 plus a body-fixed force (0, 0, 2) N at (1, 0, 0) m, 10 s; reference: "
                   "rk45 at rtol 1e-13";
   ForceSet f;
-  f.has_gravity = true;
-  f.gravity = {0, 0, -9.81};
-  f.point_forces.push_back({Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  f.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  f.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
   p.model = diagonal_model("forced", {1, 2, 3}, f);
   p.s0 = spinning_state(p.model, {0.01, 10, 0.01});
   p.torque_free = false;

@@ -1,29 +1,12 @@
 #include "core/dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace tumble {
 
 namespace {
-
-// Forces that do not depend on the momenta: gravity, point forces, constant torques.
-Wrench position_wrench(const RigidBodyModel& m, const BodyState& s) {
-  Wrench w;
-  const auto& f = m.forces;
-  if (f.has_gravity) w.force += m.mass * f.gravity;
-  if (!f.point_forces.empty()) {
-    const Eigen::Quaterniond world_from_cloud = cloud_orientation(m, s);
-    for (const PointForce& pf : f.point_forces) {
-      const Eigen::Vector3d F = pf.frame == Frame::world ? pf.force : world_from_cloud * pf.force;
-      const Eigen::Vector3d r = world_from_cloud * (pf.point - m.com_cloud);
-      w.force += F;
-      w.torque += r.cross(F);
-    }
-  }
-  w.torque += f.torque_world;
-  if (!f.torque_body.isZero(0)) w.torque += cloud_orientation(m, s) * f.torque_body;
-  return w;
-}
 
 // (1 - e^{-x}) / x, accurate near 0: the factor of the exact linear-ODE flow.
 double phi1(double x) { return x == 0.0 ? 1.0 : -std::expm1(-x) / x; }
@@ -31,11 +14,18 @@ double phi1(double x) { return x == 0.0 ? 1.0 : -std::expm1(-x) / x; }
 }  // namespace
 
 Wrench wrench(const RigidBodyModel& m, const BodyState& s, double /*t*/) {
-  Wrench w = position_wrench(m, s);
-  if (m.forces.linear_damping != 0) w.force -= m.forces.linear_damping * velocity(m, s);
-  if (m.forces.angular_damping != 0) w.torque -= m.forces.angular_damping * omega_world(m, s);
+  Wrench w;
+  for (const ForceTerm& term : m.forces.terms) std::visit([&](const auto& f) { f.add_wrench(m, s, w); }, term);
   return w;
 }
+
+namespace {
+KickPart kick_part(const RigidBodyModel& m, const BodyState& s) {
+  KickPart k;
+  for (const ForceTerm& term : m.forces.terms) std::visit([&](const auto& f) { f.add_kick(m, s, k); }, term);
+  return k;
+}
+}  // namespace
 
 Derivative derivative(const RigidBodyModel& m, const BodyState& s, double t) {
   Derivative d;
@@ -60,20 +50,28 @@ double kinetic_energy(const RigidBodyModel& m, const BodyState& s) {
 }
 
 double potential_energy(const RigidBodyModel& m, const BodyState& s) {
-  return m.forces.has_gravity ? -m.mass * m.forces.gravity.dot(s.c) : 0.0;
+  double u = 0;
+  for (const ForceTerm& term : m.forces.terms) u += std::visit([&](const auto& f) { return f.potential(m, s); }, term);
+  return u;
 }
 
 EnergyFlow energy_flow(const RigidBodyModel& m, const BodyState& s) {
   EnergyFlow e;
-  const auto& f = m.forces;
-  const Eigen::Vector3d v = velocity(m, s);
-  const double gravity = f.has_gravity ? m.mass * f.gravity.dot(v) : 0.0;
-  if (f.has_torque() || !f.point_forces.empty()) {
-    Wrench w = position_wrench(m, s);
-    if (f.has_gravity) w.force -= m.mass * f.gravity;
-    e.driving = w.force.dot(v) + w.torque.dot(omega_world(m, s));
-  }
-  e.scale = std::abs(e.driving) + std::abs(gravity);
+  if (m.forces.empty()) return e;
+  const Eigen::Vector3d v = velocity(m, s), w = omega_world(m, s);
+  double conservative = 0;
+  for (const ForceTerm& term : m.forces.terms)
+    std::visit(
+        [&](const auto& f) {
+          if (f.work == Work::dissipative) return;
+          Wrench x;
+          f.add_wrench(m, s, x);
+          const double power = x.force.dot(v) + x.torque.dot(w);
+          if (f.work == Work::driving) e.driving += power;
+          else conservative += std::abs(power);
+        },
+        term);
+  e.scale = std::abs(e.driving) + conservative;
   return e;
 }
 
@@ -91,20 +89,26 @@ Eigen::Vector3d angular_acceleration(const RigidBodyModel& m, const BodyState& s
 
 BodyState kick(const RigidBodyModel& m, const BodyState& s, double /*t*/, double h) {
   BodyState out = s;
-  const Wrench w = position_wrench(m, s);
+  const KickPart k = kick_part(m, s);
+  const Wrench& w = k.constant;
   // P' = F - a P with a = k/M: P(h) = P + h (F - a P) φ1(a h).
-  const double a = m.forces.linear_damping / m.mass;
+  const double a = k.linear_damping / m.mass;
   out.P = s.P + h * phi1(a * h) * (w.force - a * s.P);
-  if (w.torque.isZero(0) && m.forces.angular_damping == 0) return out;
+  if (w.torque.isZero(0) && k.angular_damping == 0) return out;
   // Π' = τ_b - k I⁻¹ Π, componentwise in the principal frame (q frozen).
   const Eigen::Vector3d tau_b = s.q.conjugate() * w.torque;
   Eigen::Vector3d pi = momentum_body(s);
   for (int i = 0; i < 3; ++i) {
-    const double ai = m.forces.angular_damping * m.inv_inertia[i];
+    const double ai = k.angular_damping * m.inv_inertia[i];
     pi[i] += h * phi1(ai * h) * (tau_b[i] - ai * pi[i]);
   }
   out.L = s.q * pi;
   return out;
+}
+
+double damping_rate(const RigidBodyModel& m) {
+  const KickPart k = kick_part(m, BodyState{});
+  return std::max(k.angular_damping * m.inv_inertia.maxCoeff(), k.linear_damping / m.mass);
 }
 
 }  // namespace tumble

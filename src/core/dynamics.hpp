@@ -18,12 +18,6 @@ struct Derivative {
   Eigen::Vector4d dq;
 };
 
-/// Total force (N) and torque about c (N·m), world frame.
-struct Wrench {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
-};
-
 /// q' = ½ ω_world ⊗ q for world L, ω_world = q I⁻¹ (q̄ L), evaluated in the
 /// body frame as ½ q ⊗ (0, ω_b), ω_b = I⁻¹ Π, Π = q̄ L — the product the seed's
 /// Q(q) forms, which is right exactly for this body-frame ω (README, erratum 1).
@@ -66,6 +60,7 @@ inline Eigen::Vector4d quaternion_rate(const RigidBodyModel& m, const Eigen::Qua
 /// terms but is part of the signature so time-dependent forcing fits.
 Derivative derivative(const RigidBodyModel& m, const BodyState& s, double t);
 
+/// Sum of the body's force terms (forces.hpp), in list order.
 Wrench wrench(const RigidBodyModel& m, const BodyState& s, double t);
 
 inline Eigen::Vector3d velocity(const RigidBodyModel& m, const BodyState& s) { return s.P / m.mass; }
@@ -98,16 +93,16 @@ inline Eigen::Vector3d principal_axis_angles_to_L(const BodyState& s) {
 
 /// Kinetic energy ½|P|²/M + ½ Π·I⁻¹Π, J.
 double kinetic_energy(const RigidBodyModel& m, const BodyState& s);
-/// Potential of declared conservative fields (uniform gravity: -M g·c), J.
+/// Sum of the terms' potentials (uniform gravity: -M g·c), J.
 double potential_energy(const RigidBodyModel& m, const BodyState& s);
 inline double total_energy(const RigidBodyModel& m, const BodyState& s) {
   return kinetic_energy(m, s) + potential_energy(m, s);
 }
 
-/// Where energy goes (W): `driving` is the power of the declared terms that
-/// are neither conservative nor dissipative (point forces, constant torques);
-/// `scale` adds |power| of gravity, the size against which an energy balance
-/// is judged. Damping only removes energy, so it is in neither.
+/// Where energy goes (W): `driving` is the power of the terms whose `work` is
+/// Work::driving (point forces, constant torques); `scale` adds |power| of the
+/// conservative ones, the size against which an energy balance is judged.
+/// Dissipative terms only remove energy, so they are in neither.
 struct EnergyFlow {
   double driving = 0, scale = 0;
 };
@@ -117,9 +112,13 @@ EnergyFlow energy_flow(const RigidBodyModel& m, const BodyState& s);
 Eigen::Vector3d linear_acceleration(const RigidBodyModel& m, const BodyState& s, double t);
 Eigen::Vector3d angular_acceleration(const RigidBodyModel& m, const BodyState& s, double t);
 
-/// Exact flow over `h` (s) of the force field alone, c and q frozen (the "kick"
-/// of a Strang splitting). Forces are constant or linear in the momenta
-/// (damping), so P' = F - aP and Π' = τ_b - a_i Π solve in closed form.
+/// Exact flow over `h` (s) of the force terms alone, c and q frozen (the "kick"
+/// of a Strang splitting): the terms' KickParts summed, P' = F - aP and
+/// Π' = τ_b - a_i Π, solved in closed form.
 BodyState kick(const RigidBodyModel& m, const BodyState& s, double t, double h);
+
+/// Largest decay rate of the momenta under the terms' damping, 1/s:
+/// max(k_lin/M, k_ang max I⁻¹ᵢ).
+double damping_rate(const RigidBodyModel& m);
 
 }  // namespace tumble

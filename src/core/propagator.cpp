@@ -20,8 +20,7 @@ constexpr double kBlowUp = 10;
 
 // Largest rate (1/s) at which the state turns or decays: |ω| plus the damping rates.
 double rate(const RigidBodyModel& m, const BodyState& s) {
-  const double damp = std::max(m.forces.angular_damping * m.inv_inertia.maxCoeff(), m.forces.linear_damping / m.mass);
-  return omega_world(m, s).norm() + damp;
+  return omega_world(m, s).norm() + damping_rate(m);
 }
 
 }  // namespace

@@ -10,11 +10,36 @@
 
 namespace tumble {
 
+void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L, Eigen::Quaterniond& q, double h,
+                             int order) {
+  const kernel::Quat o =
+      kernel::splitting_rotation_ordered(order, {q.w(), q.x(), q.y(), q.z()}, L.data(), m.inv_inertia.data(), h);
+  q = Eigen::Quaterniond(o.w, o.x, o.y, o.z);
+}
+
 void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L,
                              Eigen::Quaterniond& q, double h) {
-  const kernel::Quat o =
-      kernel::splitting_rotation<false>({q.w(), q.x(), q.y(), q.z()}, L.data(), m.inv_inertia.data(), h);
-  q = Eigen::Quaterniond(o.w, o.x, o.y, o.z);
+  free_rotation_splitting(m, L, q, h, kernel::split_order(m.inv_inertia.data()));
+}
+
+void free_rotation_splitting_reference(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                                       Eigen::Quaterniond& q, double h, int order) {
+  Eigen::Vector3d pi = q.conjugate() * L;
+  Eigen::Quaterniond r = Eigen::Quaterniond::Identity();
+  const int* abc = kernel::kSplitAxes[order];
+  const int axes[5] = {abc[0], abc[1], abc[2], abc[1], abc[0]};
+  const double taus[5] = {0.5 * h, 0.5 * h, h, 0.5 * h, 0.5 * h};
+  for (int n = 0; n < 5; ++n) {
+    const int i = axes[n], j = (i + 1) % 3, k = (i + 2) % 3;
+    const double half = 0.5 * taus[n] * pi[i] * m.inv_inertia[i];
+    const double ch = std::cos(half), sh = std::sin(half);
+    const double c = ch * ch - sh * sh, s = 2 * ch * sh;
+    const double pj = pi[j], pk = pi[k];
+    pi[j] = c * pj + s * pk;
+    pi[k] = -s * pj + c * pk;
+    r = r * axis_rotation(i, 2 * half);
+  }
+  q = (q * r).normalized();
 }
 
 void free_rotation_midpoint(const RigidBodyModel& m, const Eigen::Vector3d& L,
@@ -63,15 +88,19 @@ BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, dou
 }
 
 BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
-  return strang(m, s, t, h, free_rotation_splitting);
+  return strang(m, s, t, h, static_cast<FreeRotationMap>(free_rotation_splitting));
 }
 
 BodyState splitting4_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
   const double cbrt2 = std::cbrt(2.0);
   const double w1 = 1.0 / (2.0 - cbrt2), w0 = -cbrt2 * w1;
-  BodyState x = splitting_step(m, s, t, w1 * h);
-  x = splitting_step(m, x, t + w1 * h, w0 * h);
-  return splitting_step(m, x, t + (w1 + w0) * h, w1 * h);
+  const int order = kernel::split_order4(m.inv_inertia.data());
+  const auto rotate = [order](const RigidBodyModel& b, const Eigen::Vector3d& L, Eigen::Quaterniond& q, double tau) {
+    free_rotation_splitting(b, L, q, tau, order);
+  };
+  BodyState x = strang(m, s, t, w1 * h, rotate);
+  x = strang(m, x, t + w1 * h, w0 * h, rotate);
+  return strang(m, x, t + (w1 + w0) * h, w1 * h, rotate);
 }
 
 BodyState implicit_midpoint_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {

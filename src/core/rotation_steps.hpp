@@ -14,9 +14,21 @@ using FreeRotationMap = void (*)(const RigidBodyModel& m, const Eigen::Vector3d&
 
 /// NO_SQUISH / Dullweber–Leimkuhler–McLachlan (J. Chem. Phys. 107, 1997) splitting
 /// H = T1 + T2 + T3 with Tᵢ = Πᵢ²/(2Iᵢ); each Tᵢ flow is an exact rotation about
-/// principal axis i. Symmetric sequence 1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2): order 2.
+/// principal axis i. Symmetric sequence A(h/2) B(h/2) C(h) B(h/2) A(h/2): order 2,
+/// with the axes (A, B, C) chosen per body from its moments (kernel::split_order:
+/// 3,2,1,2,3 for most bodies, 2,3,1,3,2 for elongated ones).
 void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L,
                              Eigen::Quaterniond& q, double h);
+/// The same with the sub-flow order given (index into kernel::kSplitAxes).
+void free_rotation_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L, Eigen::Quaterniond& q, double h,
+                             int order);
+
+/// The same map (same sub-flow order) in plain form, in the seed's words: Π = q̄ L, then for each
+/// sub-flow i over τ the body turns by θ = τ Πᵢ/Iᵢ about principal axis i
+/// (Π turns by -θ: libm sin/cos, Eigen quaternion products), q ← normalise(q ⊗ r).
+/// The reference the tuned kernel (splitting_kernel.hpp) is held to.
+void free_rotation_splitting_reference(const RigidBodyModel& m, const Eigen::Vector3d& L,
+                                       Eigen::Quaterniond& q, double h, int order);
 
 /// Implicit midpoint rule on Euler's equations Π' = Π × I⁻¹Π (GNI IV.2.1: it keeps
 /// every quadratic invariant, so |Π|² and 2T, to round-off). Its update is
@@ -30,7 +42,8 @@ BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, dou
                       FreeRotationMap rotate);
 
 BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
-/// Yoshida's triple jump (Phys. Lett. A 150, 1990) of `splitting_step`: order 4.
+/// Yoshida's triple jump (Phys. Lett. A 150, 1990) of the Strang splitting
+/// step, with its own sub-flow order (kernel::split_order4): order 4.
 BodyState splitting4_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
 BodyState implicit_midpoint_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
 

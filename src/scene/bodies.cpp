@@ -83,13 +83,20 @@ std::optional<Eigen::Quaterniond> read_orientation(TableReader& r) {
   return q.normalized();
 }
 
+// Terms in the order they are summed: gravity (scene-wide), the point forces,
+// then one per body key of force_kinds().
 void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
-  f.has_gravity = scene.has_gravity;
-  f.gravity = scene.gravity;
-  f.torque_world = r.vec3("torque_world").value_or(Eigen::Vector3d::Zero());
-  f.torque_body = r.vec3("torque_body").value_or(Eigen::Vector3d::Zero());
-  f.linear_damping = r.number("linear_damping", Range::non_negative()).value_or(0.0);
-  f.angular_damping = r.number("angular_damping", Range::non_negative()).value_or(0.0);
+  if (scene.has_gravity) f.terms.push_back(UniformGravity{scene.gravity});
+  std::vector<ForceTerm> keyed;  // read first, as the keys are reported in this order
+  for (const ForceKind& kind : force_kinds()) {
+    if (kind.vector) {
+      const std::optional<Eigen::Vector3d> v = r.vec3(kind.key);
+      if (v && !v->isZero(0)) keyed.push_back(kind.make(*v, 0));
+    } else {
+      const std::optional<double> x = r.number(kind.key, Range::non_negative());
+      if (x && *x != 0) keyed.push_back(kind.make(Eigen::Vector3d::Zero(), *x));
+    }
+  }
   const auto list = r.tables("forces");
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader fr(*list[i], r.key_path("forces") + "[" + std::to_string(i) + "]", r.diag(),
@@ -107,16 +114,19 @@ void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
     if (frame == "world") pf.frame = Frame::world;
     else if (frame == "body") pf.frame = Frame::body;
     else fr.error("frame", "expected \"world\" or \"body\", found \"" + frame + "\"");
-    f.point_forces.push_back(pf);
+    f.terms.push_back(pf);
   }
+  f.terms.insert(f.terms.end(), keyed.begin(), keyed.end());
 }
 
 void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene& scene) {
   const std::size_t errors_before = ctx.diag.error_count();
-  TableReader r(t, "bodies[" + std::to_string(index) + "]", ctx.diag,
-                {"name", "particles", "shape", "cloud", "parts", "position", "orientation", "velocity",
-                 "omega_body", "omega_world", "forces", "torque_world", "torque_body", "linear_damping",
-                 "angular_damping", "color"});
+  std::vector<std::string_view> keys = {"name",        "particles", "shape",      "cloud",       "parts",
+                                        "position",    "orientation", "velocity", "omega_body", "omega_world",
+                                        "forces"};
+  for (const ForceKind& kind : force_kinds()) keys.push_back(kind.key);
+  keys.push_back("color");
+  TableReader r(t, "bodies[" + std::to_string(index) + "]", ctx.diag, keys);
   Body b;
   b.name = r.string("name").value_or("body" + std::to_string(index));
   if (!valid_name(b.name)) {

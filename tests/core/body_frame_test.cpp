@@ -64,10 +64,9 @@ TEST(BodyFrame, CoordinatesRoundTrip) {
 // derivative in other coordinates: d(qΠ)/dt = L' = τ.
 TEST(BodyFrame, RateIsTheSeedDerivative) {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3});
-  m.forces.torque_world = {0.3, -0.2, 0.5};
-  m.forces.angular_damping = 0.1;
-  m.forces.has_gravity = true;
-  m.forces.gravity = {0, 0, -9.81};
+  m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  m.forces.terms.push_back(ConstantTorque{Eigen::Vector3d(0.3, -0.2, 0.5), Frame::world});
+  m.forces.terms.push_back(AngularDamping{0.1});
   const BodyState s = testing::spinning_state(m, Eigen::Quaterniond(0.3, -0.5, 0.7, 0.2), {1, -4, 2});
   const BodyCoords x = to_body_coords(s);
   const BodyRate r = body_rate(m, x, 0);

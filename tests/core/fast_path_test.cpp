@@ -1,8 +1,8 @@
 // The speed-ups of the core must not change results: the scalar quaternion rate
 // and the unrolled rk4/euler give the same bits as the Eigen expression and the
 // tableau form; the splitting kernel's sincos is within 1 ulp of libm and its
-// sparse quaternion products equal the full ones; splitting_step agrees with a
-// straightforward Eigen/libm implementation to round-off.
+// sparse quaternion products equal the full ones (the splitting map against
+// its plain form: reference_kernels_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,10 +35,9 @@ std::vector<Case> cases(bool forced) {
     c.m = testing::body_with_moments({1 + 0.3 * std::abs(u(rng)), 2 + 0.2 * u(rng), 3 + 0.5 * std::abs(u(rng))},
                                      1 + std::abs(u(rng)));
     if (forced) {
-      c.m.forces.has_gravity = true;
-      c.m.forces.gravity = {0, 0, -9.81};
-      c.m.forces.point_forces.push_back({{u(rng), u(rng), u(rng)}, {u(rng), 0, 0}, Frame::body});
-      c.m.forces.angular_damping = 0.1 * std::abs(u(rng));
+      c.m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+      c.m.forces.terms.push_back(PointForce{{u(rng), u(rng), u(rng)}, {u(rng), 0, 0}, Frame::body});
+      c.m.forces.terms.push_back(AngularDamping{0.1 * std::abs(u(rng))});
     }
     c.s = testing::spinning_state(c.m, Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)),
                                   {10 * u(rng), 10 * u(rng), 10 * u(rng)});
@@ -110,7 +109,7 @@ TEST(FastPath, SincosKernelWithinOneUlpOfLibm) {
     worst_s = std::max(worst_s, ulps(s, std::sin(x)));
     worst_c = std::max(worst_c, ulps(c, std::cos(x)));
   }
-  // The tiny-angle series on its own range |x| ≤ 1/64.
+  // The tiny-angle series on its own range |x| ≤ kTinyAngle = 1/32.
   std::uniform_real_distribution<double> t(-kernel::kTinyAngle, kernel::kTinyAngle);
   std::vector<double> tiny = {0.0, -0.0, 1e-300, 1e-9, kernel::kTinyAngle, -kernel::kTinyAngle};
   for (int i = 0; i < 200000; ++i) tiny.push_back(t(rng));
@@ -144,40 +143,6 @@ TEST(FastPath, SparseAxisProductEqualsFullProduct) {
       EXPECT_EQ(r[k].z, f[k].z);
     }
   }
-}
-
-// The splitting map as first written: libm sin/cos of the half angle, Eigen products.
-Eigen::Quaterniond reference_splitting(const RigidBodyModel& m, const Eigen::Vector3d& L, Eigen::Quaterniond q,
-                                       double h) {
-  Eigen::Vector3d pi = q.conjugate() * L;
-  Eigen::Quaterniond r = Eigen::Quaterniond::Identity();
-  const int axes[5] = {0, 1, 2, 1, 0};
-  const double taus[5] = {0.5 * h, 0.5 * h, h, 0.5 * h, 0.5 * h};
-  for (int n = 0; n < 5; ++n) {
-    const int i = axes[n], j = (i + 1) % 3, k = (i + 2) % 3;
-    const double half = 0.5 * taus[n] * pi[i] * m.inv_inertia[i];
-    const double ch = std::cos(half), sh = std::sin(half);
-    const double c = ch * ch - sh * sh, s = 2 * ch * sh;
-    const double pj = pi[j], pk = pi[k];
-    pi[j] = c * pj + s * pk;
-    pi[k] = -s * pj + c * pk;
-    r = r * axis_rotation(i, 2 * half);
-  }
-  return (q * r).normalized();
-}
-
-TEST(FastPath, SplittingMatchesReferenceToRoundOff) {
-  for (const Case& c : cases(false))
-    // h|ω| up to ~17·h: at 0.7 and 3 half angles pass π/4 and take libm. Each
-    // sub-flow's angle depends on Π from the previous one, so a 1-ulp difference
-    // grows by ~(h|ω|) per sub-flow: at h = 3 (h|ω| ≈ 50) that is ~1e-11.
-    // At h = 0.7 gcc gives 1e-14 and clang (the sanitizer build) 1.8e-14.
-    for (auto [h, tol] : {std::pair{1e-3, 2e-15}, {0.05, 2e-15}, {0.7, 5e-14}, {3.0, 1e-10}}) {
-      Eigen::Quaterniond q = c.s.q;
-      free_rotation_splitting(c.m, c.s.L, q, h);
-      const Eigen::Quaterniond ref = reference_splitting(c.m, c.s.L, c.s.q, h);
-      EXPECT_LT((q.coeffs() - ref.coeffs()).cwiseAbs().maxCoeff(), tol) << "h=" << h;
-    }
 }
 
 }  // namespace

@@ -24,8 +24,7 @@ constexpr double kT = 2.0;
 
 RigidBodyModel gravity_body() {
   RigidBodyModel m = testing::body_with_moments({0.7, 1.3, 2.2}, 2.5, "falling");
-  m.forces.has_gravity = true;
-  m.forces.gravity = kG;
+  m.forces.terms.push_back(UniformGravity{kG});
   return m;
 }
 

@@ -21,10 +21,9 @@ namespace {
 // body-fixed thruster and a body torque, under gravity: no closed form.
 RigidBodyModel thruster_model() {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "thruster");
-  m.forces.has_gravity = true;
-  m.forces.gravity = {0, 0, -9.81};
-  m.forces.point_forces.push_back({Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
-  m.forces.torque_body = {0, 0.3, 0};
+  m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  m.forces.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  m.forces.terms.push_back(ConstantTorque{Eigen::Vector3d(0, 0.3, 0), Frame::body});
   return m;
 }
 
@@ -61,8 +60,7 @@ TEST(MethodChoice, TorqueFreeBodyGetsTheClosedForm) {
 // must still qualify (at the coarsest step) and win.
 TEST(MethodChoice, ExactWithKicksWinsUnderGravityAlone) {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 0.5, "thrown");
-  m.forces.has_gravity = true;
-  m.forces.gravity = {0, 0, -9.81};
+  m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
   BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {2, 9, 1});
   s0.P = m.mass * Eigen::Vector3d(0.8, 0, 8.8);
   const ChoiceRequest r{1.8, 1.0 / 30, 1e-9, false};

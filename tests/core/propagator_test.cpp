@@ -100,7 +100,7 @@ TEST(Propagator, DivergingRunThrowsWithTimeStepBodyAndMethod) {
 // step: damping can only remove energy, so the balance trips.
 TEST(Propagator, NonFiniteStateThrowsDiverged) {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "damped");
-  m.forces.linear_damping = 100.0;
+  m.forces.terms.push_back(LinearDamping{100.0});
   BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0.1, 1, 0.1});
   s0.P = {1, 0, 0};
   StepConfig cfg;
@@ -120,7 +120,7 @@ TEST(Propagator, NonFiniteStateThrowsDiverged) {
 // energy balance stops it within the first steps, naming time, step, body, method.
 TEST(Propagator, DampedBlowUpOfAForcedBodyThrows) {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "damped top");
-  m.forces.angular_damping = 50.0;
+  m.forces.terms.push_back(AngularDamping{50.0});
   const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0.5, 2, 0.5});
   StepConfig cfg;
   cfg.method = Method::euler;
@@ -152,10 +152,9 @@ TEST(Propagator, DampedBlowUpOfAForcedBodyThrows) {
 TEST(Propagator, DrivenBodyPassesTheEnergyBalance) {
   for (Method method : {Method::euler, Method::rk4, Method::splitting}) {
     RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "driven");
-    m.forces.torque_world = {0, 0, 5};
-    m.forces.has_gravity = true;
-    m.forces.gravity = {0, 0, -9.81};
-    m.forces.point_forces.push_back({{0, 0, 20}, {1, 0, 0}, Frame::body});
+    m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+    m.forces.terms.push_back(PointForce{{0, 0, 20}, {1, 0, 0}, Frame::body});
+    m.forces.terms.push_back(ConstantTorque{Eigen::Vector3d(0, 0, 5), Frame::world});
     const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0, 0, 0.1});
     StepConfig cfg;
     cfg.method = method;
@@ -172,10 +171,9 @@ TEST(Propagator, DrivenBodyPassesTheEnergyBalance) {
 // steps are the same operations; samples are partial steps off the grid.
 TEST(Propagator, StateAt10sDoesNotDependOnTheFrameRate) {
   RigidBodyModel forced = testing::body_with_moments({1, 2, 3}, 2.0, "forced");
-  forced.forces.has_gravity = true;
-  forced.forces.gravity = {0, 0, -9.81};
-  forced.forces.angular_damping = 0.05;
-  forced.forces.point_forces.push_back({{0.3, 0, 0}, {0, 0.2, 0}, Frame::body});
+  forced.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  forced.forces.terms.push_back(PointForce{{0.3, 0, 0}, {0, 0.2, 0}, Frame::body});
+  forced.forces.terms.push_back(AngularDamping{0.05});
   for (const RigidBodyModel& m : {testing::reference_model(), forced}) {
     BodyState s0 = testing::reference_state(m);
     s0.P = {0.5, 0, 3};

@@ -114,13 +114,21 @@ TEST(SceneKeys, ForcesReachTheModel) {
                                             "[[bodies.forces]]\nforce = [1, 0, 0]\npoint = [0, 1, 0]\nframe = \"body\"\n",
                                         "t.toml");
   const ForceSet& f = s.bodies[0].model.forces;
-  EXPECT_TRUE(f.has_gravity);
-  EXPECT_EQ(f.gravity, Eigen::Vector3d(0, 0, -9.81));
-  EXPECT_EQ(f.torque_body, Eigen::Vector3d(0, 0, 1));
-  EXPECT_DOUBLE_EQ(f.linear_damping, 0.5);
-  ASSERT_EQ(f.point_forces.size(), 1u);
-  EXPECT_EQ(f.point_forces[0].frame, Frame::body);
-  EXPECT_EQ(f.point_forces[0].point, Eigen::Vector3d(0, 1, 0));
+  // Gravity, the point forces, then the body keys in force_kinds() order.
+  ASSERT_EQ(f.terms.size(), 4u);
+  ASSERT_NE(f.find<UniformGravity>(), nullptr);
+  EXPECT_EQ(f.find<UniformGravity>()->g, Eigen::Vector3d(0, 0, -9.81));
+  ASSERT_NE(f.find<ConstantTorque>(), nullptr);
+  EXPECT_EQ(f.find<ConstantTorque>()->torque, Eigen::Vector3d(0, 0, 1));
+  EXPECT_EQ(f.find<ConstantTorque>()->frame, Frame::body);
+  ASSERT_NE(f.find<LinearDamping>(), nullptr);
+  EXPECT_DOUBLE_EQ(f.find<LinearDamping>()->k, 0.5);
+  ASSERT_NE(f.find<PointForce>(), nullptr);
+  EXPECT_EQ(f.find<PointForce>()->frame, Frame::body);
+  EXPECT_EQ(f.find<PointForce>()->point, Eigen::Vector3d(0, 1, 0));
+  EXPECT_TRUE(std::holds_alternative<UniformGravity>(f.terms[0]));
+  EXPECT_TRUE(std::holds_alternative<PointForce>(f.terms[1]));
+  EXPECT_FALSE(f.conserves_energy());
 }
 
 TEST(SceneKeys, InitialConditions) {
