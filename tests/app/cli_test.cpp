@@ -44,7 +44,10 @@ TEST_F(Cli, SimulateWritesHeaderAndEndsAtDuration) {
   EXPECT_EQ(first[15], "0.01");  // L = I ω_body at identity orientation: (0.01, 20, 0.03)
   EXPECT_EQ(first[16], "20");
   EXPECT_NEAR(std::stod(first[18]), 100.0002, 1e-10);  // energy ½ Σ I ω²
-  EXPECT_NEAR(std::stod(last[18]), 100.0002, 1e-4);    // splitting: bounded energy error
+  // splitting: bounded energy error, O(dt²): |dE/E| 4.3e-6 at dt = 1 ms with
+  // the 3,2,1,2,3 order (2.2e-6 with the old 1,2,3,2,1, whose orientation
+  // error was 9x larger); core's conservation tests pin the figures.
+  EXPECT_NEAR(std::stod(last[18]), 100.0002, 1e-3);
   // ω in the cloud's axes starts as the scene's omega_body; axis 2 starts
   // atan2(|(0.01, 0.03)|, 20) from L, axis 1 and 3 close to a right angle.
   EXPECT_NEAR(std::stod(first[19]), 0.01, 1e-12);

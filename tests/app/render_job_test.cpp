@@ -96,15 +96,20 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
   const tumble::app::FrameBuilder fb(s, runs, fps, 320, 240);
   const tumble::viz::DrawList dl = fb.build(k);
   int overlays = 0;
-  for (const tumble::viz::View& v : dl.views)
+  for (const tumble::viz::View& v : dl.views) {
     for (const tumble::viz::TextItem& o : v.texts) {
       if (o.text.rfind("t =", 0) != 0) continue;
       ++overlays;
       // The title: renderer.cpp's draw_text puts it at the top-left, 11 px high here.
-      if (!v.label.empty()) EXPECT_GE(o.position_px.y, 0.6f * 7 + 1.25f * 11) << v.label;
-      for (const tumble::viz::TextItem& t : v.texts)
-        if (&t != &o) EXPECT_GE(std::abs(t.position_px.y - o.position_px.y), 1.25f * o.size_px) << "'" << t.text << "' on '" << o.text << "'";
+      if (!v.label.empty()) {
+        EXPECT_GE(o.position_px.y, 0.6f * 7 + 1.25f * 11) << v.label;
+      }
+      for (const tumble::viz::TextItem& t : v.texts) {
+        if (&t == &o) continue;
+        EXPECT_GE(std::abs(t.position_px.y - o.position_px.y), 1.25f * o.size_px) << "'" << t.text << "' on '" << o.text << "'";
+      }
     }
+  }
   EXPECT_EQ(overlays, 2);  // the two world views (the poinsot views have none)
 }
 
