@@ -1,7 +1,7 @@
 #!/bin/sh
 # Deliberate small changes checked against the committed goldens (issue 16):
 # each mutant runs from a scratch copy (binary + shaders, or a scene file), so
-# the source tree is never touched. Prints per mutant how many of the 36
+# the source tree is never touched. Prints per mutant how many of the
 # golden images fail with the current rule and with the old global rule alone
 # (more than 0.0005 of the pixels over delta 8), and the worst figures.
 #   usage: scripts/golden_mutations.sh [TUMBLE_BINARY] [OUT_DIR]
@@ -9,14 +9,17 @@ set -eu
 T=$(realpath "${1:-build/release/src/app/tumble}")
 O=$(realpath -m "${2:-out/golden-mutations}")
 scenes="dzhanibekov:0.5,4,12 methods_compare:0.5,6,15 reference:0.5,3,9 stable_spin:0.5,5,11 symmetric_top:0.5,4,9 thrown_box:0.2,0.9,1.6"
+# The explanatory scene's goldens are at frames (its clock has slow motion).
+explained="dzhanibekov_explained:30,204,420"
 rm -rf "$O"
 mkdir -p "$O"
 check() { # label, binary, [scene folder instead of scenes/]
   label=$1 bin=$2 sdir=${3:-scenes}
-  for sc in $scenes; do
+  for sc in $scenes $explained; do
     name=${sc%%:*}; at=${sc#*:}
     [ -f "$sdir/$name.toml" ] || continue
-    "$bin" golden "$sdir/$name.toml" --at "$at" --dir "tests/golden/$name" --msaa 4,0 \
+    sel="--at"; [ "$name" = "${explained%%:*}" ] && sel="--frames"
+    "$bin" golden "$sdir/$name.toml" "$sel" "$at" --dir "tests/golden/$name" --msaa 4,0 \
       --report "$O/report/$label/$name" || true
   done | awk -v label="$label" '
     /^(PASS|FAIL) / && /pixels over/ {
@@ -48,3 +51,16 @@ mkdir -p "$O/moved"
 sed 's/^position = \[0.0, 0.0, 0.0\]/position = [0.0, 0.0, 0.0058]/' scenes/dzhanibekov.toml >"$O/moved/dzhanibekov.toml"
 if cmp -s scenes/dzhanibekov.toml "$O/moved/dzhanibekov.toml"; then echo "move: did not apply" >&2; exit 1; fi
 check "dzhanibekov body moved 1 px up" "$T" "$O/moved"
+# Issue 11: an element of an explanatory view removed or moved (scene mutants).
+scene_mutant() { # label, sed script on scenes/dzhanibekov_explained.toml
+  d="$O/$(echo "$1" | tr -c 'A-Za-z0-9\n' _)"
+  mkdir -p "$d"
+  sed "$2" scenes/dzhanibekov_explained.toml >"$d/dzhanibekov_explained.toml"
+  if cmp -s scenes/dzhanibekov_explained.toml "$d/dzhanibekov_explained.toml"; then echo "$1: did not apply" >&2; exit 1; fi
+  check "$1" "$T" "$d"
+}
+scene_mutant "explained: plot view removed" '/^\[\[views\]\]$/{N;/kind = "plot"/{N;N;N;d}}'
+scene_mutant "explained: sphere view moved 1%" 's/^viewport = \[0.5, 0.0, 0.5, 0.6\]/viewport = [0.51, 0.0, 0.49, 0.6]/'
+scene_mutant "explained: captions' text edited" '/^text = "/s/ the / a /'
+scene_mutant "explained: time_scale 0.5 -> 0.55" 's/^time_scale = 0.5 /time_scale = 0.55 /'
+
