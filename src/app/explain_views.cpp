@@ -71,13 +71,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   const long kk = std::min(k, last);
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
   auto state = [&](long j) -> const BodyState& { return run.frames[static_cast<std::size_t>(j)][slot.body]; };
-  // A titled world view's text starts below the title, which the renderer
-  // draws top-left (size and pad: renderer.cpp's draw_text).
-  float title_px = 0;
-  if (!vc.title.empty()) {
-    const float size = std::clamp(static_cast<float>(slot.height_px) * 0.055f, 11.0f, 26.0f);
-    title_px = 0.6f * std::round(0.6f * size) + 1.25f * size;
-  }
+  // A titled world view's text starts below the title, which the renderer draws top-left.
+  const float title_px = vc.title.empty() ? 0.0f : viz::view_label_metrics(static_cast<float>(slot.height_px)).bottom_px;
   viz::View v;
   switch (vc.kind) {
     case scene::ViewKind::world: v = fb_.world_view(0, k, slot.camera, slot.width_px, slot.height_px, title_px); break;

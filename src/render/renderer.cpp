@@ -16,6 +16,7 @@
 #include "render/text_pass.hpp"
 #include "render/view_batches.hpp"
 #include "render/view_layout.hpp"
+#include "viz/captions.hpp"
 
 namespace tumble::render {
 namespace {
@@ -251,9 +252,8 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
                          const PixelRect& rect) {
   std::vector<TextVertex> quads;
   if (!label.empty()) {
-    const float size = std::clamp(rect.height * 0.055f, 11.0f, 26.0f);
-    const float pad = std::round(size * 0.6f);
-    font_.layout(label, {pad, pad * 0.6f}, size, {0.13f, 0.14f, 0.18f, 0.95f}, quads);
+    const viz::LabelMetrics lm = viz::view_label_metrics(static_cast<float>(rect.height));
+    font_.layout(label, {lm.pad_px, lm.top_px}, lm.size_px, {0.13f, 0.14f, 0.18f, 0.95f}, quads);
   }
   for (const viz::TextItem& t : items) {
     // Shrink a line that would run past the viewport's right edge (keeping the
