@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expectations.hpp"
+
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -22,15 +24,6 @@ std::vector<std::string> broken_files() {
   for (const auto& e : fs::directory_iterator(kBrokenDir))
     if (e.path().extension() == ".toml") out.push_back(e.path().filename().string());
   std::sort(out.begin(), out.end());
-  return out;
-}
-
-std::vector<std::string> expectations(const fs::path& p) {
-  std::ifstream in(p);
-  std::vector<std::string> out;
-  const std::string tag = "# expect: ";
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(tag, 0) == 0) out.push_back(line.substr(tag.size()));
   return out;
 }
 

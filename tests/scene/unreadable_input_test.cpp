@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expectations.hpp"
+
 #include "core/input_file.hpp"
 #include "scene/scene.hpp"
 
@@ -25,15 +27,6 @@ using tumble::scene::load_scene;
 namespace {
 
 const fs::path kDir = fs::path(TUMBLE_SOURCE_DIR) / "tests/scene/unreadable";
-
-std::vector<std::string> expectations(const fs::path& p) {
-  std::ifstream in(p);
-  std::vector<std::string> out;
-  const std::string tag = "# expect: ";
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(tag, 0) == 0) out.push_back(line.substr(tag.size()));
-  return out;
-}
 
 /// The message of the UnreadableFile that loading `p` throws ("" if none).
 std::string unreadable_message(const fs::path& p) {
