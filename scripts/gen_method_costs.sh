@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates src/core/method_costs.inc (the per-step costs of the method table,
 # used by method = "auto" as relative weights) from the Google microbenchmark:
-# medians of BM_Step over 5 repetitions. Run on an idle machine:
+# medians of BM_Step over 5 repetitions; and the README's speed table between
+# <!-- BEGIN/END microbench:speed-table --> from the same run plus BM_Propagate
+# (a whole 10 s run as tumble makes it). Run on an idle machine:
 #   scripts/gen_method_costs.sh [build/release/bench/tumble_microbench]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -9,16 +11,19 @@ bin=${1:-$root/build/release/bench/tumble_microbench}
 out=$root/src/core/method_costs.inc
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
-"$bin" --benchmark_filter='BM_Step/' --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+"$bin" --benchmark_filter='BM_Step/|BM_Propagate/' --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
   --benchmark_min_time=0.2 --benchmark_format=json >"$json"
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 cxx=$(${CXX:-c++} --version | head -1)
-python3 - "$json" "$cpu" "$cxx" >"$out.tmp" <<'PY'
-import json, sys
+python3 - "$json" "$cpu" "$cxx" "$root/README.md" >"$out.tmp" <<'PY'
+import json, os, re, sys
 runs = json.load(open(sys.argv[1]))["benchmarks"]
-cost = {}
+cost, run = {}, {}
 for r in runs:
     if r.get("aggregate_name") != "median":
+        continue
+    if r["name"].startswith("BM_Propagate"):
+        run[r["label"].split(" ")[0]] = (1e9 * r["ns_per_step"], r["error_rad"])  # the counter is s/step
         continue
     method, kind = r["label"].split(" ")
     ns = r["cpu_time"] * {"ns": 1, "us": 1e3, "ms": 1e6}[r["time_unit"]]
@@ -30,6 +35,23 @@ print(f"// Machine: {sys.argv[2]}; compiler: {sys.argv[3]}; -O2 -ffp-contract=of
 for method, c in cost.items():
     camel = "".join(p.capitalize() for p in method.replace("4", "4_").split("_") if p)
     print(f"inline constexpr Cost kCost{camel}{{{c['torque-free']:.0f}, {c['forced']:.0f}}};")
+rows = ["<!-- BEGIN microbench:speed-table -->",
+        f"ns per step, medians of 5 (`scripts/gen_method_costs.sh`; {sys.argv[2]}, {sys.argv[3]}, -O2 -ffp-contract=off).",
+        "`step()` converts from and to the seed's state every call; a run (`BM_Propagate`: the T-handle, 10 s at",
+        "dt = 1 ms, divergence guard included) steps as `tumble` does, `rk4` carrying Euler's coordinates.", "",
+        "| method | `step()`, torque-free | `step()`, forced | a run, ns/step | a run's error at 10 s, rad |",
+        "|---|---|---|---|---|"]
+for method, c in cost.items():
+    ns, err = run.get(method, (float("nan"), float("nan")))
+    ns = "closed form, evaluated once" if method == "exact" else f"{ns:.0f}"
+    rows.append(f"| {method} | {c['torque-free']:.0f} | {c['forced']:.0f} | {ns} | {err:.3g} |")
+rows.append("<!-- END microbench:speed-table -->")
+readme = open(sys.argv[4]).read()
+new = re.sub(r"<!-- BEGIN microbench:speed-table -->.*?<!-- END microbench:speed-table -->", "\n".join(rows), readme, flags=re.S)
+if new == readme and "microbench:speed-table" not in readme:
+    sys.exit("README.md has no <!-- BEGIN/END microbench:speed-table --> block")
+open(sys.argv[4] + ".tmp", "w").write(new)
+os.replace(sys.argv[4] + ".tmp", sys.argv[4])
 PY
 mv "$out.tmp" "$out"
 echo "wrote $out"
