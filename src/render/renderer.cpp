@@ -30,6 +30,7 @@ constexpr float kSkyAmount = 0.35f;
 constexpr float kFlatBackground = 0.35f;
 // Key light from the camera's upper left, so shapes read the same in every view.
 const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
+constexpr float kOpaqueSpecular = 0.28f;
 
 }  // namespace
 
@@ -53,6 +54,7 @@ class Renderer::Impl {
   void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
                  const PixelRect& rect);
   void set_viewport(const PixelRect& rect);
+  SphereShading sphere_shading() const { return {kLightDir, kOpaqueSpecular, target_.samples() > 0}; }
 
   GlContext& context_;
   const GlFunctions& gl_;
@@ -202,6 +204,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   gl_.DepthMask(GL_TRUE);
 
   surfaces_.draw(view.surfaces, cam.view, cam.proj, kLightDir);
+  spheres_.draw(view.particles, view.camera, cam.view, cam.proj, rect.height, sphere_shading());
   draw_meshes(batches, cam);
 
   gl_.DepthMask(GL_FALSE);  // trails and edges are translucent overlays
@@ -223,14 +226,12 @@ void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrice
   mesh_program_.set("u_light_dir", light_dir);
 
   // Opaque pass.
-  constexpr float kOpaqueSpecular = 0.28f;
   mesh_program_.set("u_specular", kOpaqueSpecular);
   cylinder_.upload(batches.arrow_shafts);
   cylinder_.draw();
   cone_.upload(batches.arrow_heads);
   cone_.draw();
-  spheres_.draw(batches.spheres, cam.view, cam.proj, light_dir, kOpaqueSpecular,
-                target_.samples() > 0);
+  spheres_.draw(batches.spheres, cam.view, cam.proj, sphere_shading());
 
   // Translucent boxes: no depth writes; inner (back) faces first, then the
   // outer faces, which is exact for one convex box and close enough for few.
