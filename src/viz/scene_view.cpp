@@ -73,8 +73,10 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     if (opt.box) {
       Color edge = b.color * 0.45f;
       edge.a = 1.0f;
-      view.boxes.push_back({to_glm(s.c + s.q * m.box.center), rotation_of(s.q), to_glm(m.box.half_extents),
-                            b.color, edge});
+      // Around the particle spheres when they are drawn, so its edges and faces are not buried in them.
+      const double grow = opt.particles && b.cloud ? particle_radius(m) : 0.0;
+      view.boxes.push_back({to_glm(s.c + s.q * m.box.center), rotation_of(s.q),
+                            to_glm(m.box.half_extents) + glm::dvec3(grow), b.color, edge});
     }
     if (opt.axes)
       for (int i = 0; i < 3; ++i)
