@@ -45,6 +45,7 @@ Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepC
   power_ = f.driving;
   power_abs_ = f.scale;
   if (info_->closed_form_if_free && m.forces.empty()) exact_.emplace(m.inertia, s0.q, s0.L);
+  if (info_->coords_step) grid_coords_ = to_body_coords(s0);
   if (info_->adaptive) {
     Rk45Options o;
     o.rtol = cfg_.rtol;
@@ -69,21 +70,61 @@ void Propagator::check(const BodyState& s, double t, double h) {
     bad = !std::isfinite(e) || e - e0_ - work_ > kBlowUp * (scale0_ + work_abs_) + 1e-300;
   }
   if (!bad) return;
+  diverged(s.all_finite(), t, h);
+}
+
+void Propagator::check_free(const BodyCoords& x, double t, double h) {
+  const bool finite = all_finite(x);
+  const double e = kinetic_energy(*m_, x);
+  if (finite && std::abs(x.q.squaredNorm() - 1.0) <= 1e-6 && std::isfinite(e) &&
+      !(e - e0_ > kBlowUp * scale0_ + 1e-300))
+    return;
+  diverged(finite, t, h);
+}
+
+void Propagator::diverged(bool finite, double t, double h) const {
   std::ostringstream msg;
   msg.precision(6);
   msg << "diverged at t=" << t << " s, step " << steps_ << ", body '" << m_->name << "', method " << info_->name
-      << (s.all_finite() ? " (energy grew beyond the work of the declared forces)" : "") << "; try dt <= " << h / 10
+      << (finite ? " (energy grew beyond the work of the declared forces)" : "") << "; try dt <= " << h / 10
       << " s or a geometric method (splitting, exact)";
   throw Diverged(msg.str(), t, steps_);
 }
 
 void Propagator::grid_step() {
   const double t = static_cast<double>(steps_) * cfg_.dt;
+  if (grid_coords_) {
+    BodyCoords& x = *grid_coords_;
+    const Eigen::Quaterniond prev = x.q;
+    x = info_->coords_step(*m_, x, t, cfg_.dt);
+    if (x.q.dot(prev) < 0) {  // q and -q step to negated q, same Π: no effect on the run
+      x.q.coeffs() = -x.q.coeffs();
+      x.lost.q = -x.lost.q;
+    }
+    ++steps_;
+    const double t1 = static_cast<double>(steps_) * cfg_.dt;
+    if (m_->forces.empty()) {
+      check_free(x, t1, cfg_.dt);
+    } else {
+      grid_ = state_of(x);
+      check(grid_, t1, cfg_.dt);
+    }
+    // The step leaves |q| alone (body_frame.hpp); renormalise once it drifts.
+    if (std::abs(x.q.squaredNorm() - 1.0) > 1e-12) {
+      x.q = unit_quaternion(x.q.x(), x.q.y(), x.q.z(), x.q.w());
+      x.lost.q.setZero();
+    }
+    return;
+  }
   const Eigen::Quaterniond prev = grid_.q;
   grid_ = step(cfg_.method, *m_, grid_, t, cfg_.dt);
   grid_.q = same_hemisphere(grid_.q, prev);
   ++steps_;
   check(grid_, static_cast<double>(steps_) * cfg_.dt, cfg_.dt);
+}
+
+void Propagator::sync_grid() {
+  if (grid_coords_) grid_ = state_of(*grid_coords_);
 }
 
 const BodyState& Propagator::advance_to(double t) {
@@ -119,12 +160,14 @@ const BodyState& Propagator::advance_to(double t) {
   const bool on_grid = std::abs(k - nearest) <= 1e-9 * std::max(1.0, k);
   const long last = on_grid ? static_cast<long>(nearest) : static_cast<long>(std::floor(k));
   while (steps_ < last) grid_step();
+  sync_grid();
   if (on_grid) {
     s_ = grid_;
   } else {
     // Dense output by a partial step from the grid state; the grid goes on from grid_.
     const double tn = static_cast<double>(steps_) * cfg_.dt;
-    s_ = step(cfg_.method, *m_, grid_, tn, t - tn);
+    s_ = grid_coords_ ? state_of(info_->coords_step(*m_, *grid_coords_, tn, t - tn))
+                      : step(cfg_.method, *m_, grid_, tn, t - tn);
     s_.q = same_hemisphere(s_.q, grid_.q);
     if (!s_.all_finite()) check(s_, t, t - tn);
   }
@@ -136,6 +179,7 @@ const BodyState& Propagator::advance_steps(long n) {
   if (exact_ || rk45_) return advance_to(t_ + static_cast<double>(n) * cfg_.dt);
   const long target = steps_ + n;
   while (steps_ < target) grid_step();
+  sync_grid();
   s_ = grid_;
   t_ = static_cast<double>(steps_) * cfg_.dt;
   return s_;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/body.hpp"
+#include "core/body_frame.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/rk45.hpp"
@@ -50,11 +51,21 @@ class Propagator {
  private:
   void grid_step();
   void check(const BodyState& s, double t, double h);
+  /// check() for a torque-free body carried in Euler's coordinates: the same
+  /// test (E is an invariant) without forming the seed's state every step.
+  void check_free(const BodyCoords& x, double t, double h);
+  [[noreturn]] void diverged(bool finite, double t, double h) const;
+  /// grid_ = the state of grid_coords_ (when carried), before grid_ is read.
+  void sync_grid();
 
   const RigidBodyModel* m_;
   const MethodInfo* info_;
   StepConfig cfg_;
   BodyState s0_, s_, grid_;   // s_: last sample; grid_: state at t = steps_·dt
+  // grid_ in Euler's coordinates, carried from step to step when the method
+  // integrates in them (MethodInfo::coords_step); grid_ is then formed from
+  // it only when read (sync_grid) or when the forces need the seed's state.
+  std::optional<BodyCoords> grid_coords_;
   double t_ = 0;
   long steps_ = 0;
   // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.
