@@ -39,13 +39,12 @@ std::optional<std::string> coarse_step_warning(const RigidBodyModel& m, const Bo
 }
 
 Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg)
-    : m_(&m), info_(&method_info(cfg.method)), cfg_(cfg), s0_(s0), s_(s0), grid_(s0), e0_(total_energy(m, s0)) {
+    : m_(&m), info_(&method_info(cfg.method)), cfg_(cfg), s0_(s0), s_(s0), grid_(cfg.method, m, s0), e0_(total_energy(m, s0)) {
   scale0_ = kinetic_energy(m, s0) + std::abs(potential_energy(m, s0));
   const EnergyFlow f = energy_flow(m, s0);
   power_ = f.driving;
   power_abs_ = f.scale;
   if (info_->closed_form_if_free && m.forces.empty()) exact_.emplace(m.inertia, s0.q, s0.L);
-  if (info_->coords_step) grid_coords_ = to_body_coords(s0);
   if (info_->adaptive) {
     Rk45Options o;
     o.rtol = cfg_.rtol;
@@ -92,39 +91,11 @@ void Propagator::diverged(bool finite, double t, double h) const {
 }
 
 void Propagator::grid_step() {
-  const double t = static_cast<double>(steps_) * cfg_.dt;
-  if (grid_coords_) {
-    BodyCoords& x = *grid_coords_;
-    const Eigen::Quaterniond prev = x.q;
-    x = info_->coords_step(*m_, x, t, cfg_.dt);
-    if (x.q.dot(prev) < 0) {  // q and -q step to negated q, same Π: no effect on the run
-      x.q.coeffs() = -x.q.coeffs();
-      x.lost.q = -x.lost.q;
-    }
-    ++steps_;
-    const double t1 = static_cast<double>(steps_) * cfg_.dt;
-    if (m_->forces.empty()) {
-      check_free(x, t1, cfg_.dt);
-    } else {
-      grid_ = state_of(x);
-      check(grid_, t1, cfg_.dt);
-    }
-    // The step leaves |q| alone (body_frame.hpp); renormalise once it drifts.
-    if (std::abs(x.q.squaredNorm() - 1.0) > 1e-12) {
-      x.q = unit_quaternion(x.q.x(), x.q.y(), x.q.z(), x.q.w());
-      x.lost.q.setZero();
-    }
-    return;
-  }
-  const Eigen::Quaterniond prev = grid_.q;
-  grid_ = step(cfg_.method, *m_, grid_, t, cfg_.dt);
-  grid_.q = same_hemisphere(grid_.q, prev);
+  grid_.step(static_cast<double>(steps_) * cfg_.dt, cfg_.dt);
   ++steps_;
-  check(grid_, static_cast<double>(steps_) * cfg_.dt, cfg_.dt);
-}
-
-void Propagator::sync_grid() {
-  if (grid_coords_) grid_ = state_of(*grid_coords_);
+  const double t = static_cast<double>(steps_) * cfg_.dt;
+  if (const BodyCoords* x = grid_.coords(); x && m_->forces.empty()) return check_free(*x, t, cfg_.dt);
+  check(grid_.state(), t, cfg_.dt);
 }
 
 const BodyState& Propagator::advance_to(double t) {
@@ -160,15 +131,12 @@ const BodyState& Propagator::advance_to(double t) {
   const bool on_grid = std::abs(k - nearest) <= 1e-9 * std::max(1.0, k);
   const long last = on_grid ? static_cast<long>(nearest) : static_cast<long>(std::floor(k));
   while (steps_ < last) grid_step();
-  sync_grid();
   if (on_grid) {
-    s_ = grid_;
+    s_ = grid_.state();
   } else {
     // Dense output by a partial step from the grid state; the grid goes on from grid_.
     const double tn = static_cast<double>(steps_) * cfg_.dt;
-    s_ = grid_coords_ ? state_of(info_->coords_step(*m_, *grid_coords_, tn, t - tn))
-                      : step(cfg_.method, *m_, grid_, tn, t - tn);
-    s_.q = same_hemisphere(s_.q, grid_.q);
+    s_ = grid_.peek(tn, t - tn);
     if (!s_.all_finite()) check(s_, t, t - tn);
   }
   t_ = t;
@@ -179,8 +147,7 @@ const BodyState& Propagator::advance_steps(long n) {
   if (exact_ || rk45_) return advance_to(t_ + static_cast<double>(n) * cfg_.dt);
   const long target = steps_ + n;
   while (steps_ < target) grid_step();
-  sync_grid();
-  s_ = grid_;
+  s_ = grid_.state();
   t_ = static_cast<double>(steps_) * cfg_.dt;
   return s_;
 }

@@ -8,6 +8,7 @@
 
 #include "core/body.hpp"
 #include "core/body_frame.hpp"
+#include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/rk45.hpp"
@@ -55,17 +56,12 @@ class Propagator {
   /// test (E is an invariant) without forming the seed's state every step.
   void check_free(const BodyCoords& x, double t, double h);
   [[noreturn]] void diverged(bool finite, double t, double h) const;
-  /// grid_ = the state of grid_coords_ (when carried), before grid_ is read.
-  void sync_grid();
 
   const RigidBodyModel* m_;
   const MethodInfo* info_;
   StepConfig cfg_;
-  BodyState s0_, s_, grid_;   // s_: last sample; grid_: state at t = steps_·dt
-  // grid_ in Euler's coordinates, carried from step to step when the method
-  // integrates in them (MethodInfo::coords_step); grid_ is then formed from
-  // it only when read (sync_grid) or when the forces need the seed's state.
-  std::optional<BodyCoords> grid_coords_;
+  BodyState s0_, s_;   // s_: last sample
+  FixedStepper grid_;  // the state at t = steps_·dt (fixed-step methods)
   double t_ = 0;
   long steps_ = 0;
   // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.
