@@ -84,7 +84,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("bench", "Work-precision, convergence, stability and drift of every method (+ peers)");
   cmd->add_flag("--quick", o->studies.quick, "Small sweeps and short timing batches (under a minute)");
   cmd->add_option("-o,--out", o->studies.out_dir, "Output folder for CSV, PNG and summary.md")->capture_default_str();
-  auto* render = cmd->add_flag("--render", o->render, "Measure frames/s of the demo render (1280x720, 4x MSAA) instead");
+  auto* render = cmd->add_flag("--render", o->render, "Measure frames/s of the demo render and of a 198k-particle solid (1280x720, 4x MSAA) instead");
   cmd->add_option("--frames", o->frames, "With --render: how many frames")->capture_default_str();
   cmd->add_option("--scene", o->scene,
                   "Work-precision study (every method x a dt sweep, rk45 x rtol, peers when torque-free) on this "
@@ -107,9 +107,14 @@ void add_bench_command(CLI::App& app, Action& action) {
         return o->scene.empty() ? bench::run(o->studies, std::cout) : run_scene_study(*o);
       }
 #ifdef TUMBLE_HAVE_RENDER
-      const std::filesystem::path scene =
-          o->scene.empty() ? render::find_resource_dir() / "scenes" / "dzhanibekov.toml" : std::filesystem::path(o->scene);
-      run_render_bench(scene, o->frames, o->studies.out_dir / "render", std::cout);
+      if (!o->scene.empty()) {
+        run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout);
+        return kOk;
+      }
+      // The demo, then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
+      const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
+      run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout);
+      run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout);
       return kOk;
 #else
       throw InputError("this build has no renderer (TUMBLE_BUILD_RENDER=OFF)");
