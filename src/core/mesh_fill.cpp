@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+
+#include "core/winding_tree.hpp"
 
 namespace tumble {
 
@@ -100,11 +103,7 @@ std::vector<Crossing> row_crossings(const TriangleMesh& mesh, const Eigen::Vecto
 double winding_number(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
   double sum = 0;
   for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3d a = vertex(mesh, t[0]) - p, b = vertex(mesh, t[1]) - p, c = vertex(mesh, t[2]) - p;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    const double num = a.dot(b.cross(c));
-    const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-    sum += 2 * std::atan2(num, den);
+    sum += triangle_solid_angle(vertex(mesh, t[0]), vertex(mesh, t[1]), vertex(mesh, t[2]), p);
   }
   return sum / (4 * std::numbers::pi);
 }
@@ -123,9 +122,11 @@ VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const Latti
   const long nx = long(n.x()), ny = long(n.y()), nz = long(n.z());
   const std::vector<Crossing> xs = row_crossings(mesh, lo, l, ny, nz);
   std::vector<Eigen::Vector3d> inside;
+  std::optional<WindingTree> tree;  // built only for a mesh with holes
+  if (!watertight) tree.emplace(mesh);
   auto gwn = [&](long i, long j, long k) {
     ++out.winding_evaluations;
-    return winding_number(mesh, point_at(lo, l, double(i), double(j), double(k)));
+    return tree->winding_number(point_at(lo, l, double(i), double(j), double(k)));
   };
   std::size_t c = 0;
   for (long k = 0; k < nz; ++k)
