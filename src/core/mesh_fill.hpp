@@ -41,9 +41,10 @@ struct VolumeFill {
 /// Lattice points inside the mesh, each of mass `mass` / count.
 /// Watertight meshes: per lattice row, signed ray crossings (a top-left rule on
 /// shared edges makes the count exact; it equals the winding number there).
-/// Otherwise the winding number decides (by a `WindingTree`, to within ~0.04), evaluated at the ends and middle of
-/// each stretch of a row between crossings and at every point of a stretch
-/// where those disagree or are not near an integer (holes make it fractional).
+/// Otherwise the winding number decides (by a `WindingTree`, to within ~0.04),
+/// evaluated at the ends and middle of each stretch of a row between crossings
+/// and at every point of a stretch where those disagree or are not near an
+/// integer (holes make it fractional).
 VolumeFill fill_volume(const TriangleMesh& mesh, bool watertight, const LatticeSpec& lattice, double mass);
 
 /// Number of lattice points per axis `fill_volume` visits (for the particle budget).
