@@ -67,7 +67,7 @@ void OffscreenTarget::bind_for_drawing() const {
   gl_.Viewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::read_rgb(io::Image& img) {
+const std::vector<std::uint8_t>& OffscreenTarget::read_rgba() {
   if (samples_ > 0) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.id());
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.id());
@@ -86,6 +86,12 @@ void OffscreenTarget::read_rgb(io::Image& img) {
   if (const GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
     throw std::runtime_error("glReadPixels failed, GL error " + std::to_string(err));
   }
+  return rgba_;
+}
+
+void OffscreenTarget::read_rgb(io::Image& img) {
+  read_rgba();
+  const std::size_t w = static_cast<std::size_t>(width_);
 
   // GL's origin is the bottom-left corner; images are stored top-down.
   img.width = width_;

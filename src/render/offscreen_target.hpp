@@ -21,6 +21,9 @@ class OffscreenTarget {
   /// Resolves MSAA (if any) and reads back a top-down RGB image into `out`,
   /// reusing its storage (fresh multi-MB buffers cost page faults per frame).
   void read_rgb(io::Image& out);
+  /// Resolves MSAA (if any) and reads back RGBA8, bottom row first (GL's
+  /// order), into a buffer reused across frames (valid until the next read).
+  const std::vector<std::uint8_t>& read_rgba();
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "render/font_atlas.hpp"
+#include "render/fxaa.hpp"
 #include "render/gl_functions.hpp"
 #include "render/instanced_mesh.hpp"
 #include "render/line_pass.hpp"
@@ -36,7 +38,7 @@ const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
 // Everything GL lives here, so renderer.hpp stays free of GL headers.
 class Renderer::Impl {
  public:
-  Impl(GlContext& context, int width, int height, int msaa,
+  Impl(GlContext& context, int width, int height, int msaa, bool fxaa,
        const std::filesystem::path& resource_dir);
   ~Impl();
   Impl(const Impl&) = delete;
@@ -44,6 +46,7 @@ class Renderer::Impl {
 
   void render(const viz::DrawList& frame, io::Image& out);
   const OffscreenTarget& target() const { return target_; }
+  bool fxaa() const { return fxaa_.has_value(); }
 
  private:
   void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
@@ -64,12 +67,13 @@ class Renderer::Impl {
   SurfacePass surfaces_;
   LinePass lines_;
   TextPass text_;
+  std::optional<Fxaa> fxaa_;  // set: FXAA on the read-back frame
   GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
 };
 
-Renderer::Renderer(GlContext& context, int width, int height, int msaa,
+Renderer::Renderer(GlContext& context, int width, int height, int msaa, bool fxaa,
                    const std::filesystem::path& resource_dir)
-    : impl_(std::make_unique<Impl>(context, width, height, msaa, resource_dir)) {}
+    : impl_(std::make_unique<Impl>(context, width, height, msaa, fxaa, resource_dir)) {}
 
 Renderer::~Renderer() = default;
 
@@ -84,8 +88,9 @@ void Renderer::render(const viz::DrawList& frame, io::Image& out) { impl_->rende
 int Renderer::width() const { return impl_->target().width(); }
 int Renderer::height() const { return impl_->target().height(); }
 int Renderer::samples() const { return impl_->target().samples(); }
+bool Renderer::fxaa() const { return impl_->fxaa(); }
 
-Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
+Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa, bool fxaa,
                      const std::filesystem::path& resource_dir)
     : context_((context.make_current(), context)),  // current before any GL call
       gl_(context.gl()),
@@ -100,7 +105,9 @@ Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
       surfaces_(gl_, resource_dir / "shaders"),
       lines_(gl_, resource_dir / "shaders"),
       text_(gl_, resource_dir / "shaders", font_),
-      empty_vao_(make_vertex_array(gl_)) {}
+      empty_vao_(make_vertex_array(gl_)) {
+  if (fxaa) fxaa_.emplace();
+}
 
 // GL objects are freed by their members; they need our context current.
 Renderer::Impl::~Impl() {
@@ -120,6 +127,10 @@ void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
+  // Without MSAA's samples, lines get smooth coverage (Mesa's anti-aliased
+  // line stage); set every frame, another renderer may share the context.
+  if (fxaa_) gl_.Enable(GL_LINE_SMOOTH);
+  else gl_.Disable(GL_LINE_SMOOTH);
   // One full clear (llvmpipe's fast path) gives every view its flat lower
   // background and depth; views then only paint their sky gradient.
   const glm::vec3 background(frame.background);
@@ -144,7 +155,8 @@ void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   draw_separators(rects, background * 0.82f);
   draw_text(frame.texts, {}, full);
   gl_.Disable(GL_SCISSOR_TEST);
-  target_.read_rgb(out);
+  if (fxaa_) fxaa_->apply(target_.read_rgba().data(), target_.width(), target_.height(), out);
+  else target_.read_rgb(out);
 }
 
 void Renderer::Impl::draw_background(const glm::vec3& background) {
@@ -266,7 +278,11 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
   }
   if (quads.empty()) return;
   gl_.Disable(GL_DEPTH_TEST);
+  // For FXAA, text lowers the frame's alpha (everything else leaves it at 1):
+  // FXAA leaves those pixels as the glyph atlas anti-aliased them.
+  if (fxaa_) gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
   text_.draw(quads, {float(rect.width), float(rect.height)});
+  if (fxaa_) gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 }
 
 }  // namespace tumble::render

@@ -1,4 +1,4 @@
-// Draws a viz::DrawList into an offscreen MSAA framebuffer and returns the
+// Draws a viz::DrawList into an offscreen framebuffer (MSAA or FXAA) and returns the
 // pixels. Meshes, shaders and the font atlas are created once per Renderer.
 // No GL headers leak from here: the GL state lives in Renderer::Impl.
 #pragma once
@@ -16,10 +16,12 @@ namespace tumble::render {
 class Renderer {
  public:
   /// `context` must outlive the renderer. `msaa` is 0 (off), 2 or 4 (clamped
-  /// to GL_MAX_SAMPLES). Shaders come from `resource_dir`/shaders, the font
-  /// from `resource_dir`/fonts or the system DejaVu. Throws std::runtime_error
-  /// on missing resources, shader errors or an incomplete framebuffer.
-  Renderer(GlContext& context, int width, int height, int msaa = 4,
+  /// to GL_MAX_SAMPLES); `fxaa` adds FXAA on the read-back frame and smooth
+  /// lines (text is left as drawn, already anti-aliased). Shaders come from
+  /// `resource_dir`/shaders, the font from `resource_dir`/fonts or the system
+  /// DejaVu. Throws std::runtime_error on missing resources, shader errors or
+  /// an incomplete framebuffer.
+  Renderer(GlContext& context, int width, int height, int msaa = 4, bool fxaa = false,
            const std::filesystem::path& resource_dir = find_resource_dir());
   ~Renderer();
   Renderer(const Renderer&) = delete;
@@ -35,6 +37,7 @@ class Renderer {
   int width() const;
   int height() const;
   int samples() const;  ///< MSAA samples after clamping (0 = off)
+  bool fxaa() const;
 
  private:
   class Impl;
