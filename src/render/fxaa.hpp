@@ -12,6 +12,9 @@
 
 namespace tumble::render {
 
+/// One row of RGBA8 pixels to RGB8 (alpha dropped).
+void rgba_row_to_rgb(const std::uint8_t* rgba, int width, std::uint8_t* rgb);
+
 class Fxaa {
  public:
   /// `rgba`: width × height RGBA8, bottom row first (glReadPixels' order).
@@ -22,7 +25,7 @@ class Fxaa {
   void apply(const std::uint8_t* rgba, int width, int height, io::Image& out);
 
  private:
-  std::vector<float> luma_;  // per pixel, 0..1, reused across frames
+  std::vector<std::uint8_t> luma_;  // per pixel, 0..255, reused across frames
 };
 
 }  // namespace tumble::render
