@@ -223,10 +223,11 @@ int run_render(const RenderOptions& o) {
       if (resume && fs::exists(io::frame_path(dir, k), ec)) {
         ++skipped;  // written whole by an earlier run (rename is atomic)
       } else {
-        // Reuse a written frame's buffer: a fresh 2.7 MB image per frame costs page faults.
-        io::Image img = encoder.recycle();
-        renderer.render(builder.build(k), img);
-        encoder.submit(io::frame_path(dir, k), std::move(img));
+        // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
+        // page faults. The encoder's threads finish it (FXAA) while we draw on.
+        render::RawFrame raw = encoder.recycle_raw();
+        renderer.render(builder.build(k), raw);
+        encoder.submit(io::frame_path(dir, k), std::move(raw));
         ++drawn;
       }
       progress.update(k - first + 1);

@@ -131,7 +131,7 @@ void rgba_row_to_rgb(const std::uint8_t* src, int width, std::uint8_t* dst) {
   for (; x < width; ++x, src += 4, dst += 3) dst[0] = src[0], dst[1] = src[1], dst[2] = src[2];
 }
 
-void Fxaa::apply(const std::uint8_t* rgba, int width, int height, io::Image& out) {
+void Fxaa::apply(const std::uint8_t* rgba, int width, int height, io::Image& out, int threads) {
   const std::size_t n = static_cast<std::size_t>(width) * height;
   luma_.resize(n);
   out.width = width;
@@ -186,6 +186,11 @@ void Fxaa::apply(const std::uint8_t* rgba, int width, int height, io::Image& out
   };
   // Two halves on two threads (the GL threads are idle now); each pixel
   // depends only on the input, so the bytes do not depend on the split.
+  if (threads < 2) {
+    luma_rows(0, height);
+    pixel_rows(0, height);
+    return;
+  }
   const int mid = height / 2;
   {
     std::jthread other([&] { luma_rows(mid, height); });
@@ -193,6 +198,20 @@ void Fxaa::apply(const std::uint8_t* rgba, int width, int height, io::Image& out
   }
   std::jthread other([&] { pixel_rows(mid, height); });
   pixel_rows(0, mid);
+}
+
+void finish_frame(const RawFrame& raw, io::Image& out, Fxaa& fxaa, int threads) {
+  if (raw.fxaa) {
+    fxaa.apply(raw.rgba.data(), raw.width, raw.height, out, threads);
+    return;
+  }
+  const std::size_t w = static_cast<std::size_t>(raw.width);
+  out.width = raw.width;
+  out.height = raw.height;
+  out.rgb.resize(w * 3 * raw.height);
+  // GL's origin is the bottom-left corner; images are stored top-down.
+  for (int y = 0; y < raw.height; ++y)
+    rgba_row_to_rgb(raw.rgba.data() + w * 4 * (raw.height - 1 - y), raw.width, out.rgb.data() + w * 3 * y);
 }
 
 }  // namespace tumble::render

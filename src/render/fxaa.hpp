@@ -22,10 +22,22 @@ class Fxaa {
   /// storage. A pixel whose 3x3 neighbourhood holds an alpha below 255 is
   /// copied unchanged: the renderer marks text that way (its glyphs are
   /// anti-aliased already, and FXAA would blur their stems).
-  void apply(const std::uint8_t* rgba, int width, int height, io::Image& out);
+  /// `threads`: 1, or 2 to split the rows (same bytes either way).
+  void apply(const std::uint8_t* rgba, int width, int height, io::Image& out, int threads = 2);
 
  private:
   std::vector<std::uint8_t> luma_;  // per pixel, 0..255, reused across frames
 };
+
+/// A frame as read back, before its post-processing: what the renderer hands
+/// to the frame encoder's threads, so FXAA runs there while the next frame draws.
+struct RawFrame {
+  std::vector<std::uint8_t> rgba;  ///< width × height RGBA8, bottom row first
+  int width = 0, height = 0;
+  bool fxaa = false;               ///< anti-alias with FXAA when finishing
+};
+
+/// `raw` as a top-down RGB image: FXAA'd (using `fxaa`'s scratch) or converted.
+void finish_frame(const RawFrame& raw, io::Image& out, Fxaa& fxaa, int threads = 2);
 
 }  // namespace tumble::render

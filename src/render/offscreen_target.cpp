@@ -1,7 +1,5 @@
 #include "render/offscreen_target.hpp"
 
-#include "render/fxaa.hpp"
-
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -69,7 +67,7 @@ void OffscreenTarget::bind_for_drawing() const {
   gl_.Viewport(0, 0, width_, height_);
 }
 
-const std::vector<std::uint8_t>& OffscreenTarget::read_rgba() {
+void OffscreenTarget::read_rgba(std::vector<std::uint8_t>& rgba) {
   if (samples_ > 0) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.id());
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.id());
@@ -83,24 +81,11 @@ const std::vector<std::uint8_t>& OffscreenTarget::read_rgba() {
   // RGBA matches the renderbuffer, so Mesa copies rows straight out; asking
   // for GL_RGB takes its generic per-pixel conversion path (~10x slower).
   const std::size_t w = static_cast<std::size_t>(width_);
-  rgba_.resize(w * 4 * height_);
-  gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba_.data());
+  rgba.resize(w * 4 * height_);
+  gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (const GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
     throw std::runtime_error("glReadPixels failed, GL error " + std::to_string(err));
   }
-  return rgba_;
-}
-
-void OffscreenTarget::read_rgb(io::Image& img) {
-  read_rgba();
-  const std::size_t w = static_cast<std::size_t>(width_);
-
-  // GL's origin is the bottom-left corner; images are stored top-down.
-  img.width = width_;
-  img.height = height_;
-  img.rgb.resize(w * 3 * height_);
-  for (int y = 0; y < height_; ++y)
-    rgba_row_to_rgb(rgba_.data() + w * 4 * (height_ - 1 - y), width_, img.rgb.data() + w * 3 * y);
 }
 
 }  // namespace tumble::render

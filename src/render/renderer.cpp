@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,9 +43,13 @@ class Renderer::Impl {
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
-  void render(const viz::DrawList& frame, io::Image& out);
+  void render(const viz::DrawList& frame, RawFrame& out);
+  void render(const viz::DrawList& frame, io::Image& out) {
+    render(frame, raw_);
+    finish_frame(raw_, out, post_);
+  }
   const OffscreenTarget& target() const { return target_; }
-  bool fxaa() const { return fxaa_.has_value(); }
+  bool fxaa() const { return fxaa_; }
 
  private:
   void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
@@ -67,7 +70,9 @@ class Renderer::Impl {
   SurfacePass surfaces_;
   LinePass lines_;
   TextPass text_;
-  std::optional<Fxaa> fxaa_;  // set: FXAA on the read-back frame
+  bool fxaa_;    // FXAA on the read-back frame, smooth lines, text marked in alpha
+  Fxaa post_;    // its scratch, for render(..., Image&)
+  RawFrame raw_;
   GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
 };
 
@@ -84,6 +89,7 @@ io::Image Renderer::render(const viz::DrawList& frame) {
 }
 
 void Renderer::render(const viz::DrawList& frame, io::Image& out) { impl_->render(frame, out); }
+void Renderer::render(const viz::DrawList& frame, RawFrame& out) { impl_->render(frame, out); }
 
 int Renderer::width() const { return impl_->target().width(); }
 int Renderer::height() const { return impl_->target().height(); }
@@ -105,9 +111,8 @@ Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa, bool f
       surfaces_(gl_, resource_dir / "shaders"),
       lines_(gl_, resource_dir / "shaders"),
       text_(gl_, resource_dir / "shaders", font_),
-      empty_vao_(make_vertex_array(gl_)) {
-  if (fxaa) fxaa_.emplace();
-}
+      fxaa_(fxaa),
+      empty_vao_(make_vertex_array(gl_)) {}
 
 // GL objects are freed by their members; they need our context current.
 Renderer::Impl::~Impl() {
@@ -123,7 +128,7 @@ void Renderer::Impl::set_viewport(const PixelRect& rect) {
   gl_.Scissor(rect.x, gl_y, rect.width, rect.height);
 }
 
-void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
+void Renderer::Impl::render(const viz::DrawList& frame, RawFrame& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
@@ -155,8 +160,10 @@ void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   draw_separators(rects, background * 0.82f);
   draw_text(frame.texts, {}, full);
   gl_.Disable(GL_SCISSOR_TEST);
-  if (fxaa_) fxaa_->apply(target_.read_rgba().data(), target_.width(), target_.height(), out);
-  else target_.read_rgb(out);
+  target_.read_rgba(out.rgba);
+  out.width = target_.width();
+  out.height = target_.height();
+  out.fxaa = fxaa_;
 }
 
 void Renderer::Impl::draw_background(const glm::vec3& background) {

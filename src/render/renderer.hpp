@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "render/fxaa.hpp"
 #include "render/gl_context.hpp"
 #include "io/image.hpp"
 #include "render/resource_dir.hpp"
@@ -33,6 +34,10 @@ class Renderer {
   io::Image render(const viz::DrawList& frame);
   /// Same, into `out`, reusing its pixel storage (cheaper in a frame loop).
   void render(const viz::DrawList& frame, io::Image& out);
+  /// Same, stopping at the read-back: finish_frame(out, ...) makes the image
+  /// (with FXAA when it is on), e.g. on a FrameEncoder thread while the next
+  /// frame draws. The bytes equal render(frame, image)'s.
+  void render(const viz::DrawList& frame, RawFrame& out);
 
   int width() const;
   int height() const;
