@@ -90,16 +90,18 @@ std::string markdown(const RenderBenchResult& r, const std::string& scene, const
   char buf[2048];
   std::snprintf(
       buf, sizeof buf,
-      "Scene `%s`, %ld frames, 1280x720, %s; \"high\" quality is FXAA (one sample a pixel).\n\n"
-      "| measure | value |\n|---|---|\n| end to end, high quality (FXAA) | %.1f frames/s |\n"
+      "Scene `%s`, %ld frames, 1280x720, %s; \"high\" quality is FXAA (one sample a pixel). End to "
+      "end: best of two runs each, FXAA and MSAA interleaved; CPU is user + system time of all threads.\n\n"
+      "| measure | value |\n|---|---|\n| end to end, high quality (FXAA) | %.1f frames/s, CPU %.1f ms/frame |\n"
       "| encode-only limit (2 threads) | %.1f frames/s |\n| end-to-end / encode-only | %.2f |\n"
       "| build + draw + read back, mean (FXAA runs on the encoder threads) | %.1f ms/frame |\n"
-      "| end to end, 4x MSAA | %.1f frames/s |\n| build + draw + read back, mean (4x MSAA) | %.1f ms/frame |\n"
+      "| end to end, 4x MSAA | %.1f frames/s, CPU %.1f ms/frame |\n"
+      "| build + draw + read back, mean (4x MSAA) | %.1f ms/frame |\n"
       "| H.264 video via PNG files (render, then ffmpeg reads them) | %.1f frames/s, CPU %.1f ms/frame |\n"
       "| H.264 video, raw frames piped to ffmpeg (--frames-out none) | %.1f frames/s, CPU %.1f ms/frame |\n",
-      scene.c_str(), r.frames, gl.c_str(), r.end_to_end_fps, r.encode_only_fps, r.end_to_end_fps / r.encode_only_fps,
-      r.render_ms, r.msaa_end_to_end_fps, r.msaa_render_ms, r.png_video_fps, r.png_video_cpu_ms, r.stream_video_fps,
-      r.stream_video_cpu_ms);
+      scene.c_str(), r.frames, gl.c_str(), r.end_to_end_fps, r.cpu_ms, r.encode_only_fps,
+      r.end_to_end_fps / r.encode_only_fps, r.render_ms, r.msaa_end_to_end_fps, r.msaa_cpu_ms, r.msaa_render_ms,
+      r.png_video_fps, r.png_video_cpu_ms, r.stream_video_fps, r.stream_video_cpu_ms);
   std::string md = buf;
   if (r.quality.empty()) return md;
   md += "\nAnti-aliasing against 4x MSAA (the reference), 1280x720, mean over frames at 1/4, 1/2 and 3/4 of each "
@@ -150,12 +152,20 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
     }
     r.encode_only_fps = frames / seconds_since(t1);
   }
-  const EndToEnd m = end_to_end(s, frames, msaa, out_dir);
+  // Interleaved, best of two each: a load that comes and goes (a shared
+  // machine) then favours neither. The last FXAA run's frames feed the PNG video.
+  EndToEnd m, e;
+  for (int rep = 0; rep < 2; ++rep) {
+    const EndToEnd mi = end_to_end(s, frames, msaa, out_dir), ei = end_to_end(s, frames, high, out_dir);
+    if (rep == 0 || mi.seconds < m.seconds) m = mi;
+    if (rep == 0 || ei.seconds < e.seconds) e = ei;
+  }
   r.msaa_end_to_end_fps = frames / m.seconds;
   r.msaa_render_ms = 1000 * m.render_seconds / frames;
-  const EndToEnd e = end_to_end(s, frames, high, out_dir);  // last: its frames feed the PNG video
+  r.msaa_cpu_ms = 1000 * m.cpu_seconds / frames;
   r.end_to_end_fps = frames / e.seconds;
   r.render_ms = 1000 * e.render_seconds / frames;
+  r.cpu_ms = 1000 * e.cpu_seconds / frames;
 
   // The video, both ways, from the same frames: PNG files read back by ffmpeg
   // (the end-to-end run above, then the encode), and raw frames piped to it.

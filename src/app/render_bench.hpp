@@ -25,7 +25,8 @@ struct RenderBenchResult {
   double end_to_end_fps = 0;  ///< "high" (FXAA): simulate + draw + read back + encode + write, frames/s
   double encode_only_fps = 0; ///< encode + write of the same frames, frames/s
   double render_ms = 0;       ///< mean build + draw + read-back time per frame ("high"), ms
-  double msaa_end_to_end_fps = 0, msaa_render_ms = 0;  ///< the same with 4x MSAA
+  double cpu_ms = 0;          ///< CPU time (all threads, user + system) per frame end to end ("high"), ms
+  double msaa_end_to_end_fps = 0, msaa_render_ms = 0, msaa_cpu_ms = 0;  ///< the same with 4x MSAA
   /// Frames to an H.264 video, frames/s (0 without ffmpeg): through PNG files
   /// (end to end, then ffmpeg reads them), and piped raw (--frames-out none).
   double png_video_fps = 0, stream_video_fps = 0;
