@@ -5,23 +5,23 @@
 #include <boost/version.hpp>
 #include <cmath>
 
+#include "core/fixed_stepper.hpp"
+
 namespace tumble::bench {
 
 namespace {
 
 class MethodStepper final : public Stepper {
  public:
-  MethodStepper(Method method, const RigidBodyModel& m, const BodyState& s0) : method_(method), m_(m), s_(s0) {}
+  MethodStepper(Method method, const RigidBodyModel& m, const BodyState& s0) : s_(method, m, s0) {}
   void step(double h) override {
-    s_ = tumble::step(method_, m_, s_, t_, h);
+    s_.step(t_, h);
     t_ += h;
   }
-  BodyState state() const override { return s_; }
+  BodyState state() const override { return s_.state(); }
 
  private:
-  Method method_;
-  const RigidBodyModel& m_;
-  BodyState s_;
+  FixedStepper s_;  // as a run steps: rk4 carries Euler's coordinates
   double t_ = 0;
 };
 

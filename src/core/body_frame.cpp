@@ -16,6 +16,23 @@ BodyState from_body_coords(const BodyCoords& x) {
   return s;
 }
 
+BodyState state_of(const BodyCoords& x) {
+  BodyState s;
+  s.c = x.c;
+  s.q = unit_quaternion(x.q.x(), x.q.y(), x.q.z(), x.q.w());
+  s.P = x.P;
+  s.L = s.q * x.pi;
+  return s;
+}
+
+double kinetic_energy(const RigidBodyModel& m, const BodyCoords& x) {
+  return 0.5 * x.P.squaredNorm() / m.mass + 0.5 * x.pi.dot(m.inv_inertia.cwiseProduct(x.pi));
+}
+
+bool all_finite(const BodyCoords& x) {
+  return x.c.allFinite() && x.q.coeffs().allFinite() && x.P.allFinite() && x.pi.allFinite();
+}
+
 BodyRate body_rate(const RigidBodyModel& m, const BodyCoords& x, double t) {
   BodyRate d;
   const Eigen::Vector3d w = m.inv_inertia.cwiseProduct(x.pi);  // ω_body, rad/s
@@ -44,14 +61,33 @@ BodyCoords add_scaled(const BodyCoords& x, double h, const BodyRate& d) {
   return o;
 }
 
-BodyState rk4_body_reference(const RigidBodyModel& m, const BodyState& s, double t, double h) {
+BodyCoords rk4_coords_reference(const RigidBodyModel& m, const BodyCoords& x, double t, double h) {
   const double ha = h * 0.5, b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
-  const BodyCoords x = to_body_coords(s);
   const BodyRate k1 = body_rate(m, x, t);
   const BodyRate k2 = body_rate(m, add_scaled(x, ha, k1), t + 0.5 * h);
   const BodyRate k3 = body_rate(m, add_scaled(x, ha, k2), t + 0.5 * h);
   const BodyRate k4 = body_rate(m, add_scaled(x, h, k3), t + h);
-  return from_body_coords(add_scaled(add_scaled(add_scaled(add_scaled(x, b1, k1), b2, k2), b2, k3), b1, k4));
+  // d = Δ − lost, x' = x + d, lost' = (x' − x) − d, coefficient by coefficient.
+  BodyCoords y;
+  const auto sum = [](const auto& x0, const auto& delta, const auto& lost, auto& x1, auto& lost1) {
+    const auto d = (delta - lost).eval();
+    x1 = x0 + d;
+    lost1 = (x1 - x0) - d;
+  };
+  sum(x.c, ((b1 * k1.dc + b2 * k2.dc) + b2 * k3.dc) + b1 * k4.dc, x.lost.c, y.c, y.lost.c);
+  sum(x.q.coeffs(), ((b1 * k1.dq + b2 * k2.dq) + b2 * k3.dq) + b1 * k4.dq, x.lost.q, y.q.coeffs(), y.lost.q);
+  sum(x.P, ((b1 * k1.dP + b2 * k2.dP) + b2 * k3.dP) + b1 * k4.dP, x.lost.P, y.P, y.lost.P);
+  sum(x.pi, ((b1 * k1.dpi + b2 * k2.dpi) + b2 * k3.dpi) + b1 * k4.dpi, x.lost.pi, y.pi, y.lost.pi);
+  return y;
+}
+
+BodyState rk4_body_reference(const RigidBodyModel& m, const BodyState& s, double t, double h) {
+  return state_of(rk4_coords_reference(m, to_body_coords(s), t, h));
+}
+
+BodyCoords rk4_coords_step(const RigidBodyModel& m, const BodyCoords& x, double t, double h) {
+  if (m.forces.empty()) return tuned::rk4_coords_free(m, x, h);
+  return rk4_coords_reference(m, x, t, h);
 }
 
 BodyState rk4_body_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {

@@ -1,12 +1,15 @@
 // Tuned kernels of body_frame.hpp, kept apart from the plain forms.
 //
-// Bit-exactness contract: for a torque-free body, tuned::rk4_body_free(m, s, h)
-// returns the same bits as rk4_body_reference(m, s, t, h) for every finite
-// input, except that a zero P keeps its sign (the reference adds +0 to it).
+// Bit-exactness contract: for a torque-free body, tuned::rk4_coords_free(m, x, h)
+// and tuned::rk4_body_free(m, s, h) return the same bits as
+// rk4_coords_reference(m, x, t, h) and rk4_body_reference(m, s, t, h) for every
+// finite input, except that a zero P keeps its sign (the reference adds +0 to it).
 // It holds because every double operation below is the one the reference's
 // Eigen expressions perform, in the same order, with -ffp-contract=off (no
-// fused multiply-add): only dead work (P' = 0) is dropped and the stage
-// vectors are kept in scalars so the four stages form one unpacked chain.
+// fused multiply-add): only dead work (P' = 0) is dropped, and the stage
+// vectors and the two rotations (Eigen's q * v) are kept in scalars, so the
+// step is one unpacked chain: 113 -> 64 ns/step on the reference problem
+// (tumble_microbench BM_Step/2/0 and BM_Propagate/2, see issue #10 notes).
 // tests/core/reference_kernels_test.cpp holds them equal.
 #pragma once
 
@@ -35,23 +38,77 @@ using Rot7 = std::array<double, 7>;
           a[4] + t * k[4], a[5] + t * k[5], a[6] + t * k[6]};
 }
 
-inline BodyState rk4_body_free(const RigidBodyModel& m, const BodyState& s, double h) {
+/// Eigen's q * v (QuaternionBase::_transformVector) in scalars, same operations
+/// in the same order: uv = u × v, uv += uv, v + w·uv + u × uv. Conjugate q by
+/// negating x, y, z (exact).
+[[gnu::always_inline]] inline void rotate(double x, double y, double z, double w, const double v[3], double out[3]) {
+  double a = y * v[2] - z * v[1], b = z * v[0] - x * v[2], c = x * v[1] - y * v[0];
+  a += a;
+  b += b;
+  c += c;
+  out[0] = (v[0] + w * a) + (y * c - z * b);
+  out[1] = (v[1] + w * b) + (z * a - x * c);
+  out[2] = (v[2] + w * c) + (x * b - y * a);
+}
+
+/// Compensated x + Δ (BodyCoords::lost): d = Δ − lost, x' = x + d, lost' = (x' − x) − d.
+[[gnu::always_inline]] inline void kahan_add(double x, double delta, double& lost, double& out) {
+  const double d = delta - lost;
+  out = x + d;
+  lost = (out - x) - d;
+}
+
+/// RK4 on (q, Π) for a torque-free body, q not renormalised; y = (q, Π) and
+/// lost = its 7 round-off carries, in and out.
+[[gnu::always_inline]] inline Rot7 rk4_rot(const double inv[3], double h, const Rot7& y0, Rot7& lost) {
   const double ha = h * 0.5, b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
-  const double inv[3] = {m.inv_inertia.x(), m.inv_inertia.y(), m.inv_inertia.z()};
   const double ih[3] = {0.5 * inv[0], 0.5 * inv[1], 0.5 * inv[2]};
-  const Eigen::Vector3d pi = s.q.conjugate() * s.L;
-  const Rot7 y0{s.q.x(), s.q.y(), s.q.z(), s.q.w(), pi.x(), pi.y(), pi.z()};
   const Rot7 k1 = rot_rate(inv, ih, y0);
   const Rot7 k2 = rot_rate(inv, ih, axpy7(y0, ha, k1));
   const Rot7 k3 = rot_rate(inv, ih, axpy7(y0, ha, k2));
   const Rot7 k4 = rot_rate(inv, ih, axpy7(y0, h, k3));
-  const Rot7 y = axpy7(axpy7(axpy7(axpy7(y0, b1, k1), b2, k2), b2, k3), b1, k4);
-  const Eigen::Vector3d v = s.P / m.mass;
+  Rot7 y;
+  for (int j = 0; j < 7; ++j) kahan_add(y0[j], ((b1 * k1[j] + b2 * k2[j]) + b2 * k3[j]) + b1 * k4[j], lost[j], y[j]);
+  return y;
+}
+
+/// c and P after four RK stages of c' = P/M, P' = 0, compensated like rk4_rot.
+[[gnu::always_inline]] inline void drift4(const RigidBodyModel& m, const BodyCoords& x, double h, BodyCoords& out) {
+  const double b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
+  for (int j = 0; j < 3; ++j) {
+    const double v = x.P[j] / m.mass;
+    out.lost.c[j] = x.lost.c[j];
+    kahan_add(x.c[j], ((b1 * v + b2 * v) + b2 * v) + b1 * v, out.lost.c[j], out.c[j]);
+    out.lost.P[j] = x.lost.P[j];
+    kahan_add(x.P[j], ((b1 * 0.0 + b2 * 0.0) + b2 * 0.0) + b1 * 0.0, out.lost.P[j], out.P[j]);
+  }
+}
+
+inline BodyCoords rk4_coords_free(const RigidBodyModel& m, const BodyCoords& x, double h) {
+  const double inv[3] = {m.inv_inertia.x(), m.inv_inertia.y(), m.inv_inertia.z()};
+  Rot7 lost{x.lost.q[0], x.lost.q[1], x.lost.q[2], x.lost.q[3], x.lost.pi[0], x.lost.pi[1], x.lost.pi[2]};
+  const Rot7 y = rk4_rot(inv, h, {x.q.x(), x.q.y(), x.q.z(), x.q.w(), x.pi.x(), x.pi.y(), x.pi.z()}, lost);
+  BodyCoords out;
+  drift4(m, x, h, out);
+  out.q = Eigen::Quaterniond(y[3], y[0], y[1], y[2]);
+  out.pi = {y[4], y[5], y[6]};
+  out.lost.q = {lost[0], lost[1], lost[2], lost[3]};
+  out.lost.pi = {lost[4], lost[5], lost[6]};
+  return out;
+}
+
+inline BodyState rk4_body_free(const RigidBodyModel& m, const BodyState& s, double h) {
+  BodyCoords x;
+  x.c = s.c;
+  x.q = s.q;
+  x.P = s.P;
+  rotate(-s.q.x(), -s.q.y(), -s.q.z(), s.q.w(), s.L.data(), x.pi.data());  // Π = q̄ L
+  const BodyCoords y = rk4_coords_free(m, x, h);
   BodyState out;
-  out.c = (((s.c + b1 * v) + b2 * v) + b2 * v) + b1 * v;
-  out.q = Eigen::Quaterniond(y[3], y[0], y[1], y[2]).normalized();
-  out.P = s.P;
-  out.L = out.q * Eigen::Vector3d(y[4], y[5], y[6]);
+  out.c = y.c;
+  out.q = unit_quaternion(y.q.x(), y.q.y(), y.q.z(), y.q.w());
+  out.P = y.P;
+  rotate(out.q.x(), out.q.y(), out.q.z(), out.q.w(), y.pi.data(), out.L.data());  // L = q Π
   return out;
 }
 

@@ -28,12 +28,18 @@ enum class Method {
 /// One step of size h (s) from time t (s).
 using StepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s, double t, double h);
 
+struct BodyCoords;
+/// One step of size h (s) in Euler's coordinates (c, q, P, Π), for methods that
+/// integrate in them (body_frame.hpp): the Propagator carries these between steps.
+using CoordsStepFn = BodyCoords (*)(const RigidBodyModel& m, const BodyCoords& x, double t, double h);
+
 /// Everything tumble knows about a method, in one row.
 struct MethodInfo {
   Method method;
   std::string_view name;
   int order;                 ///< global order (rk45: of its 5th-order solution; exact: 0 = exact when torque-free)
   StepFn step;               ///< one fixed step (rk45: one uncontrolled Dormand–Prince step)
+  CoordsStepFn coords_step;  ///< the same step in Euler's coordinates, or nullptr (steps on the seed's state)
   bool adaptive;             ///< Propagator runs its own step control with dense output (rk45)
   bool closed_form_if_free;  ///< Propagator evaluates the closed form at any t when torque-free (exact)
   bool auto_candidate;       ///< method = "auto" may pick it

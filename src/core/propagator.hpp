@@ -7,6 +7,8 @@
 #include <string>
 
 #include "core/body.hpp"
+#include "core/body_frame.hpp"
+#include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/rk45.hpp"
@@ -50,11 +52,16 @@ class Propagator {
  private:
   void grid_step();
   void check(const BodyState& s, double t, double h);
+  /// check() for a torque-free body carried in Euler's coordinates: the same
+  /// test (E is an invariant) without forming the seed's state every step.
+  void check_free(const BodyCoords& x, double t, double h);
+  [[noreturn]] void diverged(bool finite, double t, double h) const;
 
   const RigidBodyModel* m_;
   const MethodInfo* info_;
   StepConfig cfg_;
-  BodyState s0_, s_, grid_;   // s_: last sample; grid_: state at t = steps_·dt
+  BodyState s0_, s_;   // s_: last sample
+  FixedStepper grid_;  // the state at t = steps_·dt (fixed-step methods)
   double t_ = 0;
   long steps_ = 0;
   // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.

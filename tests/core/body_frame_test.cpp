@@ -4,9 +4,11 @@
 // coordinates lose the flip times. Errors are against FreeRotationExact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/body_frame.hpp"
+#include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/propagator.hpp"
 #include "core/quaternion.hpp"
@@ -20,7 +22,7 @@ double error_at_10s(Method method, double dt) {
   const RigidBodyModel m = testing::reference_model();
   const BodyState s0 = testing::reference_state(m);
   const FreeRotationExact ex(m.inertia, s0.q, s0.L);
-  const BodyState s = testing::run_steps(method, m, s0, dt, std::lround(10.0 / dt));
+  const BodyState s = integrate_fixed(method, m, s0, 0.0, dt, std::lround(10.0 / dt));  // as a run steps
   return rotation_angle_between(s.q, ex.orientation(10.0));
 }
 
@@ -30,6 +32,31 @@ TEST(BodyFrame, Rk4OnTheReferenceProblem) {
   EXPECT_LE(body, 1e-8);
   // The seed's coordinates: the flip times move (README, issue #10's table: 1.57e-3).
   EXPECT_GT(seed, 1e3 * body);
+}
+
+// A run carries (q, Π) from step to step (Propagator, MethodInfo::coords_step),
+// so its error at dt = 1 ms is RK4's truncation error: 8.89e-10 rad, measured
+// with the same steps in __float128 (a 1e-15 change of L cannot
+// move the closed form by more than ~1e-13 rad here). Stepping the seed's
+// state (q, L_world) through step() rounds Π = q̄ L afresh each step: Π₁ and Π₃
+// (~0.01) then take round-off of |L| (~20), and near the separatrix that spread
+// the error over 2e-9 … 2.5e-8 rad for the same perturbations.
+TEST(BodyFrame, Rk4RunIsTruncationLimitedNotRoundOffLimited) {
+  const RigidBodyModel m = testing::reference_model();
+  double worst_run = 0, worst_stateless = 0;
+  for (int k = 0; k < 8; ++k) {
+    BodyState s0 = testing::reference_state(m);
+    s0.L.y() *= 1 + k * 1e-15;
+    const FreeRotationExact ex(m.inertia, s0.q, s0.L);
+    Propagator p(m, s0, StepConfig{Method::rk4, 1e-3});
+    worst_run = std::max(worst_run, rotation_angle_between(p.advance_steps(10000).q, ex.orientation(10.0)));
+    const BodyState s = testing::run_steps(Method::rk4, m, s0, 1e-3, 10000);
+    worst_stateless = std::max(worst_stateless, rotation_angle_between(s.q, ex.orientation(10.0)));
+  }
+  std::printf("rk4, dt = 1e-3, 8 perturbed starts: worst run %.3e rad, worst stateless step() chain %.3e rad\n",
+              worst_run, worst_stateless);
+  EXPECT_LE(worst_run, 1.5e-9);
+  EXPECT_GE(worst_run, 5e-10);  // the truncation error is there: RK4 is not exact
 }
 
 TEST(BodyFrame, Rk45AtRtol1e9OnTheReferenceProblem) {

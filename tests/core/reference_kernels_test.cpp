@@ -28,6 +28,12 @@ TEST(ReferenceKernels, TunedRk4GivesTheReferenceBits) {
       EXPECT_EQ(a.q.coeffs(), b.q.coeffs()) << i << " h=" << h;
       EXPECT_EQ(a.P, b.P);
       EXPECT_EQ(a.L, b.L);
+      const BodyCoords x = to_body_coords(s);
+      const BodyCoords c = tuned::rk4_coords_free(m, x, h), d = rk4_coords_reference(m, x, 0.7, h);
+      EXPECT_EQ(c.c, d.c);
+      EXPECT_EQ(c.q.coeffs(), d.q.coeffs()) << i << " h=" << h;
+      EXPECT_EQ(c.P, d.P);
+      EXPECT_EQ(c.pi, d.pi);
     }
   }
 }

@@ -1,0 +1,52 @@
+#include "core/fixed_stepper.hpp"
+
+#include <cmath>
+
+#include "core/quaternion.hpp"
+
+namespace tumble {
+
+FixedStepper::FixedStepper(Method method, const RigidBodyModel& m, const BodyState& s0)
+    : m_(&m), info_(&method_info(method)), s_(s0) {
+  if (info_->coords_step) coords_ = to_body_coords(s0);
+}
+
+void FixedStepper::step(double t, double h) {
+  if (!coords_) {
+    const Eigen::Quaterniond prev = s_.q;
+    s_ = tumble::step(info_->method, *m_, s_, t, h);
+    s_.q = same_hemisphere(s_.q, prev);
+    return;
+  }
+  BodyCoords& x = *coords_;
+  const Eigen::Quaterniond prev = x.q;
+  x = info_->coords_step(*m_, x, t, h);
+  if (x.q.dot(prev) < 0) {  // q and -q step to negated q with the same Π: the run does not change
+    x.q.coeffs() = -x.q.coeffs();
+    x.lost.q = -x.lost.q;
+  }
+  // The step leaves |q| alone (body_frame.hpp); renormalise once it drifts.
+  // A blow-up still shows: in Π's energy, or as a non-finite q.
+  const double n = x.q.squaredNorm();
+  if (std::abs(n - 1.0) > 1e-12 && std::isfinite(n)) {
+    x.q = unit_quaternion(x.q.x(), x.q.y(), x.q.z(), x.q.w());
+    x.lost.q.setZero();
+  }
+}
+
+BodyState FixedStepper::state() const { return coords_ ? state_of(*coords_) : s_; }
+
+BodyState FixedStepper::peek(double t, double h) const {
+  BodyState s = coords_ ? state_of(info_->coords_step(*m_, *coords_, t, h)) : tumble::step(info_->method, *m_, s_, t, h);
+  const Eigen::Quaterniond ref = coords_ ? coords_->q : s_.q;
+  s.q = same_hemisphere(s.q, ref);
+  return s;
+}
+
+BodyState integrate_fixed(Method method, const RigidBodyModel& m, const BodyState& s0, double t0, double h, long n) {
+  FixedStepper s(method, m, s0);
+  for (long i = 0; i < n; ++i) s.step(t0 + static_cast<double>(i) * h, h);
+  return s.state();
+}
+
+}  // namespace tumble
