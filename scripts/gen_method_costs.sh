@@ -23,7 +23,7 @@ for r in runs:
     if r.get("aggregate_name") != "median":
         continue
     if r["name"].startswith("BM_Propagate"):
-        run[r["label"].split(" ")[0]] = (1e9 * r["ns_per_step"], r["error_rad"])  # the counter is s/step
+        run[r["label"].split(" ")[0]] = (1e9 * r["ns_per_step"], r["error_rad"], r["steps"])  # the counter is s/step
         continue
     method, kind = r["label"].split(" ")
     ns = r["cpu_time"] * {"ns": 1, "us": 1e3, "ms": 1e6}[r["time_unit"]]
@@ -44,8 +44,9 @@ rows = ["<!-- BEGIN microbench:speed-table -->",
         "| method | `step()`, torque-free | `step()`, forced | a run, ns/step | a run's error at 10 s, rad |",
         "|---|---|---|---|---|"]
 for method, c in cost.items():
-    ns, err = run.get(method, (float("nan"), float("nan")))
-    ns = "closed form, evaluated once" if method == "exact" else f"{ns:.0f}"
+    ns, err, steps = run.get(method, (float("nan"), float("nan"), 0))
+    ns = ("closed form, evaluated once" if method == "exact" else
+          f"{ns:.0f} ({steps:.0f} steps)" if method == "rk45" else f"{ns:.0f}")
     rows.append(f"| {method} | {c['torque-free']:.0f} | {c['forced']:.0f} | {ns} | {err:.3g} |")
 rows.append("<!-- END microbench:speed-table -->")
 readme = open(sys.argv[4]).read()

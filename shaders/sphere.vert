@@ -1,11 +1,12 @@
 #version 330 core
 // Sphere impostor: one camera-facing quad per particle, just large enough to
 // hold the sphere's silhouette; the fragment shader ray-casts the sphere.
-// Replaces a tessellated sphere per particle (~300 triangles each).
-layout(location = 0) in vec4 i_sphere;  // world centre xyz, radius w
+// Replaces a tessellated sphere per particle (~300 triangles each). Each
+// sphere comes as four vertices with the same attributes (render/sphere_pass.hpp).
+layout(location = 0) in vec4 i_sphere;  // centre xyz in model axes, radius w (m)
 layout(location = 1) in vec4 i_color;
 
-uniform mat4 u_view;
+uniform mat4 u_model_view;  // model axes -> view (rigid)
 uniform mat4 u_proj;
 
 out vec3 v_ray;             // view-space point on the quad (the ray through it)
@@ -13,10 +14,11 @@ flat out vec4 v_sphere;     // view-space centre, radius
 flat out vec4 v_color;
 
 void main() {
-  vec3 c = (u_view * vec4(i_sphere.xyz, 1.0)).xyz;
+  vec3 c = (u_model_view * vec4(i_sphere.xyz, 1.0)).xyz;
   float r = i_sphere.w;
   float d = length(c);
-  vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 2.0 - 1.0;
+  int k = gl_VertexID & 3;  // which corner of the sphere's quad
+  vec2 corner = vec2(float(k & 1), float(k >> 1)) * 2.0 - 1.0;
   // Quad through the centre, perpendicular to the eye->centre axis: the
   // silhouette cone cuts it in a circle of radius r d / sqrt(d^2 - r^2).
   vec3 axis = c / max(d, 1e-20);

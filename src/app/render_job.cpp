@@ -10,6 +10,7 @@
 #include "core/propagator.hpp"
 #include "app/explain_views.hpp"
 #include "viz/captions.hpp"
+#include "viz/particle_set.hpp"
 
 namespace tumble::app {
 
@@ -152,13 +153,15 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
     look.surface_colors.push_back(rgba(m.color, 1.0f));
   }
   if (!particles) return look;
-  look.visible = viz::visible_particles(b.cloud);
-  for (std::uint32_t i : look.visible) {
+  std::vector<viz::Color> colors;
+  colors.reserve(b.cloud.size());
+  for (std::size_t i = 0; i < b.cloud.size(); ++i) {
     Eigen::Vector3d c = b.color;
     for (const scene::ColorSpan& span : b.part_colors)
       if (i >= span.begin && i < span.end) c = span.color;
-    look.particle_colors.push_back(rgba(0.75 * c, 1.0f));
+    colors.push_back(rgba(0.75 * c, 1.0f));
   }
+  look.particles = viz::make_particle_set(b.cloud, colors, static_cast<float>(viz::particle_radius(b.model)));
   return look;
 }
 

@@ -5,7 +5,14 @@
 
 namespace tumble {
 
-BodyCoords to_body_coords(const BodyState& s) { return {s.c, s.q, s.P, s.q.conjugate() * s.L}; }
+BodyCoords to_body_coords(const BodyState& s) {
+  BodyCoords x;
+  x.c = s.c;
+  x.q = s.q;
+  x.P = s.P;
+  x.pi = momentum_body(s);
+  return x;
+}
 
 BodyState from_body_coords(const BodyCoords& x) {
   BodyState s;

@@ -16,6 +16,7 @@
 #include <array>
 
 #include "core/body_frame.hpp"
+#include "core/quaternion.hpp"
 
 namespace tumble::tuned {
 
@@ -36,19 +37,6 @@ using Rot7 = std::array<double, 7>;
 [[gnu::always_inline]] inline Rot7 axpy7(const Rot7& a, double t, const Rot7& k) {
   return {a[0] + t * k[0], a[1] + t * k[1], a[2] + t * k[2], a[3] + t * k[3],
           a[4] + t * k[4], a[5] + t * k[5], a[6] + t * k[6]};
-}
-
-/// Eigen's q * v (QuaternionBase::_transformVector) in scalars, same operations
-/// in the same order: uv = u × v, uv += uv, v + w·uv + u × uv. Conjugate q by
-/// negating x, y, z (exact).
-[[gnu::always_inline]] inline void rotate(double x, double y, double z, double w, const double v[3], double out[3]) {
-  double a = y * v[2] - z * v[1], b = z * v[0] - x * v[2], c = x * v[1] - y * v[0];
-  a += a;
-  b += b;
-  c += c;
-  out[0] = (v[0] + w * a) + (y * c - z * b);
-  out[1] = (v[1] + w * b) + (z * a - x * c);
-  out[2] = (v[2] + w * c) + (x * b - y * a);
 }
 
 /// Compensated x + Δ (BodyCoords::lost): d = Δ − lost, x' = x + d, lost' = (x' − x) − d.

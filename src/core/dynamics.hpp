@@ -65,14 +65,14 @@ Wrench wrench(const RigidBodyModel& m, const BodyState& s, double t);
 
 inline Eigen::Vector3d velocity(const RigidBodyModel& m, const BodyState& s) { return s.P / m.mass; }
 /// Π = Rᵀ L: angular momentum in the principal frame, kg·m²/s.
-inline Eigen::Vector3d momentum_body(const BodyState& s) { return s.q.conjugate() * s.L; }
+inline Eigen::Vector3d momentum_body(const BodyState& s) { return rotate_inverse(s.q, s.L); }  // q̄ L, Eigen's bits
 /// ω in the principal frame, rad/s.
 inline Eigen::Vector3d omega_principal(const RigidBodyModel& m, const BodyState& s) {
   return m.inv_inertia.cwiseProduct(momentum_body(s));
 }
 /// ω_world = R J0⁻¹ Rᵀ L, rad/s.
 inline Eigen::Vector3d omega_world(const RigidBodyModel& m, const BodyState& s) {
-  return s.q * omega_principal(m, s);
+  return rotate(s.q, omega_principal(m, s));
 }
 /// ω in the cloud's own axes (the scene's `omega_body`), rad/s.
 inline Eigen::Vector3d omega_body(const RigidBodyModel& m, const BodyState& s) {

@@ -40,6 +40,24 @@ Eigen::Vector3d box_lo(const TriangleMesh& m) {
   return lo;
 }
 
+// The mesh in the lattice's axes (a copy only when the lattice is turned).
+const TriangleMesh& in_lattice_axes(const TriangleMesh& mesh, const LatticeSpec& l, TriangleMesh& turned) {
+  if (l.orientation.coeffs() == Eigen::Quaterniond::Identity().coeffs()) return mesh;
+  turned = mesh;
+  const Eigen::Matrix3d to_lattice = l.orientation.conjugate().toRotationMatrix();
+  for (auto& v : turned.vertices) v = to_lattice * v;
+  return turned;
+}
+
+// Lattice points per axis over the bounding box of `mesh`, given in the lattice's axes.
+Eigen::Vector3d counts_in_lattice_axes(const TriangleMesh& mesh, const LatticeSpec& l) {
+  Eigen::Vector3d lo = box_lo(mesh), hi = lo;
+  for (const auto& v : mesh.vertices) hi = hi.cwiseMax(v);
+  Eigen::Vector3d n;
+  for (int a = 0; a < 3; ++a) n[a] = std::max(0.0, std::floor((hi[a] - lo[a]) / l.spacing - l.offset[a]) + 1);
+  return n;
+}
+
 Eigen::Vector3d point_at(const Eigen::Vector3d& lo, const LatticeSpec& l, double i, double j, double k) {
   return lo + l.spacing * (Eigen::Vector3d(i, j, k) + l.offset);
 }
@@ -92,17 +110,16 @@ double winding_number(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
 }
 
 Eigen::Vector3d lattice_counts(const TriangleMesh& mesh, const LatticeSpec& l) {
-  Eigen::Vector3d lo = box_lo(mesh), hi = -lo;
-  for (const auto& v : mesh.vertices) hi = hi.cwiseMax(v);
-  Eigen::Vector3d n;
-  for (int a = 0; a < 3; ++a) n[a] = std::max(0.0, std::floor((hi[a] - lo[a]) / l.spacing - l.offset[a]) + 1);
-  return n;
+  TriangleMesh turned;
+  return counts_in_lattice_axes(in_lattice_axes(mesh, l, turned), l);
 }
 
-VolumeFill fill_volume(const TriangleMesh& mesh, bool watertight, const LatticeSpec& l, double mass) {
+VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const LatticeSpec& l, double mass) {
   VolumeFill out;
+  TriangleMesh turned;
+  const TriangleMesh& mesh = in_lattice_axes(mesh_in, l, turned);
   if (mesh.triangles.empty() || !(l.spacing > 0)) return out;
-  const Eigen::Vector3d lo = box_lo(mesh), n = lattice_counts(mesh, l);
+  const Eigen::Vector3d lo = box_lo(mesh), n = counts_in_lattice_axes(mesh, l);
   const long nx = long(n.x()), ny = long(n.y()), nz = long(n.z());
   const std::vector<Crossing> xs = row_crossings(mesh, lo, l, ny, nz);
   std::vector<Eigen::Vector3d> inside;
@@ -147,7 +164,8 @@ VolumeFill fill_volume(const TriangleMesh& mesh, bool watertight, const LatticeS
     }
   out.cloud.reserve(inside.size());
   const double each = inside.empty() ? 0 : mass / static_cast<double>(inside.size());
-  for (const auto& p : inside) out.cloud.push_back({p, each});
+  const Eigen::Matrix3d to_mesh = l.orientation.toRotationMatrix();
+  for (const auto& p : inside) out.cloud.push_back({to_mesh * p, each});
   return out;
 }
 

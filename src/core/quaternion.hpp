@@ -23,6 +23,34 @@ inline Eigen::Quaterniond axis_rotation(int axis, double angle) {
   return q;
 }
 
+/// Eigen's q * v (QuaternionBase::_transformVector) in scalars, the same
+/// operations in the same order, so the same bits: uv = u × v, uv += uv,
+/// v + w·uv + u × uv. gcc -O2 leaves Eigen's out of line with packed
+/// temporaries (~20 ns); this inlines (~3 ns). q unit (x, y, z, w).
+[[gnu::always_inline]] inline void rotate(double x, double y, double z, double w, const double v[3], double out[3]) {
+  double a = y * v[2] - z * v[1], b = z * v[0] - x * v[2], c = x * v[1] - y * v[0];
+  a += a;
+  b += b;
+  c += c;
+  out[0] = (v[0] + w * a) + (y * c - z * b);
+  out[1] = (v[1] + w * b) + (z * a - x * c);
+  out[2] = (v[2] + w * c) + (x * b - y * a);
+}
+
+/// q v q̄ (= Eigen's q * v, same bits).
+inline Eigen::Vector3d rotate(const Eigen::Quaterniond& q, const Eigen::Vector3d& v) {
+  Eigen::Vector3d o;
+  rotate(q.x(), q.y(), q.z(), q.w(), v.data(), o.data());
+  return o;
+}
+
+/// q̄ v q (= Eigen's q.conjugate() * v, same bits): world → body for q = world ← body.
+inline Eigen::Vector3d rotate_inverse(const Eigen::Quaterniond& q, const Eigen::Vector3d& v) {
+  Eigen::Vector3d o;
+  rotate(-q.x(), -q.y(), -q.z(), q.w(), v.data(), o.data());
+  return o;
+}
+
 /// Pure quaternion (0, v).
 inline Eigen::Quaterniond pure(const Eigen::Vector3d& v) { return Eigen::Quaterniond(0, v.x(), v.y(), v.z()); }
 

@@ -31,6 +31,7 @@ constexpr float kSkyAmount = 0.35f;
 constexpr float kFlatBackground = 0.35f;
 // Key light from the camera's upper left, so shapes read the same in every view.
 const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
+constexpr float kOpaqueSpecular = 0.28f;
 
 }  // namespace
 
@@ -55,10 +56,11 @@ class Renderer::Impl {
   void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
   void draw_background(const glm::vec3& background);
   void draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color);
-  void draw_meshes(const ViewBatches& batches, const CameraMatrices& cam);
+  void draw_meshes(const ViewBatches& batches, const CameraMatrices& cam, bool ghost_arrows);
   void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
                  const PixelRect& rect);
   void set_viewport(const PixelRect& rect);
+  SphereShading sphere_shading() const { return {kLightDir, kOpaqueSpecular, target_.samples() > 0}; }
 
   GlContext& context_;
   const GlFunctions& gl_;
@@ -221,7 +223,9 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   gl_.DepthMask(GL_TRUE);
 
   surfaces_.draw(view.surfaces, cam.view, cam.proj, kLightDir);
-  draw_meshes(batches, cam);
+  spheres_.draw(view.particles, view.camera, cam.view, cam.proj, rect.height, sphere_shading());
+  // A solid of particles or a mesh hides the arrows inside it: show them faintly.
+  draw_meshes(batches, cam, !view.particles.empty() || !view.surfaces.empty());
 
   gl_.DepthMask(GL_FALSE);  // trails and edges are translucent overlays
   for (const Polyline& p : batches.polylines) {
@@ -234,7 +238,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   draw_text(view.texts, view.label, rect);
 }
 
-void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam) {
+void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam, bool ghost_arrows) {
   mesh_program_.use();
   mesh_program_.set("u_view", cam.view);
   mesh_program_.set("u_proj", cam.proj);
@@ -242,14 +246,34 @@ void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrice
   mesh_program_.set("u_light_dir", light_dir);
 
   // Opaque pass.
-  constexpr float kOpaqueSpecular = 0.28f;
   mesh_program_.set("u_specular", kOpaqueSpecular);
   cylinder_.upload(batches.arrow_shafts);
   cylinder_.draw();
   cone_.upload(batches.arrow_heads);
   cone_.draw();
-  spheres_.draw(batches.spheres, cam.view, cam.proj, light_dir, kOpaqueSpecular,
-                target_.samples() > 0);
+  spheres_.draw(batches.spheres, cam.view, cam.proj, sphere_shading());
+
+  if (ghost_arrows) {
+    // The hidden parts of the arrows again, where something opaque lies in
+    // front (depth test GREATER), blended faintly; their own back faces culled.
+    constexpr float kGhostAlpha = 0.35f;
+    auto faded = [&](std::vector<MeshInstance> v) {
+      for (MeshInstance& m : v) m.color.a *= kGhostAlpha;
+      return v;
+    };
+    mesh_program_.use();
+    gl_.DepthMask(GL_FALSE);
+    gl_.DepthFunc(GL_GREATER);
+    gl_.Enable(GL_CULL_FACE);
+    gl_.CullFace(GL_BACK);
+    cylinder_.upload(faded(batches.arrow_shafts));
+    cylinder_.draw();
+    cone_.upload(faded(batches.arrow_heads));
+    cone_.draw();
+    gl_.Disable(GL_CULL_FACE);
+    gl_.DepthFunc(GL_LEQUAL);
+    gl_.DepthMask(GL_TRUE);
+  }
 
   // Translucent boxes: no depth writes; inner (back) faces first, then the
   // outer faces, which is exact for one convex box and close enough for few.

@@ -1,41 +1,16 @@
 #include "viz/body_look.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <unordered_set>
+#include "viz/particle_set.hpp"
 
 namespace tumble::viz {
 
 std::vector<std::uint32_t> visible_particles(const ParticleCloud& cloud) {
+  std::vector<glm::dvec3> positions;
+  for (const Particle& p : cloud) positions.emplace_back(p.position.x(), p.position.y(), p.position.z());
+  const std::vector<std::uint8_t> exposed = exposed_directions(positions, shell_grid(positions));
   std::vector<std::uint32_t> out;
-  if (cloud.size() < 64) {  // too few to hide anything
-    for (std::uint32_t i = 0; i < cloud.size(); ++i) out.push_back(i);
-    return out;
-  }
-  Eigen::Vector3d lo = cloud.front().position, hi = lo;
-  for (const Particle& p : cloud) lo = lo.cwiseMin(p.position), hi = hi.cwiseMax(p.position);
-  // Spacing estimate from the bounding box: at least the lattice spacing of a
-  // box-filling lattice (whose points span (n - 1) spacings: hence 1.1), more
-  // for other shapes (a thicker shell, still correct).
-  const Eigen::Vector3d ext = (hi - lo).cwiseMax(1e-12 * (hi - lo).maxCoeff() + 1e-300);
-  const double cell = 1.1 * std::cbrt(ext.prod() / static_cast<double>(cloud.size()));
-  const Eigen::Vector3d n = (ext / cell).array().floor() + 1;
-  auto key = [&](const Eigen::Vector3d& p) {
-    const Eigen::Vector3d c = ((p - lo) / cell).array().floor();
-    return static_cast<std::int64_t>((c.z() * n.y() + c.y()) * n.x() + c.x());
-  };
-  std::unordered_set<std::int64_t> occupied;
-  occupied.reserve(cloud.size());
-  for (const Particle& p : cloud) occupied.insert(key(p.position));
-  const std::int64_t nx = static_cast<std::int64_t>(n.x()), nxy = nx * static_cast<std::int64_t>(n.y());
-  const std::int64_t steps[6] = {1, -1, nx, -nx, nxy, -nxy};
-  for (std::uint32_t i = 0; i < cloud.size(); ++i) {
-    const Eigen::Vector3d c = ((cloud[i].position - lo) / cell).array().floor();
-    const bool edge = (c.array() == 0).any() || (c.array() + 1 >= n.array()).any();
-    const std::int64_t k = key(cloud[i].position);
-    if (edge || std::any_of(std::begin(steps), std::end(steps), [&](std::int64_t s) { return !occupied.count(k + s); }))
-      out.push_back(i);
-  }
+  for (std::uint32_t i = 0; i < exposed.size(); ++i)
+    if (exposed[i] || cloud.size() < 64) out.push_back(i);  // a few particles hide nothing
   return out;
 }
 

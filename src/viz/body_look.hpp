@@ -15,9 +15,7 @@
 namespace tumble::viz {
 
 /// Indices of the particles on the outside of the cloud: those whose cell in a
-/// grid of about the lattice spacing has an empty face neighbour. A cell at
-/// least as wide as the spacing holds a lattice point, so interior cells are
-/// never empty and interior particles (hidden behind the shell) are dropped.
+/// grid of about the lattice spacing has an empty face neighbour (exposed_directions).
 std::vector<std::uint32_t> visible_particles(const ParticleCloud& cloud);
 
 /// Flat-shaded triangle soup of a mesh in cloud axes (m), as a draw-list item shares it.
@@ -26,8 +24,7 @@ std::shared_ptr<const SurfaceMesh> make_surface(const TriangleMesh& mesh);
 struct BodyLook {
   std::vector<std::shared_ptr<const SurfaceMesh>> surfaces;
   std::vector<Color> surface_colors;     ///< one per surface
-  std::vector<std::uint32_t> visible;    ///< particles drawn
-  std::vector<Color> particle_colors;    ///< one per entry of `visible`
+  std::shared_ptr<const ParticleSet> particles;  ///< null: particles not drawn
 };
 
 }  // namespace tumble::viz

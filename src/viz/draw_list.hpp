@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <memory>
 #include <string>
@@ -55,6 +56,31 @@ struct SurfaceItem {
   Color color;
 };
 
+/// One level of detail of a body's particles, in its cloud axes.
+struct ParticleLevel {
+  std::vector<glm::vec3> positions;   ///< cloud axes, m
+  std::vector<Color> colors;
+  /// Per particle, the grid directions it is seen through (viz/particle_set.hpp), never 0.
+  std::vector<std::uint8_t> exposed;
+  float radius = 0;                   ///< m, sphere radius of every particle of this level
+};
+
+/// A body's visible particles at several levels of detail, finest first. Made
+/// once per body and shared by every frame, so the renderer keeps it on the GPU.
+struct ParticleSet {
+  std::vector<ParticleLevel> levels;
+  glm::vec3 center{0};      ///< cloud axes, m: centre of a sphere bounding the particles
+  float bound_radius = 0;   ///< m
+};
+
+/// A body's particles placed by `model` (cloud axes -> world, rigid). The
+/// renderer picks the level (viz::particle_level) and skips the particles
+/// facing away from the eye (viz::faces_eye).
+struct ParticlesItem {
+  std::shared_ptr<const ParticleSet> set;
+  glm::dmat4 model;
+};
+
 /// A polyline (trail of an axis tip); alpha fades from oldest to newest.
 struct PolylineItem {
   std::vector<glm::dvec3> points;  ///< world, m, oldest first
@@ -96,6 +122,7 @@ struct View {
   std::vector<BoxItem> boxes;
   std::vector<ArrowItem> arrows;
   std::vector<PointItem> points;
+  std::vector<ParticlesItem> particles;
   std::vector<SurfaceItem> surfaces;
   std::vector<PolylineItem> polylines;
   std::vector<GridItem> grids;

@@ -23,12 +23,10 @@ glm::dmat3 rotation_of(const Eigen::Quaterniond& q) {
 double largest_half_extent(const RigidBodyModel& m) { return m.box.half_extents.maxCoeff(); }
 
 // Cloud axes -> world: x_world = origin + q x_cloud.
-void add_surfaces(View& view, const BodyLook& look, const Eigen::Vector3d& origin, const Eigen::Quaterniond& q) {
-  const glm::dmat3 r = rotation_of(q);
-  glm::dmat4 model(r);
+glm::dmat4 cloud_to_world(const Eigen::Vector3d& origin, const Eigen::Quaterniond& q) {
+  glm::dmat4 model(rotation_of(q));
   model[3] = glm::dvec4(to_glm(origin), 1.0);
-  for (std::size_t i = 0; i < look.surfaces.size(); ++i)
-    view.surfaces.push_back({look.surfaces[i], model, look.surface_colors[i]});
+  return model;
 }
 
 }  // namespace
@@ -40,6 +38,8 @@ glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i) {
   e[i] = len;
   return to_glm(s.c + s.q * e);
 }
+
+double particle_radius(const RigidBodyModel& m) { return 0.012 * std::max(largest_half_extent(m), 1e-3); }
 
 double box_radius(const RigidBodyModel& m) { return (m.box.center.cwiseAbs() + m.box.half_extents).norm(); }
 
@@ -73,26 +73,26 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     if (opt.box) {
       Color edge = b.color * 0.45f;
       edge.a = 1.0f;
-      view.boxes.push_back({to_glm(s.c + s.q * m.box.center), rotation_of(s.q), to_glm(m.box.half_extents),
-                            b.color, edge});
+      // Around the particle spheres when they are drawn, so its edges and faces are not buried in them.
+      const double grow = opt.particles && b.cloud ? particle_radius(m) : 0.0;
+      view.boxes.push_back({to_glm(s.c + s.q * m.box.center), rotation_of(s.q),
+                            to_glm(m.box.half_extents) + glm::dvec3(grow), b.color, edge});
     }
     if (opt.axes)
       for (int i = 0; i < 3; ++i)
         view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i]});
     const Eigen::Quaterniond qc = cloud_orientation(m, s);
-    if (b.look) add_surfaces(view, *b.look, s.c - qc * m.com_cloud, qc);
-    if (opt.particles && b.cloud) {
-      const double r = 0.012 * size;
+    const glm::dmat4 model = cloud_to_world(s.c - qc * m.com_cloud, qc);
+    if (b.look)
+      for (std::size_t i = 0; i < b.look->surfaces.size(); ++i)
+        view.surfaces.push_back({b.look->surfaces[i], model, b.look->surface_colors[i]});
+    if (opt.particles && b.look && b.look->particles) {
+      view.particles.push_back({b.look->particles, model});  // the shell, kept on the GPU
+    } else if (opt.particles && b.cloud) {
       Color pc = b.color * 0.75f;
       pc.a = 1.0f;
-      auto add = [&](std::size_t i, const Color& c) {
-        view.points.push_back({to_glm(s.c + qc * ((*b.cloud)[i].position - m.com_cloud)), r, c});
-      };
-      if (b.look)  // only the outer shell: the interior cannot be seen
-        for (std::size_t k = 0; k < b.look->visible.size(); ++k)
-          add(b.look->visible[k], k < b.look->particle_colors.size() ? b.look->particle_colors[k] : pc);
-      else
-        for (std::size_t i = 0; i < b.cloud->size(); ++i) add(i, pc);
+      for (const Particle& p : *b.cloud)
+        view.points.push_back({to_glm(s.c + qc * (p.position - m.com_cloud)), particle_radius(m), pc});
     }
     // L and ω show direction only (their magnitudes have other units than
     // length), at a fixed multiple of the body's size.

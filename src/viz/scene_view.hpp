@@ -66,6 +66,9 @@ class TrailRecorder {
 void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawOptions& opt,
                 const TrailRecorder* trails, double t);
 
+/// Radius of a body's particle spheres, m: a fixed fraction of its size.
+double particle_radius(const RigidBodyModel& m);
+
 /// A bounding sphere (centre, radius in m) of a body's box.
 double box_radius(const RigidBodyModel& m);
 

@@ -35,6 +35,29 @@ TEST(VolumeFill, AlignedBoxGivesTheBoxLattice) {
   EXPECT_LT(rel(a.inertia, b.inertia), 1e-12);
 }
 
+// A turned lattice keeps exactly its points that lie in the box (brute force
+// over every node of the turned lattice), by ray crossings and by winding number.
+TEST(VolumeFill, TurnedLatticeKeepsItsPointsInsideTheBox) {
+  const TriangleMesh m = box_mesh({1.0, 0.6, 0.4});  // centred on the origin
+  for (int k = 0; k < 6; ++k) {
+    UnitRandom rnd(100 + k);
+    const Eigen::Quaterniond q = Eigen::Quaterniond(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5, rnd() - 0.5).normalized();
+    const LatticeSpec l{0.07, Eigen::Vector3d(rnd(), rnd(), rnd()), q};
+    // Nodes of the turned lattice, anchored anywhere: whole spacings do not matter.
+    Eigen::Vector3d lo(1e9, 1e9, 1e9);
+    for (const auto& v : m.vertices) lo = lo.cwiseMin(q.conjugate() * v);
+    std::size_t inside = 0;
+    for (int i = -30; i <= 30; ++i)
+      for (int j = -30; j <= 30; ++j)
+        for (int n = -30; n <= 30; ++n) {
+          const Eigen::Vector3d p = q * (lo + l.spacing * (Eigen::Vector3d(i, j, n) + l.offset));
+          inside += std::abs(p.x()) < 0.5 && std::abs(p.y()) < 0.3 && std::abs(p.z()) < 0.2;
+        }
+    EXPECT_EQ(fill_volume(m, true, l, 1.0).cloud.size(), inside) << k;
+    EXPECT_EQ(fill_volume(m, false, l, 1.0).cloud.size(), inside) << k;
+  }
+}
+
 // The per-row crossing count must agree with the winding number at every
 // lattice point of a non-convex mesh, rows through vertices and edges included.
 TEST(VolumeFill, RowCrossingsAgreeWithWindingNumber) {

@@ -113,7 +113,8 @@ TEST(MeshShape, LargeHolesAreAnError) {
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_NE(s.warnings[0].find("inside out"), std::string::npos) << s.warnings[0];
   EXPECT_LT(rel(m.exact_inertia, Eigen::Matrix3d::Identity() / 6), 1e-12);
-  EXPECT_EQ(m.particles, 1000u);
+  // Volume 1 at spacing 0.1 on a turned lattice: 1000 points, give or take the surface's.
+  EXPECT_NEAR(double(m.particles), 1000.0, 30.0);
   fs::remove_all(dir);
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
+#include "viz/particle_set.hpp"
 #include "viz/scene_view.hpp"
 
 namespace tumble::viz {
@@ -44,6 +45,30 @@ TEST(SceneView, BoxCornersMatchTransformedCloudExtents) {
   EXPECT_NEAR(b.half_extents[0], 0.875, 1e-12);
   EXPECT_NEAR(b.half_extents[1], 0.375, 1e-12);
   EXPECT_NEAR(b.half_extents[2], 0.125, 1e-12);
+}
+
+TEST(SceneView, ParticleSetIsPlacedWhereTheStateSays) {
+  Fixture f;
+  BodyLook look;
+  look.particles = make_particle_set(f.cloud, {}, float(particle_radius(f.model)));
+  DrawOptions opt;
+  opt.particles = true;
+  View v;
+  BodySnapshot snap{&f.model, &f.cloud, f.state};
+  snap.look = &look;
+  add_bodies(v, {snap}, opt, nullptr, 0);
+  EXPECT_TRUE(v.points.empty());  // one shared item, not a point per particle
+  ASSERT_EQ(v.particles.size(), 1u);
+  EXPECT_EQ(v.particles[0].set, look.particles);
+  // Its model matrix maps each cloud position to x_world = c + q_cloud (x - com).
+  const Eigen::Quaterniond qc = cloud_orientation(f.model, f.state);
+  for (const Particle& p : f.cloud) {
+    const Eigen::Vector3d w = f.state.c + qc * (p.position - f.model.com_cloud);
+    const glm::dvec3 m = v.particles[0].model * glm::dvec4(p.position.x(), p.position.y(), p.position.z(), 1.0);
+    EXPECT_NEAR(glm::length(m - glm::dvec3(w.x(), w.y(), w.z())), 0.0, 1e-12);
+  }
+  // The whole 8 x 4 x 2 lattice is its shell.
+  EXPECT_EQ(look.particles->levels.at(0).positions.size(), f.cloud.size());
 }
 
 TEST(SceneView, AxisArrowsStartAtComAndFollowPrincipalAxes) {
