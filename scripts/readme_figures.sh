@@ -3,7 +3,10 @@
 #  - the accuracy table between <!-- BEGIN/END bench:accuracy-table --> in
 #    README.md (`tumble bench --readme-table`, about a minute);
 #  - docs/bench_work_precision_t_handle.png and docs/bench_stability_map.png
-#    from a full `tumble bench` (a few minutes; skipped with --table-only).
+#    from a full `tumble bench` (a few minutes; skipped with --table-only);
+#  - the render figures between <!-- BEGIN/END bench:render --> (frames/s with
+#    FXAA and 4x MSAA, video paths, FXAA against 4x MSAA; `tumble bench
+#    --render`, about a minute; skipped with --table-only).
 # Timings depend on the machine and its load: run it on an idle one.
 set -eu
 cd "$(dirname "$0")/.."
@@ -22,5 +25,6 @@ if [ "${1:-}" != "--table-only" ]; then
   mv docs/bench_work_precision_t_handle.png.tmp docs/bench_work_precision_t_handle.png
   cp "$out/stability_map.png" docs/bench_stability_map.png.tmp
   mv docs/bench_stability_map.png.tmp docs/bench_stability_map.png
+  "$tumble" bench --render --frames 120 -o "$out" --readme-table README.md
 fi
 "$tumble" bench --readme-table README.md

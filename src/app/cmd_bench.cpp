@@ -57,22 +57,25 @@ int run_scene_study(const BenchCliOptions& o) {
   return bench::run_problems(o.studies, s.name, problems, std::cout);
 }
 
-int rewrite_readme(const std::string& file) {
+/// The text of `file`, checked to hold the <!-- BEGIN/END `marker` --> lines
+/// (before minutes of measuring).
+std::string read_markers(const std::string& file, const std::string& marker) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError("--readme-table: cannot read " + file);
   std::stringstream text;
   text << in.rdbuf();
-  auto replace = [&](const std::string& table) {
-    try {
-      return bench::replace_between_markers(text.str(), "bench:accuracy-table", table);
-    } catch (const InputError& e) {
-      throw InputError(file + ": " + e.what());
-    }
-  };
-  replace("");  // the markers are checked before the minute of measuring
+  try {
+    bench::replace_between_markers(text.str(), marker, "");
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
+  }
+  return text.str();
+}
+
+int rewrite_readme(const std::string& file) {
+  const std::string text = read_markers(file, "bench:accuracy-table");
   const std::string table = bench::readme_accuracy_table(std::cout);
-  const std::string out = replace(table);
-  io::atomic_write_file(file, out);
+  io::atomic_write_file(file, bench::replace_between_markers(text, "bench:accuracy-table", table));
   std::cout << table << "wrote the table into " << file << "\n";
   return kOk;
 }
@@ -84,7 +87,9 @@ void add_bench_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("bench", "Work-precision, convergence, stability and drift of every method (+ peers)");
   cmd->add_flag("--quick", o->studies.quick, "Small sweeps and short timing batches (under a minute)");
   cmd->add_option("-o,--out", o->studies.out_dir, "Output folder for CSV, PNG and summary.md")->capture_default_str();
-  auto* render = cmd->add_flag("--render", o->render, "Measure frames/s of the demo render and of a 198k-particle solid (1280x720, 4x MSAA) instead");
+  auto* render = cmd->add_flag("--render", o->render,
+                               "Measure frames/s of the demo render (1280x720, FXAA and 4x MSAA), FXAA's pixels "
+                               "against 4x MSAA, and frames/s of a 198k-particle solid instead");
   cmd->add_option("--frames", o->frames, "With --render: how many frames")->capture_default_str();
   cmd->add_option("--scene", o->scene,
                   "Work-precision study (every method x a dt sweep, rk45 x rtol, peers when torque-free) on this "
@@ -93,11 +98,11 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("--body", o->body, "With --scene: study only this body")->excludes(render);
   cmd->add_option("--readme-table", o->readme,
                   "Recompute the README's accuracy table and write it between the <!-- BEGIN/END "
-                  "bench:accuracy-table --> lines of this file")
-      ->excludes(render);
+                  "bench:accuracy-table --> lines of this file (with --render: the render figures, between "
+                  "the bench:render lines)");
   cmd->callback([o, &action] {
     action = [o]() -> int {
-      if (!o->readme.empty()) {
+      if (!o->readme.empty() && !o->render) {
         if (!o->scene.empty()) throw InputError("--readme-table and --scene: choose one");
         return rewrite_readme(o->readme);
       }
@@ -107,13 +112,25 @@ void add_bench_command(CLI::App& app, Action& action) {
         return o->scene.empty() ? bench::run(o->studies, std::cout) : run_scene_study(*o);
       }
 #ifdef TUMBLE_HAVE_RENDER
+      const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
+      if (!o->scene.empty() && !o->readme.empty()) throw InputError("--render --readme-table measures the demo; drop --scene");
       if (!o->scene.empty()) {
         run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout);
         return kOk;
       }
-      // The demo, then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
-      const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
-      run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout);
+      // Anti-aliasing quality also on a comparison grid and on an explained
+      // scene (plots, thin curves, much text).
+      const std::vector<std::filesystem::path> quality = {scenes / "methods_compare.toml",
+                                                          scenes / "dzhanibekov_explained.toml"};
+      std::string text;
+      if (!o->readme.empty()) text = read_markers(o->readme, "bench:render");
+      const RenderBenchResult r =
+          run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout, quality);
+      if (!o->readme.empty()) {
+        io::atomic_write_file(o->readme, bench::replace_between_markers(text, "bench:render", r.markdown));
+        std::cout << "wrote the render figures into " << o->readme << "\n";
+      }
+      // Then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
       run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout);
       return kOk;
 #else

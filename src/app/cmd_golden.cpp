@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 constexpr int kGoldenFailed = 1;
 
 struct GoldenOptions {
-  std::string scene, at, frames, dir, report, msaa, gl;
+  std::string scene, at, frames, dir, report, msaa, aa, gl;
   int width = 320, height = 240;
   long every = 10;
   bool update = false, physics_only = false;
@@ -132,12 +132,14 @@ int run_golden(const GoldenOptions& o) {
   const render::GlBackend backend = o.physics_only ? render::GlBackend::osmesa : parse_backend_option(o.gl);
   const std::unique_ptr<render::GlContext> ctx = o.physics_only ? nullptr : render::create_gl_context(backend);
   const scene::Scene s = load_scene_verbose(o.scene);
-  std::vector<int> msaas;
-  if (o.msaa.empty()) msaas.push_back(s.render.output.msaa);
+  std::vector<AaSetting> aas;
+  if (!o.msaa.empty() && !o.aa.empty()) throw InputError("--msaa and --aa: choose one (--aa msaa4 is --msaa 4)");
+  if (o.msaa.empty() && o.aa.empty()) aas.push_back(aa_setting(s.render.output));
   for (const std::string& m : split_list(o.msaa)) {
     if (m != "0" && m != "2" && m != "4") throw InputError("--msaa: expected a list of 0, 2, 4, found '" + m + "'");
-    msaas.push_back(std::stoi(m));
+    aas.push_back(parse_aa_setting("msaa" + m, "--msaa"));
   }
+  for (const std::string& a : split_list(o.aa)) aas.push_back(parse_aa_setting(a, "--aa"));
   const double fps = s.render.output.fps;
   const scene::FrameClock clock = scene::frame_clock(s, fps);
   const std::vector<long> ks = golden_frames(o.at, o.frames, clock);
@@ -185,17 +187,17 @@ int run_golden(const GoldenOptions& o) {
 
   if (ctx) {
     const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
-    for (int msaa : msaas) {
+    for (const AaSetting& aa : aas) {
       int samples = 0;
-      const std::vector<io::Image> images = frames.render(*ctx, ks, o.width, o.height, msaa, &samples);
+      const std::vector<io::Image> images = frames.render(*ctx, ks, o.width, o.height, aa, &samples);
       for (std::size_t i = 0; i < ks.size(); ++i) {
         const long k = ks[i];
         char base[160];
-        std::snprintf(base, sizeof base, "%s_f%06ld_msaa%d", s.name.c_str(), k, msaa);
+        std::snprintf(base, sizeof base, "%s_f%06ld_%s", s.name.c_str(), k, aa.name().c_str());
         const fs::path png = dir / (std::string(base) + ".png"), side = dir / (std::string(base) + ".json");
         char what[200];
-        std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) msaa %d %dx%d", s.name.c_str(),
-                      clock.time(k), k, msaa, o.width, o.height);
+        std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) %s %dx%d", s.name.c_str(), clock.time(k), k,
+                      aa.name().c_str(), o.width, o.height);
         const io::Image& actual = images[i];
         std::optional<io::Image> expected;
         std::string read_error;
@@ -207,11 +209,12 @@ int run_golden(const GoldenOptions& o) {
           }
         }
         if (o.update) {
-          const io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
-                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", msaa},
+          io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
+                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", aa.samples()},
                            {"samples", samples}, {"gl_backend", render::to_string(backend)},
                            {"gl_renderer", gl_renderer}, {"gl_version", gl_version},
                            {"tumble_version", TUMBLE_VERSION}};
+          if (aa.fxaa()) j["aa"] = "fxaa";  // msaa goldens keep their sidecars as they were
           const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
                             expected->rgb == actual.rgb;
           const std::optional<io::Json> old_side = io::read_json_file(side);
@@ -275,10 +278,11 @@ void add_golden_command(CLI::App& app, Action& action) {
   cmd->add_option("--at", o->at,
                   "Times in s, comma-separated (decimals or fractions such as 1/30); each picks the nearest frame");
   cmd->add_option("--frames", o->frames, "Frame numbers instead of --at, comma-separated (frame k shows t = k/fps)");
-  cmd->add_option("--dir", o->dir, "Folder of the goldens (<name>_f<frame>_msaa<N>.png/.json, <name>.trajectory.csv)")
+  cmd->add_option("--dir", o->dir, "Folder of the goldens (<name>_f<frame>_msaa<N>.png/.json or _fxaa, <name>.trajectory.csv)")
       ->required();
   cmd->add_flag("--update", o->update, "Write the goldens from this run instead of checking them");
-  cmd->add_option("--msaa", o->msaa, "MSAA samples, a list of 0, 2, 4 (default: the scene's)");
+  cmd->add_option("--msaa", o->msaa, "MSAA samples, a list of 0, 2, 4 (default: the scene's aa)");
+  cmd->add_option("--aa", o->aa, "Anti-aliasing, a list of fxaa, none, msaa2, msaa4 (default: the scene's)");
   cmd->add_option("--width", o->width, "Image width, px (default 320)");
   cmd->add_option("--height", o->height, "Image height, px (default 240)");
   cmd->add_option("--report", o->report, "Folder of the failure report (default golden-report/<scene name>)");

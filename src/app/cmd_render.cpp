@@ -34,12 +34,15 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderOptions {
-  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png";
+  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png", aa;
   std::optional<int> width, height, msaa;
   std::optional<double> fps;
   bool resume = false, force = false;
 };
 
+/// What --quality caps (unless --aa or --msaa say otherwise): MSAA samples
+/// (0: no anti-aliasing at all) and the video's CRF. FXAA costs about as
+/// much as no anti-aliasing, so medium and high keep a scene's fxaa.
 struct Quality {
   int msaa, crf;
 };
@@ -59,6 +62,9 @@ std::vector<scene::Override> scene_overrides(const RenderOptions& o) {
   if (o.height) v.push_back({"--height", "output.height", static_cast<long long>(*o.height)});
   if (o.fps) v.push_back({"--fps", "output.fps", *o.fps});
   if (o.msaa) v.push_back({"--msaa", "output.msaa", static_cast<long long>(*o.msaa)});
+  // --msaa N alone means what it always did: N samples, 0 none.
+  if (o.msaa && o.aa.empty()) v.push_back({"--msaa", "output.aa", std::string(*o.msaa > 0 ? "msaa" : "none")});
+  if (!o.aa.empty()) v.push_back({"--aa", "output.aa", o.aa});
   if (!o.video.empty()) v.push_back({"--video", "output.video", o.video});
   return v;
 }
@@ -85,8 +91,10 @@ RenderPlan plan_render(const RenderOptions& o) {
                      "choose --video mp4 or gif");
   if (o.frames_out == "none" && !o.frames.empty())
     throw InputError("--frames-out none streams the whole video; --frames needs PNG frames (--frames-out png)");
-  if (o.quality != "high" || !o.msaa) out.msaa = std::min(out.msaa, q.msaa);
-  if (o.msaa) out.msaa = *o.msaa;
+  if (!o.msaa && o.aa.empty()) {
+    if (q.msaa == 0) out.aa = scene::Antialias::none;
+    out.msaa = std::min(out.msaa, q.msaa);
+  }
   const long count = scene::frame_clock(s, out.fps).count();
   return {std::move(s), q, backend, count};
 }
@@ -165,7 +173,8 @@ int run_render(const RenderOptions& o) {
 
   const render::GlBackend backend = plan.backend;
   auto ctx = render::create_gl_context(backend);
-  render::Renderer renderer(*ctx, out.width, out.height, out.msaa);
+  const AaSetting aa = aa_setting(out);
+  render::Renderer renderer(*ctx, out.width, out.height, aa.samples(), aa.fxaa());
 
   for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
   for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
@@ -173,6 +182,7 @@ int run_render(const RenderOptions& o) {
   man.fps = fps;
   man.width = out.width;
   man.height = out.height;
+  man.aa = std::string(scene::antialias_name(out.aa));
   man.msaa = renderer.samples();
   man.frame_count = count;
   man.first = first;
@@ -213,10 +223,11 @@ int run_render(const RenderOptions& o) {
       if (resume && fs::exists(io::frame_path(dir, k), ec)) {
         ++skipped;  // written whole by an earlier run (rename is atomic)
       } else {
-        // Reuse a written frame's buffer: a fresh 2.7 MB image per frame costs page faults.
-        io::Image img = encoder.recycle();
-        renderer.render(builder.build(k), img);
-        encoder.submit(io::frame_path(dir, k), std::move(img));
+        // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
+        // page faults. The encoder's threads finish it (FXAA) while we draw on.
+        render::RawFrame raw = encoder.recycle_raw();
+        renderer.render(builder.build(k), raw);
+        encoder.submit(io::frame_path(dir, k), std::move(raw));
         ++drawn;
       }
       progress.update(k - first + 1);
@@ -298,8 +309,12 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--frames-out", o->frames_out,
                   "png (default: frame files, then the video from them) or none (frames piped to ffmpeg as raw "
                   "RGB, only the video is written; an interrupted run keeps nothing)");
-  cmd->add_option("--quality", o->quality, "low (no MSAA, CRF 28), medium (2x, CRF 23), high (4x, CRF 18)");
-  cmd->add_option("--msaa", o->msaa, "MSAA samples 0, 2 or 4 (overrides --quality)");
+  cmd->add_option("--quality", o->quality,
+                  "low (no anti-aliasing, CRF 28), medium (the scene's aa, MSAA at most 2x, CRF 23), high (the "
+                  "scene's aa, default fxaa; CRF 18)");
+  cmd->add_option("--aa", o->aa, "Anti-aliasing fxaa, msaa or none (overrides the scene's aa and --quality)");
+  cmd->add_option("--msaa", o->msaa,
+                  "MSAA samples 0, 2 or 4 (overrides --quality; alone it also sets aa: msaa, or none for 0)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
   cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
   cmd->add_flag("--resume", o->resume,

@@ -9,6 +9,20 @@
 
 namespace tumble::app {
 
+std::string AaSetting::name() const {
+  if (mode == scene::Antialias::fxaa) return "fxaa";
+  return "msaa" + std::to_string(samples());
+}
+
+AaSetting aa_setting(const scene::OutputConfig& out) { return {out.aa, out.msaa}; }
+
+AaSetting parse_aa_setting(const std::string& text, const std::string& option) {
+  if (text == "fxaa") return {scene::Antialias::fxaa, 0};
+  if (text == "none" || text == "msaa0") return {scene::Antialias::none, 0};
+  if (text == "msaa2" || text == "msaa4") return {scene::Antialias::msaa, text.back() - '0'};
+  throw InputError(option + ": expected fxaa, none, msaa0, msaa2 or msaa4, found '" + text + "'");
+}
+
 render::GlBackend parse_backend_option(const std::string& gl) {
   const std::string where = gl.empty() ? "TUMBLE_GL" : "--gl";
   try {
@@ -29,9 +43,9 @@ SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
 }
 
 std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks, int width,
-                                               int height, int msaa, int* samples_used) const {
+                                           int height, AaSetting aa, int* samples_used) const {
   const FrameBuilder builder(scene_, runs_, fps_, width, height);
-  render::Renderer renderer(ctx, width, height, msaa);
+  render::Renderer renderer(ctx, width, height, aa.samples(), aa.fxaa());
   if (samples_used) *samples_used = renderer.samples();
   std::vector<io::Image> out;
   for (long k : ks) {

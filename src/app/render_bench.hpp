@@ -1,27 +1,47 @@
-// `tumble bench --render`: end-to-end frames per second of the demo, and the
-// encode-only limit on the same frames, measured in one run.
+// `tumble bench --render`: end-to-end frames per second of the demo at the
+// default ("high": FXAA) and at 4x MSAA, the encode-only limit on the same
+// frames, both video paths, and FXAA's pixels against 4x MSAA's, in one run.
 #pragma once
 
 #include <filesystem>
 #include <ostream>
+#include <string>
+#include <vector>
 
 namespace tumble::app {
 
+/// One scene's anti-aliasing measured against 4x MSAA (the reference), over
+/// a few frames: mean RMS difference (0..255 levels) and the mean fraction of
+/// pixels whose largest channel differs by more than 8 levels.
+struct AaQuality {
+  std::string scene;
+  int frames = 0;
+  double fxaa_rms = 0, fxaa_over = 0;  ///< FXAA ("high") against 4x MSAA
+  double none_rms = 0, none_over = 0;  ///< no anti-aliasing against 4x MSAA
+};
+
 struct RenderBenchResult {
   long frames = 0;
-  double end_to_end_fps = 0;  ///< simulate + draw + read back + encode + write, frames/s
+  double end_to_end_fps = 0;  ///< "high" (FXAA): simulate + draw + read back + encode + write, frames/s
   double encode_only_fps = 0; ///< encode + write of the same frames, frames/s
-  double render_ms = 0;       ///< mean draw + read-back time per frame, ms
+  double render_ms = 0;       ///< mean build + draw + read-back time per frame ("high"), ms
+  double cpu_ms = 0;          ///< CPU time (all threads, user + system) per frame end to end ("high"), ms
+  double msaa_end_to_end_fps = 0, msaa_render_ms = 0, msaa_cpu_ms = 0;  ///< the same with 4x MSAA
   /// Frames to an H.264 video, frames/s (0 without ffmpeg): through PNG files
   /// (end to end, then ffmpeg reads them), and piped raw (--frames-out none).
   double png_video_fps = 0, stream_video_fps = 0;
   /// The same two paths in CPU time (tumble + ffmpeg, user + system), ms per frame.
   double png_video_cpu_ms = 0, stream_video_cpu_ms = 0;
+  std::vector<AaQuality> quality;
+  std::string markdown;       ///< what render.md holds
 };
 
-/// Renders the first `frames` frames of `scene_path` at 1280×720 with 4× MSAA
-/// into `out_dir`, then encodes the same images again. Writes render.md there.
+/// Renders the first `frames` frames of `scene_path` at 1280×720 into
+/// `out_dir` with FXAA and with 4x MSAA, encodes the same images again, and
+/// compares FXAA and no anti-aliasing with 4x MSAA on `scene_path` and
+/// `quality_scenes`. Writes render.md there.
 RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long frames,
-                                   const std::filesystem::path& out_dir, std::ostream& log);
+                                   const std::filesystem::path& out_dir, std::ostream& log,
+                                   const std::vector<std::filesystem::path>& quality_scenes = {});
 
 }  // namespace tumble::app

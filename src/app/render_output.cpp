@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/frame_renderer.hpp"
 #include "app/manifest_parts.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -20,7 +21,7 @@ std::string Manifest::json() const {
   return io::json_text(io::Json{
       {"tool", "tumble"}, {"version", TUMBLE_VERSION}, {"scene", scene_path}, {"scene_name", scene_name},
       {"scene_hash", scene_hash}, {"settings_hash", settings_hash}, {"method", method}, {"step", step}, {"dt", dt},
-      {"fps", fps}, {"width", width}, {"height", height}, {"msaa", msaa}, {"frame_count", frame_count},
+      {"fps", fps}, {"width", width}, {"height", height}, {"aa", aa}, {"msaa", msaa}, {"frame_count", frame_count},
       {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
       {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", or_null(video)},
       {"video_error", or_null(video_error)}, {"video_format", video_format}, {"crf", crf},
@@ -64,7 +65,8 @@ std::string settings_hash(const scene::Scene& s, const std::string& method) {
   const scene::OutputConfig& out = s.render.output;
   std::ostringstream k;
   k << s.content_hash << '|' << method << '|' << format_double(s.simulation.dt) << '|' << format_double(out.fps)
-    << '|' << out.width << 'x' << out.height << '|' << out.msaa;
+    << '|' << out.width << 'x' << out.height << '|' << aa_setting(out).samples();
+  if (out.aa == scene::Antialias::fxaa) k << "|fxaa";  // MSAA and none hash as before `aa` existed
   return scene::fnv1a_hex(k.str());
 }
 

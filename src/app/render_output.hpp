@@ -20,7 +20,8 @@ struct Manifest {
   std::string video_format = "none";  ///< "mp4", "gif" or "none": what a complete render includes
   int crf = 18;             ///< the video's H.264 CRF (from --quality)
   double dt = 0, fps = 0;  // dt: the scene's; `step` says what each run really used
-  int width = 0, height = 0, msaa = 0;
+  std::string aa = "fxaa";  ///< "fxaa", "msaa" or "none"
+  int width = 0, height = 0, msaa = 0;  ///< msaa: samples used (0 unless aa is msaa)
   long frame_count = 0, first = 0, last = -1, written = 0;
   bool complete = false;
   /// Replacing an earlier render of this scene (edited): until the last frame

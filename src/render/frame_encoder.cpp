@@ -33,11 +33,19 @@ void FrameEncoder::rethrow_locked(std::unique_lock<std::mutex>& lock) {
 }
 
 void FrameEncoder::submit(std::filesystem::path path, io::Image image) {
+  push({std::move(path), std::move(image), {}});
+}
+
+void FrameEncoder::submit(std::filesystem::path path, RawFrame frame) {
+  push({std::move(path), {}, std::move(frame)});
+}
+
+void FrameEncoder::push(Job job) {
   std::unique_lock lock(mutex_);
   rethrow_locked(lock);
   space_or_idle_.wait(lock, [&] { return queue_.size() < capacity_ || error_; });
   rethrow_locked(lock);
-  queue_.emplace_back(std::move(path), std::move(image));
+  queue_.push_back(std::move(job));
   lock.unlock();
   work_ready_.notify_one();
 }
@@ -61,7 +69,17 @@ io::Image FrameEncoder::recycle() {
   return img;
 }
 
+RawFrame FrameEncoder::recycle_raw() {
+  const std::lock_guard lock(mutex_);
+  if (spare_raw_.empty()) return {};
+  RawFrame raw = std::move(spare_raw_.back());
+  spare_raw_.pop_back();
+  return raw;
+}
+
 void FrameEncoder::worker() {
+  Fxaa fxaa;           // this worker's scratch
+  io::Image finished;  // a raw frame's image, reused
   std::unique_lock lock(mutex_);
   for (;;) {
     work_ready_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
@@ -73,8 +91,11 @@ void FrameEncoder::worker() {
     space_or_idle_.notify_all();  // a slot is free
 
     std::exception_ptr failure;
+    const bool raw = !job.raw.rgba.empty();
     try {
-      io::write_png_atomic(job.first, job.second);
+      // One thread each: the other workers and the drawing use the other core.
+      if (raw) finish_frame(job.raw, finished, fxaa, 1);
+      io::write_png_atomic(job.path, raw ? finished : job.image);
     } catch (...) {
       failure = std::current_exception();
     }
@@ -87,7 +108,8 @@ void FrameEncoder::worker() {
       ++written_;
     }
     // Bounded: at most one spare per frame that can be in the pipeline.
-    if (spare_.size() < max_spare_) spare_.push_back(std::move(job.second));
+    if (raw && spare_raw_.size() < max_spare_) spare_raw_.push_back(std::move(job.raw));
+    if (!raw && spare_.size() < max_spare_) spare_.push_back(std::move(job.image));
     space_or_idle_.notify_all();
   }
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/image.hpp"
+#include "render/fxaa.hpp"
 
 namespace tumble::render {
 
@@ -31,6 +32,10 @@ class FrameEncoder {
   /// Rethrows the first error of an earlier frame, if any.
   void submit(std::filesystem::path path, io::Image image);
 
+  /// Same for a frame as read back: a worker finishes it (FXAA, or the plain
+  /// conversion) before the encode, so that runs while the caller draws on.
+  void submit(std::filesystem::path path, RawFrame frame);
+
   /// Waits until every submitted frame is on disk; rethrows the first error.
   void flush();
 
@@ -40,16 +45,24 @@ class FrameEncoder {
   /// render the next frame into: fresh multi-MB buffers are page-faulted in
   /// on every frame otherwise, which costs as much as the PNG encode.
   io::Image recycle();
+  /// The same for read-back buffers (submit(path, RawFrame)).
+  RawFrame recycle_raw();
 
  private:
   void worker();
   void rethrow_locked(std::unique_lock<std::mutex>& lock);
 
-  using Job = std::pair<std::filesystem::path, io::Image>;
+  struct Job {
+    std::filesystem::path path;
+    io::Image image;  // what is written, unless `raw` holds the frame
+    RawFrame raw;     // rgba non-empty: finish it first
+  };
+  void push(Job job);
   mutable std::mutex mutex_;
   std::condition_variable work_ready_, space_or_idle_;
   std::deque<Job> queue_;
   std::vector<io::Image> spare_;  // written frames, kept for recycle()
+  std::vector<RawFrame> spare_raw_;
   std::size_t capacity_;
   std::size_t max_spare_;  // fixed before the workers start (they read it)
   std::size_t in_flight_ = 0;

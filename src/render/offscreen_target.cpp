@@ -67,7 +67,7 @@ void OffscreenTarget::bind_for_drawing() const {
   gl_.Viewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::read_rgb(io::Image& img) {
+void OffscreenTarget::read_rgba(std::vector<std::uint8_t>& rgba) {
   if (samples_ > 0) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.id());
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.id());
@@ -81,36 +81,10 @@ void OffscreenTarget::read_rgb(io::Image& img) {
   // RGBA matches the renderbuffer, so Mesa copies rows straight out; asking
   // for GL_RGB takes its generic per-pixel conversion path (~10x slower).
   const std::size_t w = static_cast<std::size_t>(width_);
-  rgba_.resize(w * 4 * height_);
-  gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba_.data());
+  rgba.resize(w * 4 * height_);
+  gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (const GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
     throw std::runtime_error("glReadPixels failed, GL error " + std::to_string(err));
-  }
-
-  // GL's origin is the bottom-left corner; images are stored top-down.
-  img.width = width_;
-  img.height = height_;
-  img.rgb.resize(w * 3 * height_);
-  // Four pixels at a time as three 32-bit words (a byte loop is ~5x slower).
-  for (int y = 0; y < height_; ++y) {
-    const std::uint8_t* src = rgba_.data() + w * 4 * (height_ - 1 - y);
-    std::uint8_t* dst = img.rgb.data() + w * 3 * y;
-    std::size_t x = 0;
-    if constexpr (std::endian::native == std::endian::little) {
-      for (; x + 4 <= w; x += 4, src += 16, dst += 12) {
-        std::uint32_t p[4];
-        std::memcpy(p, src, sizeof p);
-        const std::uint32_t out[3] = {(p[0] & 0xFFFFFFu) | (p[1] << 24),
-                                      ((p[1] >> 8) & 0xFFFFu) | (p[2] << 16),
-                                      ((p[2] >> 16) & 0xFFu) | (p[3] << 8)};
-        std::memcpy(dst, out, sizeof out);
-      }
-    }
-    for (; x < w; ++x, src += 4, dst += 3) {
-      dst[0] = src[0];
-      dst[1] = src[1];
-      dst[2] = src[2];
-    }
   }
 }
 

@@ -18,9 +18,10 @@ class OffscreenTarget {
 
   /// Binds the framebuffer the scene should be drawn into.
   void bind_for_drawing() const;
-  /// Resolves MSAA (if any) and reads back a top-down RGB image into `out`,
-  /// reusing its storage (fresh multi-MB buffers cost page faults per frame).
-  void read_rgb(io::Image& out);
+  /// Resolves MSAA (if any) and reads back RGBA8, bottom row first (GL's
+  /// order), into `out`, reusing its storage (fresh multi-MB buffers cost
+  /// page faults per frame). render::finish_frame makes the image of it.
+  void read_rgba(std::vector<std::uint8_t>& out);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -31,7 +32,6 @@ class OffscreenTarget {
   int width_, height_, samples_;
   GlObject ms_fbo_, ms_color_, ms_depth_;        // multisampled (samples_ > 0)
   GlObject resolve_fbo_, resolve_color_, resolve_depth_;  // single-sample
-  std::vector<std::uint8_t> rgba_;  // readback staging, reused across frames
 };
 
 }  // namespace tumble::render

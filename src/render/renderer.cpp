@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/font_atlas.hpp"
+#include "render/fxaa.hpp"
 #include "render/gl_functions.hpp"
 #include "render/instanced_mesh.hpp"
 #include "render/line_pass.hpp"
@@ -37,14 +38,19 @@ constexpr float kOpaqueSpecular = 0.28f;
 // Everything GL lives here, so renderer.hpp stays free of GL headers.
 class Renderer::Impl {
  public:
-  Impl(GlContext& context, int width, int height, int msaa,
+  Impl(GlContext& context, int width, int height, int msaa, bool fxaa,
        const std::filesystem::path& resource_dir);
   ~Impl();
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
-  void render(const viz::DrawList& frame, io::Image& out);
+  void render(const viz::DrawList& frame, RawFrame& out);
+  void render(const viz::DrawList& frame, io::Image& out) {
+    render(frame, raw_);
+    finish_frame(raw_, out, post_);
+  }
   const OffscreenTarget& target() const { return target_; }
+  bool fxaa() const { return fxaa_; }
 
  private:
   void draw_view(const viz::View& view, const PixelRect& rect, const glm::vec3& background);
@@ -66,12 +72,15 @@ class Renderer::Impl {
   SurfacePass surfaces_;
   LinePass lines_;
   TextPass text_;
+  bool fxaa_;    // FXAA on the read-back frame, smooth lines, text marked in alpha
+  Fxaa post_;    // its scratch, for render(..., Image&)
+  RawFrame raw_;
   GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
 };
 
-Renderer::Renderer(GlContext& context, int width, int height, int msaa,
+Renderer::Renderer(GlContext& context, int width, int height, int msaa, bool fxaa,
                    const std::filesystem::path& resource_dir)
-    : impl_(std::make_unique<Impl>(context, width, height, msaa, resource_dir)) {}
+    : impl_(std::make_unique<Impl>(context, width, height, msaa, fxaa, resource_dir)) {}
 
 Renderer::~Renderer() = default;
 
@@ -82,12 +91,14 @@ io::Image Renderer::render(const viz::DrawList& frame) {
 }
 
 void Renderer::render(const viz::DrawList& frame, io::Image& out) { impl_->render(frame, out); }
+void Renderer::render(const viz::DrawList& frame, RawFrame& out) { impl_->render(frame, out); }
 
 int Renderer::width() const { return impl_->target().width(); }
 int Renderer::height() const { return impl_->target().height(); }
 int Renderer::samples() const { return impl_->target().samples(); }
+bool Renderer::fxaa() const { return impl_->fxaa(); }
 
-Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
+Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa, bool fxaa,
                      const std::filesystem::path& resource_dir)
     : context_((context.make_current(), context)),  // current before any GL call
       gl_(context.gl()),
@@ -102,6 +113,7 @@ Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa,
       surfaces_(gl_, resource_dir / "shaders"),
       lines_(gl_, resource_dir / "shaders"),
       text_(gl_, resource_dir / "shaders", font_),
+      fxaa_(fxaa),
       empty_vao_(make_vertex_array(gl_)) {}
 
 // GL objects are freed by their members; they need our context current.
@@ -118,10 +130,14 @@ void Renderer::Impl::set_viewport(const PixelRect& rect) {
   gl_.Scissor(rect.x, gl_y, rect.width, rect.height);
 }
 
-void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
+void Renderer::Impl::render(const viz::DrawList& frame, RawFrame& out) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
+  // Without MSAA's samples, lines get smooth coverage (Mesa's anti-aliased
+  // line stage); set every frame, another renderer may share the context.
+  if (fxaa_) gl_.Enable(GL_LINE_SMOOTH);
+  else gl_.Disable(GL_LINE_SMOOTH);
   // One full clear (llvmpipe's fast path) gives every view its flat lower
   // background and depth; views then only paint their sky gradient.
   const glm::vec3 background(frame.background);
@@ -146,7 +162,10 @@ void Renderer::Impl::render(const viz::DrawList& frame, io::Image& out) {
   draw_separators(rects, background * 0.82f);
   draw_text(frame.texts, {}, full);
   gl_.Disable(GL_SCISSOR_TEST);
-  target_.read_rgb(out);
+  target_.read_rgba(out.rgba);
+  out.width = target_.width();
+  out.height = target_.height();
+  out.fxaa = fxaa_;
 }
 
 void Renderer::Impl::draw_background(const glm::vec3& background) {
@@ -290,7 +309,11 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
   }
   if (quads.empty()) return;
   gl_.Disable(GL_DEPTH_TEST);
+  // For FXAA, text lowers the frame's alpha (everything else leaves it at 1):
+  // FXAA leaves those pixels as the glyph atlas anti-aliased them.
+  if (fxaa_) gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
   text_.draw(quads, {float(rect.width), float(rect.height)});
+  if (fxaa_) gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 }
 
 }  // namespace tumble::render

@@ -14,9 +14,20 @@ void read_output(TableReader& r, Scene& s) {
   o.height = static_cast<int>(r.integer("height", 16, 16384).value_or(o.height));
   Range fps = Range::closed(1e-3, 1000);
   o.fps = r.number("fps", fps).value_or(o.fps);
-  if (auto m = r.integer("msaa", 0, 4)) {
+  const std::optional<long long> m = r.integer("msaa", 0, 4);
+  if (m) {
     if (*m == 0 || *m == 2 || *m == 4) o.msaa = static_cast<int>(*m);
     else r.error("msaa", "expected 0, 2 or 4, found " + std::to_string(*m));
+  }
+  if (auto a = r.string("aa")) {
+    if (*a == "fxaa") o.aa = Antialias::fxaa;
+    else if (*a == "msaa") o.aa = Antialias::msaa;
+    else if (*a == "none") o.aa = Antialias::none;
+    else r.error("aa", "expected \"fxaa\", \"msaa\" or \"none\", found \"" + *a + "\"");
+    if (o.aa == Antialias::msaa && m && *m == 0) r.error("msaa", "aa = \"msaa\" needs msaa = 2 or 4, found 0");
+  } else if (m) {
+    // Scenes written before `aa` existed: msaa = N meant N samples, 0 none.
+    o.aa = o.msaa > 0 ? Antialias::msaa : Antialias::none;
   }
   o.background = r.vec3("background", Range::closed(0, 1)).value_or(o.background);
   s.render.explain.time_scale = r.number("time_scale", Range::closed(1e-4, 1e4)).value_or(1.0);
@@ -113,7 +124,7 @@ void read_compare(TableReader& r, Scene& s) {
 void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   scene.render.output.fps = scene.simulation.fps;
   if (auto t = root.subtable("output")) {
-    TableReader r(*t, "output", ctx.diag, {"width", "height", "fps", "msaa", "background", "video", "time_scale"});
+    TableReader r(*t, "output", ctx.diag, {"width", "height", "fps", "aa", "msaa", "background", "video", "time_scale"});
     read_output(r, scene);
   }
   if (auto t = root.subtable("camera")) {
@@ -132,3 +143,16 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
 }
 
 }  // namespace tumble::scene::detail
+
+namespace tumble::scene {
+
+std::string_view antialias_name(Antialias a) {
+  switch (a) {
+    case Antialias::fxaa: return "fxaa";
+    case Antialias::msaa: return "msaa";
+    case Antialias::none: return "none";
+  }
+  return "none";
+}
+
+}  // namespace tumble::scene

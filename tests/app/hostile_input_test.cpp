@@ -129,6 +129,8 @@ TEST_F(BadOption, WidthZeroIsRefusedNotIgnored) {
   expect_refused(render("--height 99999"), "--height: error: output.height:");
   expect_refused(render("--msaa 3"), "--msaa: error: output.msaa: expected 0, 2 or 4, found 3");
   expect_refused(render("--video avi"), "--video: error: output.video:");
+  expect_refused(render("--aa smaa"), "--aa: error: output.aa: expected \"fxaa\", \"msaa\" or \"none\", found \"smaa\"");
+  expect_refused(render("--aa msaa --msaa 0"), "--msaa: error: output.msaa: aa = \"msaa\" needs msaa = 2 or 4, found 0");
 }
 
 TEST_F(BadOption, UnknownGlBackendIsAnInputErrorBeforeTheSimulation) {

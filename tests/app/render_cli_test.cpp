@@ -1,6 +1,8 @@
 // `tumble render` end to end: frames, manifest, frame ranges, divergence.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "cli_fixture.hpp"
 
 namespace {
@@ -26,6 +28,25 @@ TEST_F(RenderCli, RenderWritesEveryFrameAndACompleteManifest) {
   EXPECT_NE(manifest.find("\"gl_renderer\": \"llvmpipe"), std::string::npos) << manifest;
   for (const auto& e : fs::directory_iterator(dir_ / "full"))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+// The manifest names the anti-aliasing used. tiny_render.toml says msaa = 4
+// (no aa key): 4x MSAA, as before `aa` existed; --msaa N alone means N
+// samples (0: none), --quality low none, medium at most 2 samples.
+TEST_F(RenderCli, ManifestNamesTheAntialiasing) {
+  TUMBLE_NEED_GL();
+  const std::tuple<const char*, const char*, int> cases[] = {
+      {"", "msaa", 4},          {"--aa fxaa", "fxaa", 0},         {"--msaa 0", "none", 0},
+      {"--quality low", "none", 0}, {"--quality medium", "msaa", 2}, {"--aa msaa --msaa 2", "msaa", 2}};
+  int i = 0;
+  for (const auto& [args, aa, samples] : cases) {
+    const std::string out = dir_.string() + "/aa" + std::to_string(i++);
+    const Result r = run("render " + data("tiny_render.toml") + " -o '" + out + "' --progress none " + args);
+    ASSERT_EQ(r.code, 0) << args << r.err;
+    const std::string manifest = slurp(fs::path(out) / "manifest.json");
+    EXPECT_NE(manifest.find("\"aa\": \"" + std::string(aa) + "\""), std::string::npos) << args << "\n" << manifest;
+    EXPECT_NE(manifest.find("\"msaa\": " + std::to_string(samples) + ","), std::string::npos) << args << "\n" << manifest;
+  }
 }
 
 TEST_F(RenderCli, FrameRangeIsByteIdenticalToTheFullRun) {

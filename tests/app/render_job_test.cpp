@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "app/frame_renderer.hpp"
 #include "app/render_job.hpp"
+#include "core/error.hpp"
 #include "core/dynamics.hpp"
 #include "scene/scene.hpp"
 #include "viz/draw_list.hpp"
@@ -114,3 +116,32 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
 }
 
 }  // namespace
+
+// The anti-aliasing cases of `tumble golden --aa` and their file names.
+TEST(AaSetting, ParsesAndNamesEveryCase) {
+  using tumble::app::parse_aa_setting;
+  using tumble::scene::Antialias;
+  const auto fx = parse_aa_setting("fxaa", "--aa");
+  EXPECT_TRUE(fx.fxaa());
+  EXPECT_EQ(fx.samples(), 0);
+  EXPECT_EQ(fx.name(), "fxaa");
+  const auto m4 = parse_aa_setting("msaa4", "--aa");
+  EXPECT_EQ(m4.mode, Antialias::msaa);
+  EXPECT_EQ(m4.samples(), 4);
+  EXPECT_EQ(m4.name(), "msaa4");
+  EXPECT_EQ(parse_aa_setting("msaa2", "--aa").samples(), 2);
+  // none is the old msaa0: its goldens keep their names.
+  EXPECT_EQ(parse_aa_setting("none", "--aa").name(), "msaa0");
+  EXPECT_EQ(parse_aa_setting("msaa0", "--aa").mode, Antialias::none);
+  // A scene's msaa count does not leak into fxaa or none.
+  EXPECT_EQ((tumble::app::AaSetting{Antialias::fxaa, 4}.samples()), 0);
+  EXPECT_EQ((tumble::app::AaSetting{Antialias::none, 4}.name()), "msaa0");
+  for (const char* bad : {"msaa3", "smaa", "", "FXAA", "msaa"}) {
+    try {
+      parse_aa_setting(bad, "--aa");
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const tumble::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("--aa: expected fxaa, none, msaa0, msaa2 or msaa4"), std::string::npos);
+    }
+  }
+}

@@ -2,6 +2,7 @@
 // renderer, and the comparison itself (library and `tumble compare`/`golden`).
 // TUMBLE_UPDATE_GOLDENS=1 turns the scene tests into `tumble golden --update`.
 #include <cstdlib>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -51,10 +52,10 @@ TEST_P(Scenes, Physics) {
 }
 
 TEST_P(Scenes, Pixels) {
-  const Result r = run(golden_cmd(GetParam(), "--msaa 4,0 --width 320 --height 240", ""));
+  const Result r = run(golden_cmd(GetParam(), "--aa msaa4,none,fxaa --width 320 --height 240", ""));
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   if (!updating()) {
-    EXPECT_NE(r.out.find("all 7 cases pass"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("all 10 cases pass"), std::string::npos) << r.out;
   }
 }
 
@@ -87,12 +88,13 @@ TEST(Determinism, SameFrameRenderedTwiceInOneProcess) {
   const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes/stable_spin.toml");
   const tumble::app::SceneFrames frames(s, 150);
   auto ctx = tumble::render::create_gl_context(tumble::render::default_gl_backend());
-  for (int msaa : {4, 0}) {
+  for (const char* name : {"msaa4", "none", "fxaa"}) {
+    const tumble::app::AaSetting aa = tumble::app::parse_aa_setting(name, "test");
     // Frame 150, another frame, frame 150 again (renderer state reused), then a fresh renderer.
-    const auto a = frames.render(*ctx, {150, 30, 150}, 320, 240, msaa);
-    const auto b = frames.render(*ctx, {150}, 320, 240, msaa);
-    EXPECT_TRUE(a[0].rgb == a[2].rgb) << "msaa " << msaa;
-    EXPECT_TRUE(a[0].rgb == b[0].rgb) << "msaa " << msaa;
+    const auto a = frames.render(*ctx, {150, 30, 150}, 320, 240, aa);
+    const auto b = frames.render(*ctx, {150}, 320, 240, aa);
+    EXPECT_TRUE(a[0].rgb == a[2].rgb) << name;
+    EXPECT_TRUE(a[0].rgb == b[0].rgb) << name;
     EXPECT_FALSE(a[0].rgb == a[1].rgb) << "frames 150 and 30 should differ";
   }
 }
@@ -121,15 +123,18 @@ TEST_F(DeterminismCli, LpNumThreadsOneAndTwoGiveIdenticalBytes) {
 // The golden path draws what `tumble render` draws (fixed and automatic camera).
 TEST_F(DeterminismCli, GoldenFramesMatchTumbleRender) {
   if (updating()) GTEST_SKIP() << "updating goldens";
-  for (const auto& [sc, frame] : {std::pair{"dzhanibekov", 120}, std::pair{"stable_spin", 150}}) {
-    const std::string out = (dir_ / sc).string();
+  for (const auto& [sc, frame, aa] : {std::tuple{"dzhanibekov", 120, "msaa4"}, std::tuple{"stable_spin", 150, "msaa4"},
+                                     std::tuple{"dzhanibekov", 120, "fxaa"}}) {
+    const std::string out = (dir_ / (std::string(sc) + aa)).string();
+    const std::string aa_option = std::string(aa) == "fxaa" ? " --aa fxaa" : " --msaa 4";
     ASSERT_EQ(run("render " + scene((std::string(sc) + ".toml").c_str()) + " --frames " + std::to_string(frame) + ":" +
-                  std::to_string(frame) + " --width 320 --height 240 --msaa 4 --video none --progress none -o '" + out + "'")
+                  std::to_string(frame) + " --width 320 --height 240" + aa_option + " --video none --progress none -o '" +
+                  out + "'")
                   .code,
               0);
     const std::string name = tumble::io::frame_path("", frame).string();
     char golden[96];
-    std::snprintf(golden, sizeof golden, "%s_f%06d_msaa4.png", sc, frame);
+    std::snprintf(golden, sizeof golden, "%s_f%06d_%s.png", sc, frame, aa);
     const Result r = run("compare '" + out + "/" + name + "' '" + (kSource / "tests/golden" / sc / golden).string() + "'");
     EXPECT_EQ(r.code, 0) << r.out << r.err;
   }

@@ -75,5 +75,40 @@ TEST(FrameEncoder, DestructorDrainsQueue) {
   fs::remove_all(dir);
 }
 
+// A raw (read-back) frame is finished on a worker: the file holds what
+// finish_frame makes on the caller's thread, with FXAA and without, for
+// every frame whatever the number of workers.
+TEST(FrameEncoder, RawFramesAreFinishedLikeOnTheCallersThread) {
+  const fs::path dir = fresh_dir("encoder_raw");
+  auto raw = [](int i, bool fxaa) {
+    RawFrame f{std::vector<std::uint8_t>(std::size_t(48) * 32 * 4), 48, 32, fxaa};
+    for (int y = 0; y < 32; ++y)  // a slanted edge, so FXAA has work; bottom row first
+      for (int x = 0; x < 48; ++x)
+        for (int c = 0; c < 4; ++c) f.rgba[(std::size_t(y) * 48 + x) * 4 + c] = c == 3 ? 255 : 3 * y > x + i ? 20 : 230;
+    return f;
+  };
+  for (int threads : {1, 2}) {
+    {
+      FrameEncoder enc(threads, 2);
+      for (int i = 0; i < 6; ++i) enc.submit(dir / (std::to_string(i) + ".png"), raw(i, i % 2 == 0));
+      enc.flush();
+    }
+    for (int i = 0; i < 6; ++i) {
+      Fxaa fxaa;
+      Image want;
+      finish_frame(raw(i, i % 2 == 0), want, fxaa);
+      const Image got = read_png(dir / (std::to_string(i) + ".png"));
+      EXPECT_TRUE(got.rgb == want.rgb) << "frame " << i << ", " << threads << " thread(s)";
+      EXPECT_EQ(got.pixel(0, 0)[0], 20) << "top row: y = 31 is dark at x = 0";
+    }
+  }
+  Image plain, anti;
+  Fxaa fxaa;
+  finish_frame(raw(0, false), plain, fxaa);
+  finish_frame(raw(0, true), anti, fxaa);
+  EXPECT_FALSE(plain.rgb == anti.rgb) << "FXAA did nothing to the edge";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tumble::render

@@ -28,10 +28,12 @@ using io::write_png_atomic;
 struct Case {
   GlBackend backend;
   int msaa;
+  bool fxaa = false;
 };
 
 std::string case_name(const testing::TestParamInfo<Case>& info) {
-  return std::string(to_string(info.param.backend)) + "_msaa" + std::to_string(info.param.msaa);
+  return std::string(to_string(info.param.backend)) +
+         (info.param.fxaa ? std::string("_fxaa") : "_msaa" + std::to_string(info.param.msaa));
 }
 
 // Optional: TUMBLE_RENDER_TEST_OUT=<dir> keeps the frames for a visual check.
@@ -67,7 +69,7 @@ TEST_P(RenderTest, ReportsCoreContext) {
 
 TEST_P(RenderTest, AxisArrowsLandWhereProjected) {
   constexpr int kW = 160, kH = 120;
-  Renderer renderer(*context_, kW, kH, GetParam().msaa);
+  Renderer renderer(*context_, kW, kH, GetParam().msaa, GetParam().fxaa);
   const viz::DrawList dl = test::axis_arrows();
   const Image img = renderer.render(dl);
   ASSERT_EQ(img.width, kW);
@@ -105,7 +107,7 @@ TEST_P(RenderTest, AxisArrowsLandWhereProjected) {
 }
 
 TEST_P(RenderTest, SameDrawListGivesIdenticalBytes) {
-  Renderer renderer(*context_, 320, 240, GetParam().msaa);
+  Renderer renderer(*context_, 320, 240, GetParam().msaa, GetParam().fxaa);
   const viz::DrawList dl = test::showcase();
   const Image a = renderer.render(dl);
   const Image b = renderer.render(dl);
@@ -114,7 +116,7 @@ TEST_P(RenderTest, SameDrawListGivesIdenticalBytes) {
 }
 
 TEST_P(RenderTest, EmptyDrawListIsBackground) {
-  Renderer renderer(*context_, 64, 48, GetParam().msaa);
+  Renderer renderer(*context_, 64, 48, GetParam().msaa, GetParam().fxaa);
   viz::DrawList dl;
   dl.background = {0.2f, 0.4f, 0.6f, 1.0f};
   const Image img = renderer.render(dl);
@@ -129,7 +131,7 @@ TEST_P(RenderTest, EmptyDrawListIsBackground) {
 // one by one in world coordinates: culling leaves no holes.
 TEST_P(RenderTest, CulledParticleSetLooksLikeTheWholeCloud) {
   constexpr int kW = 240, kH = 180;
-  Renderer renderer(*context_, kW, kH, GetParam().msaa);
+  Renderer renderer(*context_, kW, kH, GetParam().msaa, GetParam().fxaa);
   const ParticleCloud cloud = make_box({0.8, 0.6, 0.5}, {16, 12, 10}, 1.0);  // spacing 0.05 m
   const float r = 0.0375f;  // 0.75 spacing: no gaps between neighbours to see deeper ones through
   std::vector<viz::Color> colors;
@@ -169,7 +171,7 @@ TEST_P(RenderTest, CulledParticleSetLooksLikeTheWholeCloud) {
 
 // Timing guard and a full-size frame for eyeballing (TUMBLE_RENDER_TEST_OUT).
 TEST_P(RenderTest, Showcase720pTiming) {
-  Renderer renderer(*context_, 1280, 720, GetParam().msaa);
+  Renderer renderer(*context_, 1280, 720, GetParam().msaa, GetParam().fxaa);
   const viz::DrawList dl = test::showcase();
   Image img = renderer.render(dl);  // warm-up: shader JIT, buffer allocation
   constexpr int kFrames = 5;
@@ -186,7 +188,8 @@ TEST_P(RenderTest, Showcase720pTiming) {
 
 INSTANTIATE_TEST_SUITE_P(Backends, RenderTest,
                          testing::Values(Case{GlBackend::osmesa, 0}, Case{GlBackend::osmesa, 4},
-                                         Case{GlBackend::egl, 0}, Case{GlBackend::egl, 4}),
+                                         Case{GlBackend::osmesa, 0, true}, Case{GlBackend::egl, 0},
+                                         Case{GlBackend::egl, 4}, Case{GlBackend::egl, 0, true}),
                          case_name);
 
 }  // namespace

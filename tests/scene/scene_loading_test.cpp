@@ -68,6 +68,7 @@ TEST(SceneKeys, DefaultsAndOverrides) {
   EXPECT_DOUBLE_EQ(s.simulation.dt, 1e-3);
   EXPECT_EQ(s.render.output.width, 1280);
   EXPECT_EQ(s.render.output.msaa, 4);
+  EXPECT_EQ(s.render.output.aa, scene::Antialias::fxaa);
   EXPECT_TRUE(s.render.camera.automatic);
   EXPECT_TRUE(s.render.draw.box);
   EXPECT_FALSE(s.render.draw.particles);
@@ -183,12 +184,28 @@ TEST(SceneKeys, RenderSections) {
   EXPECT_EQ(r.output.width, 640);
   EXPECT_DOUBLE_EQ(r.output.fps, 24);
   EXPECT_EQ(r.output.msaa, 0);
+  EXPECT_EQ(r.output.aa, scene::Antialias::none);  // msaa = 0 without aa: none, as before aa existed
   EXPECT_EQ(r.output.video, scene::VideoFormat::gif);
   EXPECT_FALSE(r.camera.automatic);
   EXPECT_EQ(r.camera.follow, "a");
   EXPECT_DOUBLE_EQ(r.camera.fov_y_deg, 50);
   EXPECT_TRUE(r.draw.particles && r.draw.L);
   EXPECT_DOUBLE_EQ(r.draw.trails, 2.5);
+}
+
+TEST(SceneKeys, AntialiasingKeys) {
+  auto aa = [](const std::string& output) {
+    const auto s = load_scene_from_string(std::string("[[bodies]]\nname = \"a\"\n") + kRefParticles + "[output]\n" + output,
+                                          "t.toml");
+    return std::pair{s.render.output.aa, s.render.output.msaa};
+  };
+  EXPECT_EQ(aa(""), std::pair(scene::Antialias::fxaa, 4));
+  EXPECT_EQ(aa("msaa = 2\n"), std::pair(scene::Antialias::msaa, 2));  // a scene from before `aa`
+  EXPECT_EQ(aa("aa = \"fxaa\"\nmsaa = 2\n"), std::pair(scene::Antialias::fxaa, 2));
+  EXPECT_EQ(aa("aa = \"msaa\"\n"), std::pair(scene::Antialias::msaa, 4));
+  EXPECT_EQ(aa("aa = \"none\"\n"), std::pair(scene::Antialias::none, 4));
+  EXPECT_EQ(scene::antialias_name(scene::Antialias::fxaa), "fxaa");
+  EXPECT_EQ(scene::antialias_name(scene::Antialias::none), "none");
 }
 
 TEST(SampleTimes, FramesAtKOverFpsEndingAtDuration) {
