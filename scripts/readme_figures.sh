@@ -4,7 +4,8 @@
 #    README.md (`tumble bench --readme-table`, about a minute);
 #  - docs/bench_work_precision_t_handle.png and docs/bench_stability_map.png
 #    from a full `tumble bench` (a few minutes; skipped with --table-only);
-#  - the render figures between <!-- BEGIN/END bench:render --> (frames/s with
+#  - the render figures between <!-- BEGIN/END bench:render --> and
+#    bench:render-dense (frames/s with
 #    FXAA and 4x MSAA, video paths, FXAA against 4x MSAA; `tumble bench
 #    --render`, about a minute; skipped with --table-only).
 # Timings depend on the machine and its load: run it on an idle one.
