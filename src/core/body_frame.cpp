@@ -74,17 +74,14 @@ BodyCoords rk4_coords_reference(const RigidBodyModel& m, const BodyCoords& x, do
   const BodyRate k2 = body_rate(m, add_scaled(x, ha, k1), t + 0.5 * h);
   const BodyRate k3 = body_rate(m, add_scaled(x, ha, k2), t + 0.5 * h);
   const BodyRate k4 = body_rate(m, add_scaled(x, h, k3), t + h);
-  // d = Δ − lost, x' = x + d, lost' = (x' − x) − d, coefficient by coefficient.
   BodyCoords y;
-  const auto sum = [](const auto& x0, const auto& delta, const auto& lost, auto& x1, auto& lost1) {
-    const auto d = (delta - lost).eval();
-    x1 = x0 + d;
-    lost1 = (x1 - x0) - d;
-  };
-  sum(x.c, ((b1 * k1.dc + b2 * k2.dc) + b2 * k3.dc) + b1 * k4.dc, x.lost.c, y.c, y.lost.c);
-  sum(x.q.coeffs(), ((b1 * k1.dq + b2 * k2.dq) + b2 * k3.dq) + b1 * k4.dq, x.lost.q, y.q.coeffs(), y.lost.q);
-  sum(x.P, ((b1 * k1.dP + b2 * k2.dP) + b2 * k3.dP) + b1 * k4.dP, x.lost.P, y.P, y.lost.P);
-  sum(x.pi, ((b1 * k1.dpi + b2 * k2.dpi) + b2 * k3.dpi) + b1 * k4.dpi, x.lost.pi, y.pi, y.lost.pi);
+  y.c = x.c + (((b1 * k1.dc + b2 * k2.dc) + b2 * k3.dc) + b1 * k4.dc);
+  y.q.coeffs() = x.q.coeffs() + (((b1 * k1.dq + b2 * k2.dq) + b2 * k3.dq) + b1 * k4.dq);
+  y.P = x.P + (((b1 * k1.dP + b2 * k2.dP) + b2 * k3.dP) + b1 * k4.dP);
+  // Π compensated: d = ΔΠ − lost, Π' = Π + d, lost' = (Π' − Π) − d.
+  const Eigen::Vector3d d = (((b1 * k1.dpi + b2 * k2.dpi) + b2 * k3.dpi) + b1 * k4.dpi) - x.lost_pi;
+  y.pi = x.pi + d;
+  y.lost_pi = (y.pi - x.pi) - d;
   return y;
 }
 

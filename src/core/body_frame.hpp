@@ -28,16 +28,15 @@ struct BodyCoords {
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();  ///< world ← principal
   Eigen::Vector3d P = Eigen::Vector3d::Zero();      ///< linear momentum, world, kg·m/s
   Eigen::Vector3d pi = Eigen::Vector3d::Zero();     ///< Π = Rᵀ L, principal frame, kg·m²/s
-  /// Round-off of the last step's sums x + Δ, in the units above (compensated
+  /// Round-off lost by the last step's sum Π + ΔΠ, kg·m²/s (compensated
   /// summation, Kahan 1965; Hairer, Lubich & Wanner, Geometric Numerical
-  /// Integration, §VIII.5): the next step subtracts it from its Δ. Zero from
-  /// to_body_coords. On the reference problem it takes RK4's error at dt = 1 ms
-  /// from 0.8e-9 … 8.7e-9 rad (round-off near the separatrix, varying with
-  /// 1e-15 changes of the start) to 8.89e-10 ± 0.5 %, the truncation error.
-  struct Lost {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero(), P = Eigen::Vector3d::Zero(), pi = Eigen::Vector3d::Zero();
-    Eigen::Vector4d q = Eigen::Vector4d::Zero();  ///< (x, y, z, w)
-  } lost;
+  /// Integration, §VIII.5): the next step subtracts it from its ΔΠ. Zero from
+  /// to_body_coords. Π alone needs it: its round-off moves the body across
+  /// energy levels, which near the separatrix moves the flips; q's, c's and P's
+  /// only add ~1e-16 per step. On the reference problem it takes RK4's error at
+  /// dt = 1 ms from 0.8e-9 … 8.7e-9 rad (varying with 1e-15 changes of the
+  /// start) to 8.89e-10 ± 0.5 %, the truncation error.
+  Eigen::Vector3d lost_pi = Eigen::Vector3d::Zero();
 };
 
 /// Π = q̄ L (q unit).
@@ -75,8 +74,8 @@ BodyCoords add_scaled(const BodyCoords& x, double h, const BodyRate& d);
 
 /// Kutta's classical RK4 (HNW I, Table 1.2) in Euler's coordinates, plain form:
 /// four stages of body_rate; per coordinate Δ = ((h/6)k1 + (h/3)k2) + (h/3)k3)
-/// + (h/6)k4, then the compensated sum d = Δ − lost, x' = x + d,
-/// lost' = (x' − x) − d (BodyCoords::lost). q is not renormalised:
+/// + (h/6)k4 and x' = x + Δ, except Π: d = ΔΠ − lost, Π' = Π + d,
+/// lost' = (Π' − Π) − d (BodyCoords::lost_pi). q is not renormalised:
 /// q' = ½ q ⊗ (0, ω) is linear in q and Π' does not read q, so |q| never
 /// feeds back; state_of normalises for output, and the Propagator renormalises
 /// the q it carries when |q|² drifts (which keeps a square root and a division,

@@ -46,9 +46,9 @@ using Rot7 = std::array<double, 7>;
   lost = (out - x) - d;
 }
 
-/// RK4 on (q, Π) for a torque-free body, q not renormalised; y = (q, Π) and
-/// lost = its 7 round-off carries, in and out.
-[[gnu::always_inline]] inline Rot7 rk4_rot(const double inv[3], double h, const Rot7& y0, Rot7& lost) {
+/// RK4 on (q, Π) for a torque-free body, q not renormalised; y = (q, Π),
+/// lost = Π's round-off carry (BodyCoords::lost_pi), in and out.
+[[gnu::always_inline]] inline Rot7 rk4_rot(const double inv[3], double h, const Rot7& y0, double lost[3]) {
   const double ha = h * 0.5, b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
   const double ih[3] = {0.5 * inv[0], 0.5 * inv[1], 0.5 * inv[2]};
   const Rot7 k1 = rot_rate(inv, ih, y0);
@@ -56,32 +56,30 @@ using Rot7 = std::array<double, 7>;
   const Rot7 k3 = rot_rate(inv, ih, axpy7(y0, ha, k2));
   const Rot7 k4 = rot_rate(inv, ih, axpy7(y0, h, k3));
   Rot7 y;
-  for (int j = 0; j < 7; ++j) kahan_add(y0[j], ((b1 * k1[j] + b2 * k2[j]) + b2 * k3[j]) + b1 * k4[j], lost[j], y[j]);
+  for (int j = 0; j < 4; ++j) y[j] = y0[j] + (((b1 * k1[j] + b2 * k2[j]) + b2 * k3[j]) + b1 * k4[j]);
+  for (int j = 4; j < 7; ++j)
+    kahan_add(y0[j], ((b1 * k1[j] + b2 * k2[j]) + b2 * k3[j]) + b1 * k4[j], lost[j - 4], y[j]);
   return y;
 }
 
-/// c and P after four RK stages of c' = P/M, P' = 0, compensated like rk4_rot.
-[[gnu::always_inline]] inline void drift4(const RigidBodyModel& m, const BodyCoords& x, double h, BodyCoords& out) {
+/// c after four RK stages of c' = P/M (P' = 0: P stays), the reference's sums.
+[[gnu::always_inline]] inline Eigen::Vector3d drift4(const RigidBodyModel& m, const Eigen::Vector3d& c,
+                                                     const Eigen::Vector3d& P, double h) {
   const double b1 = h * (1.0 / 6), b2 = h * (1.0 / 3);
-  for (int j = 0; j < 3; ++j) {
-    const double v = x.P[j] / m.mass;
-    out.lost.c[j] = x.lost.c[j];
-    kahan_add(x.c[j], ((b1 * v + b2 * v) + b2 * v) + b1 * v, out.lost.c[j], out.c[j]);
-    out.lost.P[j] = x.lost.P[j];
-    kahan_add(x.P[j], ((b1 * 0.0 + b2 * 0.0) + b2 * 0.0) + b1 * 0.0, out.lost.P[j], out.P[j]);
-  }
+  const Eigen::Vector3d v = P / m.mass;
+  return c + (((b1 * v + b2 * v) + b2 * v) + b1 * v);
 }
 
 inline BodyCoords rk4_coords_free(const RigidBodyModel& m, const BodyCoords& x, double h) {
   const double inv[3] = {m.inv_inertia.x(), m.inv_inertia.y(), m.inv_inertia.z()};
-  Rot7 lost{x.lost.q[0], x.lost.q[1], x.lost.q[2], x.lost.q[3], x.lost.pi[0], x.lost.pi[1], x.lost.pi[2]};
-  const Rot7 y = rk4_rot(inv, h, {x.q.x(), x.q.y(), x.q.z(), x.q.w(), x.pi.x(), x.pi.y(), x.pi.z()}, lost);
   BodyCoords out;
-  drift4(m, x, h, out);
+  out.lost_pi = x.lost_pi;
+  const Rot7 y = rk4_rot(inv, h, {x.q.x(), x.q.y(), x.q.z(), x.q.w(), x.pi.x(), x.pi.y(), x.pi.z()},
+                         out.lost_pi.data());
+  out.c = drift4(m, x.c, x.P, h);
   out.q = Eigen::Quaterniond(y[3], y[0], y[1], y[2]);
+  out.P = x.P;
   out.pi = {y[4], y[5], y[6]};
-  out.lost.q = {lost[0], lost[1], lost[2], lost[3]};
-  out.lost.pi = {lost[4], lost[5], lost[6]};
   return out;
 }
 
@@ -95,7 +93,7 @@ inline BodyState rk4_body_free(const RigidBodyModel& m, const BodyState& s, doub
   BodyState out;
   out.c = y.c;
   out.q = unit_quaternion(y.q.x(), y.q.y(), y.q.z(), y.q.w());
-  out.P = y.P;
+  out.P = s.P;
   rotate(out.q.x(), out.q.y(), out.q.z(), out.q.w(), y.pi.data(), out.L.data());  // L = q Π
   return out;
 }

@@ -21,17 +21,11 @@ void FixedStepper::step(double t, double h) {
   BodyCoords& x = *coords_;
   const Eigen::Quaterniond prev = x.q;
   x = info_->coords_step(*m_, x, t, h);
-  if (x.q.dot(prev) < 0) {  // q and -q step to negated q with the same Π: the run does not change
-    x.q.coeffs() = -x.q.coeffs();
-    x.lost.q = -x.lost.q;
-  }
+  if (x.q.dot(prev) < 0) x.q.coeffs() = -x.q.coeffs();  // q and -q step to negated q, same Π: no change
   // The step leaves |q| alone (body_frame.hpp); renormalise once it drifts.
   // A blow-up still shows: in Π's energy, or as a non-finite q.
   const double n = x.q.squaredNorm();
-  if (std::abs(n - 1.0) > 1e-12 && std::isfinite(n)) {
-    x.q = unit_quaternion(x.q.x(), x.q.y(), x.q.z(), x.q.w());
-    x.lost.q.setZero();
-  }
+  if (std::abs(n - 1.0) > 1e-12 && std::isfinite(n)) x.q = unit_quaternion(x.q.x(), x.q.y(), x.q.z(), x.q.w());
 }
 
 BodyState FixedStepper::state() const { return coords_ ? state_of(*coords_) : s_; }

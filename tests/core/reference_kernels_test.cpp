@@ -34,6 +34,7 @@ TEST(ReferenceKernels, TunedRk4GivesTheReferenceBits) {
       EXPECT_EQ(c.q.coeffs(), d.q.coeffs()) << i << " h=" << h;
       EXPECT_EQ(c.P, d.P);
       EXPECT_EQ(c.pi, d.pi);
+      EXPECT_EQ(c.lost_pi, d.lost_pi);
     }
   }
 }
