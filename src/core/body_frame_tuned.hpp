@@ -8,8 +8,8 @@
 // Eigen expressions perform, in the same order, with -ffp-contract=off (no
 // fused multiply-add): only dead work (P' = 0) is dropped, and the stage
 // vectors and the two rotations (Eigen's q * v) are kept in scalars, so the
-// step is one unpacked chain: 113 -> 64 ns/step on the reference problem
-// (tumble_microbench BM_Step/2/0 and BM_Propagate/2, see issue #10 notes).
+// step is one unpacked chain (measured figures: README's generated speed
+// table, scripts/gen_method_costs.sh).
 // tests/core/reference_kernels_test.cpp holds them equal.
 #pragma once
 
@@ -39,7 +39,7 @@ using Rot7 = std::array<double, 7>;
           a[4] + t * k[4], a[5] + t * k[5], a[6] + t * k[6]};
 }
 
-/// Compensated x + Δ (BodyCoords::lost): d = Δ − lost, x' = x + d, lost' = (x' − x) − d.
+/// Compensated x + Δ (BodyCoords::lost_pi): d = Δ − lost, x' = x + d, lost' = (x' − x) − d.
 [[gnu::always_inline]] inline void kahan_add(double x, double delta, double& lost, double& out) {
   const double d = delta - lost;
   out = x + d;
