@@ -1,14 +1,25 @@
 // The measurement behind kernel::split_order and split_order4
 // (splitting_kernel.hpp): the orientation error at 10 s (dt = 1 ms) of each of
 // the six symmetric sub-flow orders of `splitting` (argument 4: of the base map
-// of `splitting4`), torque-free, against the closed form, on 18 bodies ×
-// 5 spins; then how far from the best order per case the rule and each fixed
-// order are (mean and worst log10 of error / best error). Built and run by
-// scripts/splitting_order_study.sh.
+// of `splitting4`), torque-free, against the closed form, on 18 bodies × 19
+// spins: the old 5 (10 rad/s near each principal axis, two generic) and 14 that
+// cover both orbit regions of the momentum sphere (Fassò, J. Comput. Phys. 189,
+// 2003): circulation about the smallest-moment axis (ρ = |L|²/(2E I_mid) < 1)
+// and about the largest (ρ > 1), from near the axis to 1e-6 from the
+// separatrix. Then how far from the best order per case each rule and each
+// fixed order is (mean and worst log10 of error / best error), and two oracles:
+// the best single order per body (what any moments-only rule can reach at most)
+// and per body and orbit region (what a rule that also reads the region can).
+// Arguments (any order): `4`, `max` (the worst error at t = 1, 2, ..., 10 s,
+// which no lucky cancellation at 10 s hides, instead of the error at 10 s) and
+// `csv` (one row per case instead of the summary).
+// Built and run by scripts/splitting_order_study.sh.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/body.hpp"
@@ -17,35 +28,73 @@
 
 using namespace tumble;
 
+namespace {
+
+/// Body momentum Π (|ω_body| = 10 rad/s) on the orbit with ρ = |L|²/(2E I_mid)
+/// = rho, at phase alpha: Π_mid² = alpha × its largest value on that orbit
+/// (near the separatrix, alpha → 1 starts next to the intermediate axis).
+Eigen::Vector3d momentum_on_orbit(const Eigen::Vector3d& I, double rho, double alpha) {
+  const Eigen::Vector3d a = I.cwiseInverse();  // a0 > a1 > a2
+  const double e = a[1] / rho;                 // 2E/|Π|² for |Π| = 1
+  // Largest Π_mid² on the orbit: where it crosses the plane of the mid axis
+  // and the axis it circulates about.
+  const double mid_max = rho < 1 ? 1 - (e - a[1]) / (a[0] - a[1]) : 1 - (a[1] - e) / (a[1] - a[2]);
+  const double p1 = alpha * mid_max, A = 1 - p1, B = e - a[1] * p1;
+  const double p0 = std::max(0.0, (B - a[2] * A) / (a[0] - a[2])), p2 = std::max(0.0, A - p0);
+  const Eigen::Vector3d pi(std::sqrt(p0), std::sqrt(p1), -std::sqrt(p2));
+  return pi * (10 / a.cwiseProduct(pi).norm());
+}
+
+double rho_of(const Eigen::Vector3d& I, const Eigen::Vector3d& L) {
+  return L.squaredNorm() / (L.cwiseProduct(I.cwiseInverse()).dot(L) * I[1]);
+}
+
+struct Case {
+  Eigen::Vector3d I, L;
+  double rho, err[6];
+};
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  const bool fourth = argc > 1 && std::string(argv[1]) == "4";
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const auto has = [&](const char* a) { return std::find(args.begin(), args.end(), a) != args.end(); };
+  const bool fourth = has("4"), csv = has("csv"), worst_time = has("max");
   const double cbrt2 = std::cbrt(2.0), w1 = 1.0 / (2.0 - cbrt2), w0 = -cbrt2 * w1;
   const std::vector<Eigen::Vector3d> bodies = {
       {1, 2, 3},   {1, 1.1, 5},   {1, 4.9, 5}, {2, 3, 4.5},   {1, 1.5, 2},   {1, 3, 3.3},
       {1, 1.8, 2.2}, {0.2, 1, 1.1}, {1, 1.05, 2}, {1, 1.2, 5}, {1, 1.4, 5},   {1, 1.8, 5},
       {1, 2.6, 5}, {1, 1.2, 2},   {1, 1.3, 2}, {1, 1.1, 1.5}, {1, 1.3, 10},  {1, 2, 10}};
-  std::vector<Eigen::Vector3d> spins;
-  for (int i = 0; i < 3; ++i) {
-    Eigen::Vector3d w = Eigen::Vector3d::Constant(0.01);  // near principal axis i
-    w[i] = 10;
-    spins.push_back(w);
-  }
-  spins.push_back({3, 7, -2});
-  spins.push_back({5, 5, 5});
+  // Position u of the orbit between the pure spin (u = 0) and the separatrix (u = 1).
+  const double us[] = {1e-3, 0.3, 0.7, 1 - 1e-2, 1 - 1e-4, 1 - 1e-6};
+  const double alphas[] = {0.05, 0.5, 0.95};
   const double dt = 1e-3, T = 10;
   const long n = std::lround(T / dt);
-  double regret_rule = 0, worst_rule = 0, regret_fixed[6] = {}, worst_fixed[6] = {};
-  int cases = 0, rule_best = 0;
-  std::printf("moments, omega_body: error (rad) per order (outer middle inner, 1-based) | rule's order\n");
-  for (const Eigen::Vector3d& I : bodies)
-    for (const Eigen::Vector3d& w : spins) {
-      const Eigen::Vector3d inv = I.cwiseInverse(), L = I.cwiseProduct(w);
-      const Eigen::Quaterniond exact = FreeRotationExact(I, Eigen::Quaterniond::Identity(), L).orientation(T);
-      double err[6];
-      std::printf("(%g, %g, %g), (%g, %g, %g):", I.x(), I.y(), I.z(), w.x(), w.y(), w.z());
+  std::vector<Case> cases;
+  for (const Eigen::Vector3d& I : bodies) {
+    std::vector<Eigen::Vector3d> Ls;
+    for (int i = 0; i < 3; ++i) {
+      Eigen::Vector3d w = Eigen::Vector3d::Constant(0.01);  // near principal axis i
+      w[i] = 10;
+      Ls.push_back(I.cwiseProduct(w));
+    }
+    Ls.push_back(I.cwiseProduct(Eigen::Vector3d(3, 7, -2)));
+    Ls.push_back(I.cwiseProduct(Eigen::Vector3d(5, 5, 5)));
+    for (double u : us)
+      for (double alpha : alphas) {
+        Ls.push_back(momentum_on_orbit(I, I[0] / I[1] + u * (1 - I[0] / I[1]), alpha));  // about the smallest
+        Ls.push_back(momentum_on_orbit(I, I[2] / I[1] + u * (1 - I[2] / I[1]), alpha));  // about the largest
+      }
+    for (const Eigen::Vector3d& L : Ls) {
+      Case c{I, L, rho_of(I, L), {}};
+      const Eigen::Vector3d inv = I.cwiseInverse();
+      const FreeRotationExact exact(I, Eigen::Quaterniond::Identity(), L);
       for (int o = 0; o < 6; ++o) {
         kernel::Quat q{1, 0, 0, 0};
+        c.err[o] = 0;
         for (long k = 0; k < n; ++k) {
+          if (k > 0 && k % (n / 10) == 0 && worst_time)  // the worst error at t = 1, 2, ..., 9 s too
+            c.err[o] = std::max(c.err[o], Eigen::Quaterniond(q.w, q.x, q.y, q.z).angularDistance(exact.orientation(k * dt)));
           if (!fourth) {
             q = kernel::splitting_rotation_ordered(o, q, L.data(), inv.data(), dt);
             continue;
@@ -54,29 +103,87 @@ int main(int argc, char** argv) {
           q = kernel::splitting_rotation_ordered(o, q, L.data(), inv.data(), w0 * dt);
           q = kernel::splitting_rotation_ordered(o, q, L.data(), inv.data(), w1 * dt);
         }
-        err[o] = Eigen::Quaterniond(q.w, q.x, q.y, q.z).angularDistance(exact);
-        const int* a = kernel::kSplitAxes[o];
-        std::printf(" %d%d%d %.2e", a[0] + 1, a[1] + 1, a[2] + 1, err[o]);
+        c.err[o] = std::max(c.err[o], Eigen::Quaterniond(q.w, q.x, q.y, q.z).angularDistance(exact.orientation(T)));
       }
-      const double best = *std::min_element(err, err + 6);
-      const int rule = fourth ? kernel::split_order4(inv.data()) : kernel::split_order(inv.data());
-      const double r = std::log10(err[rule] / best);
-      regret_rule += r;
-      worst_rule = std::max(worst_rule, r);
-      rule_best += r == 0;
-      for (int o = 0; o < 6; ++o) {
-        regret_fixed[o] += std::log10(err[o] / best);
-        worst_fixed[o] = std::max(worst_fixed[o], std::log10(err[o] / best));
-      }
-      ++cases;
-      const int* a = kernel::kSplitAxes[rule];
-      std::printf(" | %d%d%d\n", a[0] + 1, a[1] + 1, a[2] + 1);
+      cases.push_back(c);
     }
-  std::printf("\nlog10(error / best order's error) over %d cases: mean, worst\n", cases);
-  std::printf("rule (split_order%s) %.3f  %.2f  (best on %d)\n", fourth ? "4" : "", regret_rule / cases, worst_rule, rule_best);
+  }
+  const auto label = [](int o) {
+    const int* a = kernel::kSplitAxes[o];
+    return std::to_string(a[0] + 1) + std::to_string(a[1] + 1) + std::to_string(a[2] + 1);
+  };
+  const auto moments_rule = [&](const Case& c) {
+    const Eigen::Vector3d inv = c.I.cwiseInverse();
+    return fourth ? kernel::split_order4(inv.data()) : kernel::split_order(inv.data());
+  };
+  // Π starts within 0.6° of the intermediate axis (the saddle), as in the
+  // reference problem (Π = L: every case starts at q = 1).
+  const auto at_saddle = [](const Case& c) { return c.L[1] * c.L[1] > 0.9999 * c.L.squaredNorm(); };
+  if (csv) {
+    std::printf("I1,I2,I3,rho,L1,L2,L3,best");
+    for (int o = 0; o < 6; ++o) std::printf(",e%s", label(o).c_str());
+    std::printf(",rule,at_saddle\n");
+    for (const Case& c : cases) {
+      const int best = static_cast<int>(std::min_element(c.err, c.err + 6) - c.err);
+      std::printf("%g,%g,%g,%.9g,%.6g,%.6g,%.6g,%s", c.I[0], c.I[1], c.I[2], c.rho, c.L[0], c.L[1], c.L[2],
+                  label(best).c_str());
+      for (double e : c.err) std::printf(",%.3e", e);
+      std::printf(",%s,%d\n", label(moments_rule(c)).c_str(), at_saddle(c) ? 1 : 0);
+    }
+    return 0;
+  }
+  const auto regret_of = [](const Case& c, int o) { return std::log10(c.err[o] / *std::min_element(c.err, c.err + 6)); };
+  // Mean and worst regret of an order chooser over the cases with region r
+  // (0: ρ < 1, 1: ρ > 1, 2: all).
+  const auto regret = [&](auto&& choose, int r) {
+    double sum = 0, worst = 0;
+    int k = 0;
+    for (const Case& c : cases) {
+      if (r != 2 && (c.rho > 1) != (r == 1)) continue;
+      const double d = regret_of(c, choose(c));
+      sum += d, worst = std::max(worst, d), ++k;
+    }
+    return std::pair{sum / k, worst};
+  };
+  // Oracle: per body and class of case (classify), the order with the least
+  // summed regret: the best any rule that reads only those can do.
+  const auto oracle = [&](auto classify) {
+    std::map<std::vector<double>, std::vector<double>> sums;
+    for (const Case& c : cases) {
+      std::vector<double>& s = sums[{c.I[0], c.I[1], c.I[2], classify(c)}];
+      s.resize(6);
+      for (int o = 0; o < 6; ++o) s[o] += regret_of(c, o);
+    }
+    return [sums, classify](const Case& c) {
+      const std::vector<double>& s = sums.at({c.I[0], c.I[1], c.I[2], classify(c)});
+      return static_cast<int>(std::min_element(s.begin(), s.end()) - s.begin());
+    };
+  };
+  std::printf("%zu cases (%d with rho < 1, circulation about the smallest moment's axis; %d start at the saddle)\n",
+              cases.size(), static_cast<int>(std::count_if(cases.begin(), cases.end(), [](const Case& c) { return c.rho < 1; })),
+              static_cast<int>(std::count_if(cases.begin(), cases.end(), at_saddle)));
+  std::printf("log10(error / best order's error): mean, worst; over rho < 1 | rho > 1 | all\n");
+  const auto row = [&](const std::string& name, auto&& choose) {
+    std::printf("%-40s", name.c_str());
+    for (int r = 0; r < 3; ++r) {
+      const auto [mean, worst] = regret(choose, r);
+      std::printf("  %.3f %5.2f", mean, worst);
+    }
+    std::printf("\n");
+  };
+  row(std::string("rule split_order") + (fourth ? "4" : ""), moments_rule);
+  row("oracle: best order per body", oracle([](const Case&) { return 0.0; }));
+  row("oracle: best per body and orbit region", oracle([](const Case& c) { return double(c.rho > 1); }));
+  row("oracle: best per body and start at saddle", oracle([&](const Case& c) { return double(at_saddle(c)); }));
+  if (!fourth)  // the rule's elongated/compact split, with the smallest moment outermost
+    row("alternative: 12321, elongated 13231", [](const Case& c) {
+      const Eigen::Vector3d inv = c.I.cwiseInverse();
+      int s, m, l;
+      kernel::axes_by_moment(inv.data(), s, m, l);
+      return kernel::split_order(inv.data()) == kernel::split_index(m, l) ? kernel::split_index(s, l) : kernel::split_index(s, m);
+    });
   for (int o = 0; o < 6; ++o) {
     const int* a = kernel::kSplitAxes[o];
-    std::printf("fixed %d%d%d%d%d       %.3f  %.2f\n", a[0] + 1, a[1] + 1, a[2] + 1, a[1] + 1, a[0] + 1,
-                regret_fixed[o] / cases, worst_fixed[o]);
+    row("fixed " + label(o) + std::to_string(a[1] + 1) + std::to_string(a[0] + 1), [o](const Case&) { return o; });
   }
 }
