@@ -1,15 +1,16 @@
 // The measurement behind kernel::split_order and split_order4
 // (splitting_kernel.hpp): the orientation error at 10 s (dt = 1 ms) of each of
 // the six symmetric sub-flow orders of `splitting` (argument 4: of the base map
-// of `splitting4`), torque-free, against the closed form, on 18 bodies × 19
-// spins: the old 5 (10 rad/s near each principal axis, two generic) and 14 that
+// of `splitting4`), torque-free, against the closed form, on 18 bodies × 41
+// spins: the old 5 (10 rad/s near each principal axis, two generic) and 36 that
 // cover both orbit regions of the momentum sphere (Fassò, J. Comput. Phys. 189,
 // 2003): circulation about the smallest-moment axis (ρ = |L|²/(2E I_mid) < 1)
-// and about the largest (ρ > 1), from near the axis to 1e-6 from the
-// separatrix. Then how far from the best order per case each rule and each
-// fixed order is (mean and worst log10 of error / best error), and two oracles:
-// the best single order per body (what any moments-only rule can reach at most)
-// and per body and orbit region (what a rule that also reads the region can).
+// and about the largest (ρ > 1), six orbits each from near the axis to 1e-6
+// from the separatrix, each from three start points. Then how far from the
+// best order per case the rule and each fixed order are (mean and worst log10
+// of error / best error), and oracles: the best single order per body (the most
+// any rule that reads only the moments can reach), per body and orbit region,
+// and per body and whether Π starts at the intermediate axis (the saddle).
 // Arguments (any order): `4`, `max` (the worst error at t = 1, 2, ..., 10 s,
 // which no lucky cancellation at 10 s hides, instead of the error at 10 s) and
 // `csv` (one row per case instead of the summary).

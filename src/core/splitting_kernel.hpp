@@ -276,17 +276,32 @@ inline bool axes_by_moment(const double inv[3], int& s, int& m, int& l) {
 
 /// The sub-flow order of `splitting` for a body (index into kSplitAxes) from
 /// its inverse principal moments. Measured, not derived: the orientation error
-/// at 10 s (dt = 1 ms, against the closed form) of all six symmetric orders on
-/// 18 bodies × 5 spins (scripts/splitting_order_study.sh). The order with the
-/// axis of the smallest moment in the middle is always worst (up to 10×); the
-/// largest moment outermost and the intermediate one in the middle (3,2,1,2,3
-/// for I1 ≤ I2 ≤ I3) is best or near it for compact bodies, the intermediate
+/// at 10 s (dt = 1 ms, against the closed form) of all six symmetric orders
+/// (scripts/splitting_order_study.sh). The order with the axis of the smallest
+/// moment in the middle is always worst (up to 10×); the largest moment
+/// outermost and the intermediate one in the middle (3,2,1,2,3 for
+/// I1 ≤ I2 ≤ I3) is best or near it for compact bodies, the intermediate
 /// outermost with the largest in the middle (2,3,1,3,2) for elongated ones
-/// (I1 ≤ I3/4) that are not near-oblate (I3 - I2 > I2 - I1). Averaged over the
-/// study this rule is 10^0.09 from the best order per case (fixed 1,2,3,2,1:
-/// 10^0.27). Fassò (J. Comput. Phys. 189, 2003) finds the same dependence on
-/// the moments (and the orbit) from the dominant term of the modified
-/// Hamiltonian.
+/// (I1 ≤ I3/4) that are not near-oblate (I3 - I2 > I2 - I1). On the first
+/// study (18 bodies × 5 spins) the rule is 10^0.09 from the best order per case
+/// (fixed 1,2,3,2,1: 10^0.27).
+///
+/// The orbit region does not matter. Fassò (J. Comput. Phys. 189, 2003) finds
+/// the dominant term of the modified Hamiltonian, hence the energy error,
+/// depends on the moments and on whether Π circulates about the smallest
+/// (|L|² < 2E I2) or the largest moment's axis. On 738 cases covering both
+/// regions (18 bodies × 41 spins, down to 1e-6 from the separatrix) the best
+/// order per body and region is 10^0.125 from the best per case, the best per
+/// body alone 10^0.135: reading the region could gain at most 2% of error
+/// (splitting4: 10^0.117 against 10^0.127). What does matter is where Π
+/// starts: this rule is the best order for the 18 spins that start at the
+/// intermediate axis (10^0.04 from the best; the reference problem, the
+/// Dzhanibekov demos), but 10^0.41 from the best on the 720 that start
+/// elsewhere, where 1,2,3,2,1 (elongated: 1,3,2,3,1) is 10^0.15 from it and
+/// gives 1.2e-4 rad on the reference problem instead of 1.4e-5. Choosing per
+/// step from the current Π (the rule near the saddle, that one elsewhere) does
+/// not keep both: 7.7e-5 rad there. A choice from the initial Π, kept per body
+/// for the whole run, would.
 inline int split_order(const double inv[3]) {
   int s, m, l;
   if (!axes_by_moment(inv, s, m, l)) return 5;  // spherical: every order is the same map
@@ -297,9 +312,12 @@ inline int split_order(const double inv[3]) {
 
 /// The base order of `splitting4` (Yoshida's triple jump cancels the base
 /// map's h³ error, so other constants lead): smallest moment outermost, the
-/// largest in the middle (1,3,2,3,1), best on 14 of the same 18 bodies and on
-/// average 10^0.09 from the best order per case (fixed 1,2,3,2,1: 10^0.47;
-/// `scripts/splitting_order_study.sh 4`).
+/// largest in the middle (1,3,2,3,1), best on 14 of the first study's 18 bodies
+/// and on average 10^0.09 from the best order per case (fixed 1,2,3,2,1:
+/// 10^0.47; `scripts/splitting_order_study.sh 4`). On the 738 cases of both
+/// orbit regions it is the best single order for every body (10^0.127 from the
+/// best per case; fixed 1,2,3,2,1: 10^0.51), and neither the region (10^0.117)
+/// nor a start at the saddle (10^0.121) would gain measurably.
 inline int split_order4(const double inv[3]) {
   int s, m, l;
   if (!axes_by_moment(inv, s, m, l)) return 5;
