@@ -10,7 +10,10 @@
 // best order per case the rule and each fixed order are (mean and worst log10
 // of error / best error), and oracles: the best single order per body (the most
 // any rule that reads only the moments can reach), per body and orbit region,
-// and per body and whether Π starts at the intermediate axis (the saddle).
+// and per body and whether Π starts at the intermediate axis (the saddle);
+// for `splitting` also an alternative rule for starts off the saddle and the
+// order chosen each step from the current Π (the rule near the saddle, the
+// alternative elsewhere).
 // Arguments (any order): `4`, `max` (the worst error at t = 1, 2, ..., 10 s,
 // which no lucky cancellation at 10 s hides, instead of the error at 10 s) and
 // `csv` (one row per case instead of the summary).
@@ -50,9 +53,29 @@ double rho_of(const Eigen::Vector3d& I, const Eigen::Vector3d& L) {
   return L.squaredNorm() / (L.cwiseProduct(I.cwiseInverse()).dot(L) * I[1]);
 }
 
+/// The alternative to split_order for spins that do not start at the saddle:
+/// its compact/elongated split, with the smallest moment outermost (1,2,3,2,1;
+/// elongated 1,3,2,3,1).
+int alternative_order(const double inv[3]) {
+  int s, m, l;
+  kernel::axes_by_moment(inv, s, m, l);
+  return kernel::split_order(inv) == kernel::split_index(m, l) ? kernel::split_index(s, l) : kernel::split_index(s, m);
+}
+
+/// Π within 0.6° of the intermediate axis (the saddle).
+bool near_saddle(const double inv[3], const Eigen::Vector3d& pi) {
+  int s, m, l;
+  kernel::axes_by_moment(inv, s, m, l);
+  return pi[m] * pi[m] > 0.9999 * pi.squaredNorm();
+}
+
+/// err[6]: `splitting` choosing its order each step from the current Π
+/// (split_order near the saddle, alternative_order elsewhere).
+constexpr int kPerStep = 6;
+
 struct Case {
   Eigen::Vector3d I, L;
-  double rho, err[6];
+  double rho, err[7];
 };
 
 }  // namespace
@@ -90,14 +113,18 @@ int main(int argc, char** argv) {
       Case c{I, L, rho_of(I, L), {}};
       const Eigen::Vector3d inv = I.cwiseInverse();
       const FreeRotationExact exact(I, Eigen::Quaterniond::Identity(), L);
-      for (int o = 0; o < 6; ++o) {
+      for (int o = 0; o < (fourth ? 6 : 7); ++o) {
         kernel::Quat q{1, 0, 0, 0};
         c.err[o] = 0;
         for (long k = 0; k < n; ++k) {
           if (k > 0 && k % (n / 10) == 0 && worst_time)  // the worst error at t = 1, 2, ..., 9 s too
             c.err[o] = std::max(c.err[o], Eigen::Quaterniond(q.w, q.x, q.y, q.z).angularDistance(exact.orientation(k * dt)));
           if (!fourth) {
-            q = kernel::splitting_rotation_ordered(o, q, L.data(), inv.data(), dt);
+            const Eigen::Vector3d pi = Eigen::Quaterniond(q.w, q.x, q.y, q.z).conjugate() * L;
+            const int order = o < kPerStep                   ? o
+                              : near_saddle(inv.data(), pi) ? kernel::split_order(inv.data())
+                                                            : alternative_order(inv.data());
+            q = kernel::splitting_rotation_ordered(order, q, L.data(), inv.data(), dt);
             continue;
           }
           q = kernel::splitting_rotation_ordered(o, q, L.data(), inv.data(), w1 * dt);
@@ -119,17 +146,19 @@ int main(int argc, char** argv) {
   };
   // Π starts within 0.6° of the intermediate axis (the saddle), as in the
   // reference problem (Π = L: every case starts at q = 1).
-  const auto at_saddle = [](const Case& c) { return c.L[1] * c.L[1] > 0.9999 * c.L.squaredNorm(); };
+  const auto at_saddle = [](const Case& c) { return near_saddle(c.I.cwiseInverse().eval().data(), c.L); };
   if (csv) {
     std::printf("I1,I2,I3,rho,L1,L2,L3,best");
     for (int o = 0; o < 6; ++o) std::printf(",e%s", label(o).c_str());
-    std::printf(",rule,at_saddle\n");
+    std::printf(",rule,at_saddle%s\n", fourth ? "" : ",per_step");
     for (const Case& c : cases) {
       const int best = static_cast<int>(std::min_element(c.err, c.err + 6) - c.err);
       std::printf("%g,%g,%g,%.9g,%.6g,%.6g,%.6g,%s", c.I[0], c.I[1], c.I[2], c.rho, c.L[0], c.L[1], c.L[2],
                   label(best).c_str());
-      for (double e : c.err) std::printf(",%.3e", e);
-      std::printf(",%s,%d\n", label(moments_rule(c)).c_str(), at_saddle(c) ? 1 : 0);
+      for (int o = 0; o < 6; ++o) std::printf(",%.3e", c.err[o]);
+      std::printf(",%s,%d", label(moments_rule(c)).c_str(), at_saddle(c) ? 1 : 0);
+      if (!fourth) std::printf(",%.3e", c.err[kPerStep]);
+      std::printf("\n");
     }
     return 0;
   }
@@ -176,13 +205,13 @@ int main(int argc, char** argv) {
   row("oracle: best order per body", oracle([](const Case&) { return 0.0; }));
   row("oracle: best per body and orbit region", oracle([](const Case& c) { return double(c.rho > 1); }));
   row("oracle: best per body and start at saddle", oracle([&](const Case& c) { return double(at_saddle(c)); }));
-  if (!fourth)  // the rule's elongated/compact split, with the smallest moment outermost
-    row("alternative: 12321, elongated 13231", [](const Case& c) {
-      const Eigen::Vector3d inv = c.I.cwiseInverse();
-      int s, m, l;
-      kernel::axes_by_moment(inv.data(), s, m, l);
-      return kernel::split_order(inv.data()) == kernel::split_index(m, l) ? kernel::split_index(s, l) : kernel::split_index(s, m);
+  if (!fourth) {
+    row("alternative: 12321, elongated 13231", [](const Case& c) { return alternative_order(c.I.cwiseInverse().eval().data()); });
+    row("per step: rule at the saddle, else alt.", [](const Case&) { return kPerStep; });
+    row("per run, from the initial Pi: the same", [&](const Case& c) {
+      return at_saddle(c) ? moments_rule(c) : alternative_order(c.I.cwiseInverse().eval().data());
     });
+  }
   for (int o = 0; o < 6; ++o) {
     const int* a = kernel::kSplitAxes[o];
     row("fixed " + label(o) + std::to_string(a[1] + 1) + std::to_string(a[0] + 1), [o](const Case&) { return o; });
