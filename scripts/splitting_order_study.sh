@@ -1,6 +1,7 @@
 #!/bin/sh
 # The sub-flow order study behind kernel::split_order (splitting; argument 4:
-# split_order4, splitting4's base map), see splitting_kernel.hpp.
+# split_order4, splitting4's base map), see splitting_kernel.hpp. Arguments
+# `max` (worst error over t = 1..10 s) and `csv` (one row per case) too.
 # Needs a release build of tumble_core: cmake --build --preset release --target tumble_core
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
