@@ -94,30 +94,25 @@ std::string versus(double a, double b) {
 // vs 2.5e-3 rad for `splitting`, 9.0e-10 vs 2.3e-9 and 3.6e-9 vs 3.1e-8 for
 // `splitting4`).
 TEST(SplittingOrder, ChosenOrderBeatsFixedOnBothSidesOfTheSeparatrix) {
-  const int fixed123 = kernel::split_index(0, 1);
-  // Elongated (1, 1.1, 5): splitting's 2,3,1,3,2.
-  for (const Eigen::Vector3d& L :
-       {Eigen::Vector3d(9.27667, 4.09624, -1.38084), Eigen::Vector3d(5.87748, 6.24288, -28.8295)}) {
-    const FreeCase c({1, 1.1, 5}, L);
-    const double chosen = c.error(testing::run_steps(Method::splitting, c.m, c.s, 1e-3, 10000));
-    const double fixed = c.error_fixed(fixed123, false);
-    RecordProperty(L.z() < -10 ? "splitting_rho_gt_1" : "splitting_rho_lt_1", versus(chosen, fixed));
-    EXPECT_LT(1.5 * chosen, fixed) << "rho " << c.rho();
+  struct Run {
+    Method method;
+    Eigen::Vector3d inertia, L;
+    bool rho_above_1;
+  };
+  // Elongated (1, 1.1, 5): splitting's 2,3,1,3,2. (1, 2, 3): splitting4's 1,3,2,3,1.
+  const Run runs[] = {{Method::splitting, {1, 1.1, 5}, {9.27667, 4.09624, -1.38084}, false},
+                      {Method::splitting, {1, 1.1, 5}, {5.87748, 6.24288, -28.8295}, true},
+                      {Method::splitting4, {1, 2, 3}, {9.41124, 5.8554, -5.07093}, false},
+                      {Method::splitting4, {1, 2, 3}, {5.75112, 2.6388, -24.2209}, true}};
+  for (const Run& r : runs) {
+    const FreeCase c(r.inertia, r.L);
+    EXPECT_EQ(c.rho() > 1, r.rho_above_1) << "the cases lie on both sides of the separatrix";
+    const double chosen = c.error(testing::run_steps(r.method, c.m, c.s, 1e-3, 10000));
+    const double fixed = c.error_fixed(kernel::split_index(0, 1), r.method == Method::splitting4);
+    RecordProperty(std::string(method_name(r.method)) + (r.rho_above_1 ? "_rho_gt_1" : "_rho_lt_1"),
+                   versus(chosen, fixed));
+    EXPECT_LT(1.5 * chosen, fixed) << method_name(r.method) << ", rho " << c.rho();
   }
-  // (1, 2, 3): splitting4's 1,3,2,3,1.
-  for (const Eigen::Vector3d& L :
-       {Eigen::Vector3d(9.41124, 5.8554, -5.07093), Eigen::Vector3d(5.75112, 2.6388, -24.2209)}) {
-    const FreeCase c({1, 2, 3}, L);
-    const double chosen = c.error(testing::run_steps(Method::splitting4, c.m, c.s, 1e-3, 10000));
-    const double fixed = c.error_fixed(fixed123, true);
-    RecordProperty(L.z() < -10 ? "splitting4_rho_gt_1" : "splitting4_rho_lt_1", versus(chosen, fixed));
-    EXPECT_LT(1.5 * chosen, fixed) << "rho " << c.rho();
-  }
-  // The cases do lie on both sides of the separatrix.
-  EXPECT_LT(FreeCase({1, 1.1, 5}, {9.27667, 4.09624, -1.38084}).rho(), 1);
-  EXPECT_GT(FreeCase({1, 1.1, 5}, {5.87748, 6.24288, -28.8295}).rho(), 1);
-  EXPECT_LT(FreeCase({1, 2, 3}, {9.41124, 5.8554, -5.07093}).rho(), 1);
-  EXPECT_GT(FreeCase({1, 2, 3}, {5.75112, 2.6388, -24.2209}).rho(), 1);
 }
 
 }  // namespace
