@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <optional>
@@ -26,14 +27,10 @@ struct Type {
   int size;                      ///< bytes in a binary file
   bool floating;
 };
-constexpr std::array<Type, 8> kTypes{{{"char", "int8", 1, false},
-                                      {"uchar", "uint8", 1, false},
-                                      {"short", "int16", 2, false},
-                                      {"ushort", "uint16", 2, false},
-                                      {"int", "int32", 4, false},
-                                      {"uint", "uint32", 4, false},
-                                      {"float", "float32", 4, true},
-                                      {"double", "float64", 8, true}}};
+constexpr std::array<Type, 8> kTypes{{{"char", "int8", 1, false}, {"uchar", "uint8", 1, false},
+                                      {"short", "int16", 2, false}, {"ushort", "uint16", 2, false},
+                                      {"int", "int32", 4, false}, {"uint", "uint32", 4, false},
+                                      {"float", "float32", 4, true}, {"double", "float64", 8, true}}};
 
 enum class Format { ascii, little_endian, big_endian };
 
@@ -252,7 +249,7 @@ class Data {
     const char* b = word_.data() + (word_[0] == '+' ? 1 : 0);
     const char* e = word_.data() + word_.size();
     const auto [end, ec] = std::from_chars(b, e, v);
-    if (ec == std::errc::result_out_of_range) v = word_[0] == '-' ? -INFINITY : INFINITY;  // caught as not finite
+    if (ec == std::errc::result_out_of_range) v = std::strtod(word_.c_str(), nullptr);  // ±inf (refused later) or ~0
     else if (ec != std::errc()) return Read::not_a_number;
     return end == e ? Read::ok : Read::not_a_number;
   }

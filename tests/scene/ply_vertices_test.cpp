@@ -245,6 +245,7 @@ TEST(PlyVertices, DataErrorsNameTheVertex) {
   };
   EXPECT_NE(error_of(with("1 -2 -3 nan")).find("vertex 1: mass nan is not finite"), std::string::npos);
   EXPECT_NE(error_of(with("1 -2 -3 1e999")).find("vertex 1: mass inf is not finite"), std::string::npos);
+  EXPECT_EQ(parse(with("1 -2 -3 1e-999")).masses[1], 0.0);  // underflows to 0, which is allowed
   EXPECT_NE(error_of(with("1 inf -3 1")).find("vertex 1: position (1, inf, -3) is not finite"), std::string::npos);
   std::string zero = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
                      "property uint8 mass\nend_header\n0 0 0 0\n1 1 1 0\n";
