@@ -79,7 +79,9 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
   for (;;) {
     const LatticeSpec l = lattice_for(src.report, res);
     const double budget = static_cast<double>(kMaxParticles - ctx.particles);
-    const double estimate = volume ? lattice_counts(mesh, l).prod() : src.report.area / (l.spacing * l.spacing);
+    VolumeFill f;
+    if (volume) f = fill_volume(mesh, watertight, l, 1.0, 4 * budget);
+    const double estimate = volume ? f.lattice_points : src.report.area / (l.spacing * l.spacing);
     if (estimate > 4 * budget) {
       s.error(q.tolerance ? "inertia_tolerance" : "resolution",
               q.tolerance ? "no cloud within the particle cap meets inertia_tolerance; raise it"
@@ -89,7 +91,6 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
     }
     ParticleCloud c;
     if (volume) {
-      VolumeFill f = fill_volume(mesh, watertight, l, 1.0);
       c = std::move(f.cloud);
       src.ambiguous = f.ambiguous;
     } else {
