@@ -89,9 +89,9 @@ BodyState rk4_body_reference(const RigidBodyModel& m, const BodyState& s, double
   return state_of(rk4_coords_reference(m, to_body_coords(s), t, h));
 }
 
-BodyCoords rk4_coords_step(const RigidBodyModel& m, const BodyCoords& x, double t, double h) {
-  if (m.forces.empty()) return tuned::rk4_coords_free(m, x, h);
-  return rk4_coords_reference(m, x, t, h);
+void rk4_coords_step(const RigidBodyModel& m, BodyCoords& x, double t, double h) {
+  if (m.forces.empty()) tuned::rk4_coords_free_inplace(m, x, h);
+  else x = rk4_coords_reference(m, x, t, h);
 }
 
 BodyState rk4_body_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {

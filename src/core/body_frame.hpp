@@ -89,7 +89,7 @@ BodyState rk4_body_reference(const RigidBodyModel& m, const BodyState& s, double
 /// carries BodyCoords from step to step (MethodInfo::coords_step), so a run
 /// pays the q̄ L and q Π rotations only for output, and Π never takes the
 /// round-off of a round trip through L_world; `step()` converts every time.
-BodyCoords rk4_coords_step(const RigidBodyModel& m, const BodyCoords& x, double t, double h);
+void rk4_coords_step(const RigidBodyModel& m, BodyCoords& x, double t, double h);
 BodyState rk4_body_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
 
 }  // namespace tumble

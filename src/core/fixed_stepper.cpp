@@ -20,7 +20,7 @@ void FixedStepper::step(double t, double h) {
   }
   BodyCoords& x = *coords_;
   const Eigen::Quaterniond prev = x.q;
-  x = info_->coords_step(*m_, x, t, h);
+  info_->coords_step(*m_, x, t, h);
   if (x.q.dot(prev) < 0) x.q.coeffs() = -x.q.coeffs();  // q and -q step to negated q, same Π: no change
   // The step leaves |q| alone (body_frame.hpp); renormalise once it drifts.
   // A blow-up still shows: in Π's energy, or as a non-finite q.
@@ -31,7 +31,14 @@ void FixedStepper::step(double t, double h) {
 BodyState FixedStepper::state() const { return coords_ ? state_of(*coords_) : s_; }
 
 BodyState FixedStepper::peek(double t, double h) const {
-  BodyState s = coords_ ? state_of(info_->coords_step(*m_, *coords_, t, h)) : tumble::step(info_->method, *m_, s_, t, h);
+  BodyState s;
+  if (coords_) {
+    BodyCoords x = *coords_;
+    info_->coords_step(*m_, x, t, h);
+    s = state_of(x);
+  } else {
+    s = tumble::step(info_->method, *m_, s_, t, h);
+  }
   const Eigen::Quaterniond ref = coords_ ? coords_->q : s_.q;
   s.q = same_hemisphere(s.q, ref);
   return s;

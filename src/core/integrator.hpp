@@ -29,9 +29,10 @@ enum class Method {
 using StepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s, double t, double h);
 
 struct BodyCoords;
-/// One step of size h (s) in Euler's coordinates (c, q, P, Π), for methods that
-/// integrate in them (body_frame.hpp): the Propagator carries these between steps.
-using CoordsStepFn = BodyCoords (*)(const RigidBodyModel& m, const BodyCoords& x, double t, double h);
+/// One step of size h (s) in Euler's coordinates (c, q, P, Π), in place, for
+/// methods that integrate in them (body_frame.hpp): the Propagator carries these
+/// between steps (in place: no 128-byte copy per step).
+using CoordsStepFn = void (*)(const RigidBodyModel& m, BodyCoords& x, double t, double h);
 
 /// Everything tumble knows about a method, in one row.
 struct MethodInfo {

@@ -53,7 +53,9 @@ class Propagator {
   void grid_step();
   void check(const BodyState& s, double t, double h);
   /// check() for a torque-free body carried in Euler's coordinates: the same
-  /// test (E is an invariant) without forming the seed's state every step.
+  /// test (E is an invariant) without forming the seed's state every step. P
+  /// stays bit for bit (P' = 0), so only the rotational energy ½ Π·I⁻¹Π can
+  /// grow; FixedStepper keeps |q| = 1, so q is tested for finiteness only.
   void check_free(const BodyCoords& x, double t, double h);
   [[noreturn]] void diverged(bool finite, double t, double h) const;
 
@@ -65,7 +67,7 @@ class Propagator {
   double t_ = 0;
   long steps_ = 0;
   // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.
-  double e0_ = 0, scale0_ = 0, work_ = 0, work_abs_ = 0, power_ = 0, power_abs_ = 0;
+  double e0_ = 0, erot0_ = 0, scale0_ = 0, work_ = 0, work_abs_ = 0, power_ = 0, power_abs_ = 0;
   std::optional<FreeRotationExact> exact_;
   std::unique_ptr<Rk45> rk45_;
 };

@@ -96,6 +96,24 @@ TEST(Propagator, DivergingRunThrowsWithTimeStepBodyAndMethod) {
   std::printf("%s\n", what.c_str());
 }
 
+// rk4 on a torque-free body is guarded in Euler's coordinates (check_free):
+// at dt = 0.5 s a spin of |ω| ≈ 20 rad/s turns 10 rad per step, far beyond
+// RK4's stability bound (2.83), so Π's energy grows geometrically.
+TEST(Propagator, TorqueFreeRk4BlowUpThrowsInEulersCoordinates) {
+  const RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "t-handle");
+  const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0.5, 20.0, 0.5});
+  StepConfig cfg;
+  cfg.method = Method::rk4;
+  cfg.dt = 0.5;
+  Propagator p(m, s0, cfg);
+  const auto e = run_until_diverged(p);
+  ASSERT_TRUE(e) << "expected Diverged";
+  const std::string what = e->what();
+  EXPECT_NE(what.find("t-handle"), std::string::npos) << what;
+  EXPECT_NE(what.find("method rk4"), std::string::npos) << what;
+  EXPECT_GT(e->step_index, 0);
+}
+
 // Linear damping k/M = 100/s with dt = 1 s makes Euler multiply P by -99 per
 // step: damping can only remove energy, so the balance trips.
 TEST(Propagator, NonFiniteStateThrowsDiverged) {
