@@ -25,6 +25,8 @@ class FixedStepper {
   BodyState state() const;
   /// The carried coordinates, or nullptr for methods on the seed's state.
   const BodyCoords* coords() const { return coords_ ? &*coords_ : nullptr; }
+  /// The state itself, for methods on the seed's state (coords() == nullptr).
+  const BodyState& seed_state() const { return s_; }
   /// A partial step of h from here, not kept (dense output between grid points).
   BodyState peek(double t, double h) const;
 

@@ -82,6 +82,15 @@ void Propagator::check_free(const BodyCoords& x, double t, double h) {
   diverged(std::isfinite(all), t, h);
 }
 
+void Propagator::check_free(const BodyState& s, double t, double h) {
+  const Eigen::Vector3d pi = momentum_body(s);
+  const double erot = 0.5 * pi.dot(m_->inv_inertia.cwiseProduct(pi));  // J
+  const double all = (s.c.sum() + s.P.sum()) + (s.L.sum() + erot);
+  if (erot - erot0_ <= kBlowUp * scale0_ + 1e-300 && std::abs(s.q.squaredNorm() - 1.0) <= 1e-6 && std::isfinite(all))
+    return;
+  diverged(std::isfinite(all) && s.q.coeffs().allFinite(), t, h);
+}
+
 void Propagator::diverged(bool finite, double t, double h) const {
   std::ostringstream msg;
   msg.precision(6);
@@ -95,8 +104,9 @@ void Propagator::grid_step() {
   grid_.step(static_cast<double>(steps_) * cfg_.dt, cfg_.dt);
   ++steps_;
   const double t = static_cast<double>(steps_) * cfg_.dt;
-  if (const BodyCoords* x = grid_.coords(); x && m_->forces.empty()) return check_free(*x, t, cfg_.dt);
-  check(grid_.state(), t, cfg_.dt);
+  if (!m_->forces.empty()) return check(grid_.state(), t, cfg_.dt);
+  if (const BodyCoords* x = grid_.coords()) return check_free(*x, t, cfg_.dt);
+  check_free(grid_.seed_state(), t, cfg_.dt);
 }
 
 const BodyState& Propagator::advance_to(double t) {

@@ -57,6 +57,9 @@ class Propagator {
   /// stays bit for bit (P' = 0), so only the rotational energy ½ Π·I⁻¹Π can
   /// grow; FixedStepper keeps |q| = 1, so q is tested for finiteness only.
   void check_free(const BodyCoords& x, double t, double h);
+  /// The same for a torque-free body on the seed's state: E = ½ Π·I⁻¹Π with
+  /// Π = q̄ L, plus |q| = 1 (a q whose norm overflowed normalises to a finite 0).
+  void check_free(const BodyState& s, double t, double h);
   [[noreturn]] void diverged(bool finite, double t, double h) const;
 
   const RigidBodyModel* m_;
