@@ -1,5 +1,6 @@
 #include "app/mesh_info.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -39,6 +40,13 @@ std::string mesh_text(const scene::MeshSource& m) {
   o << "    particles       " << m.particles;
   if (m.spacing > 0) o << " (spacing " << short_num(m.spacing) << " m)";
   o << ", mass " << short_num(m.mass) << " kg\n";
+  if (m.file_mass > 0) {
+    o << "    masses          per vertex, the PLY's `mass` property (sum " << short_num(m.file_mass) << " kg";
+    if (std::abs(m.mass - m.file_mass) > 1e-12 * m.file_mass) o << ", scaled to the shape's " << short_num(m.mass) << " kg";
+    o << ")";
+    if (m.massless_vertices > 0) o << "; " << m.massless_vertices << " vertices of mass 0 left out";
+    o << "\n";
+  }
   auto rows = [&](const char* label, const Eigen::Matrix3d& J) {
     o << "    " << label << vec(J.row(0).transpose()) << " kg m^2 (cloud axes, about its own centre of mass)\n";
     for (int i = 1; i < 3; ++i) o << "                    " << vec(J.row(i).transpose()) << "\n";
@@ -73,7 +81,9 @@ io::Json mesh_json(const scene::MeshSource& m) {
              {"particles", m.particles},
              {"spacing", m.spacing},
              {"mass", m.mass},
-             {"cloud_inertia", m3(m.cloud_inertia)}};
+             {"cloud_inertia", m3(m.cloud_inertia)},
+             {"file_mass", m.file_mass},
+             {"massless_vertices", m.massless_vertices}};
   if (m.has_exact) {
     j["exact_inertia"] = m3(m.exact_inertia);
     j["relative_error"] = m.inertia_error();

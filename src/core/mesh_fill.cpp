@@ -113,12 +113,15 @@ Eigen::Vector3d lattice_counts(const TriangleMesh& mesh, const LatticeSpec& l) {
   return counts_in_lattice_axes(in_lattice_axes(mesh, l, turned), l);
 }
 
-VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const LatticeSpec& l, double mass) {
+VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const LatticeSpec& l, double mass,
+                       double max_points) {
   VolumeFill out;
   TriangleMesh turned;
   const TriangleMesh& mesh = in_lattice_axes(mesh_in, l, turned);
   if (mesh.triangles.empty() || !(l.spacing > 0)) return out;
   const Eigen::Vector3d lo = box_lo(mesh), n = counts_in_lattice_axes(mesh, l);
+  out.lattice_points = n.prod();
+  if (out.lattice_points > max_points) return out;
   const long nx = long(n.x()), ny = long(n.y()), nz = long(n.z());
   const std::vector<Crossing> xs = row_crossings(mesh, lo, l, ny, nz);
   std::vector<Eigen::Vector3d> inside;

@@ -2,6 +2,7 @@
 // its surface, and the exact shell properties the surface samples approach.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -36,6 +37,7 @@ struct VolumeFill {
   ParticleCloud cloud;                 ///< equal masses summing to the requested mass
   std::size_t winding_evaluations = 0; ///< GWN evaluations made (0 for a watertight mesh)
   std::size_t ambiguous = 0;           ///< points with winding number in (0.25, 0.75): near a hole
+  double lattice_points = 0;           ///< points visited, nx·ny·nz (the cloud is empty when over `max_points`)
 };
 
 /// Lattice points inside the mesh, each of mass `mass` / count.
@@ -45,9 +47,12 @@ struct VolumeFill {
 /// evaluated at the ends and middle of each stretch of a row between crossings
 /// and at every point of a stretch where those disagree or are not near an
 /// integer (holes make it fractional).
-VolumeFill fill_volume(const TriangleMesh& mesh, bool watertight, const LatticeSpec& lattice, double mass);
+/// A lattice of more than `max_points` points is not filled: only
+/// `lattice_points` is set (a particle budget checked without turning the mesh twice).
+VolumeFill fill_volume(const TriangleMesh& mesh, bool watertight, const LatticeSpec& lattice, double mass,
+                       double max_points = INFINITY);
 
-/// Number of lattice points per axis `fill_volume` visits (for the particle budget).
+/// Number of lattice points per axis `fill_volume` visits.
 Eigen::Vector3d lattice_counts(const TriangleMesh& mesh, const LatticeSpec& lattice);
 
 /// `count` points on the surface, area-weighted, uniform within each triangle,

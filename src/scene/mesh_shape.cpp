@@ -2,6 +2,7 @@
 // with the exact mass properties beside the cloud's for `tumble info`.
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <cstdio>
 
 #include "core/error.hpp"
@@ -9,6 +10,7 @@
 #include "core/mesh_fill.hpp"
 #include "scene/internal.hpp"
 #include "scene/mesh_file.hpp"
+#include "scene/ply_vertices.hpp"
 
 namespace tumble::scene::detail {
 
@@ -77,7 +79,9 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
   for (;;) {
     const LatticeSpec l = lattice_for(src.report, res);
     const double budget = static_cast<double>(kMaxParticles - ctx.particles);
-    const double estimate = volume ? lattice_counts(mesh, l).prod() : src.report.area / (l.spacing * l.spacing);
+    VolumeFill f;
+    if (volume) f = fill_volume(mesh, watertight, l, 1.0, 4 * budget);
+    const double estimate = volume ? f.lattice_points : src.report.area / (l.spacing * l.spacing);
     if (estimate > 4 * budget) {
       s.error(q.tolerance ? "inertia_tolerance" : "resolution",
               q.tolerance ? "no cloud within the particle cap meets inertia_tolerance; raise it"
@@ -87,7 +91,6 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
     }
     ParticleCloud c;
     if (volume) {
-      VolumeFill f = fill_volume(mesh, watertight, l, 1.0);
       c = std::move(f.cloud);
       src.ambiguous = f.ambiguous;
     } else {
@@ -131,8 +134,11 @@ void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext&
   if (ctx.diag.error_count() != errors) return;
 
   MeshFile mf;
+  std::optional<PlyVertices> ply;  // assimp drops a PLY's per-vertex mass: read the vertices ourselves
   try {
-    mf = read_mesh_file(ctx.base_dir / file);
+    if (q.fill == "vertices" && is_ply_file(file)) ply = read_ply_vertices(ctx.base_dir / file);
+    if (ply && ply->faces == 0) mf.mesh.vertices = ply->positions;  // a point cloud, which assimp refuses
+    else mf = read_mesh_file(ctx.base_dir / file);
   } catch (const InputError& e) {
     s.error("file", e.what());
     return;
@@ -151,10 +157,22 @@ void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext&
 
   ParticleCloud cloud;
   if (q.fill == "vertices") {
-    // The distinct points (STL and OBJ repeat corners per face).
-    if (!reserve_particles(ctx, s, "file", static_cast<double>(mesh.vertices.size()))) return;
-    const double m = q.mass.value_or(1.0) / static_cast<double>(mesh.vertices.size());
-    for (const auto& p : mesh.vertices) cloud.push_back({p, m});
+    if (ply && !ply->masses.empty()) {
+      // Every PLY vertex with its own mass (kg); a shape `mass` rescales them to that total.
+      for (const std::string& w : ply->warnings) ctx.diag.warning(t.source(), path, w);
+      for (double m : ply->masses) src.file_mass += m;
+      const double k = q.mass ? *q.mass / src.file_mass : 1.0;
+      for (std::size_t i = 0; i < ply->masses.size(); ++i) {
+        if (ply->masses[i] > 0) cloud.push_back({ply->positions[i] * *scale, ply->masses[i] * k});
+        else ++src.massless_vertices;  // adds nothing; the core wants every mass > 0
+      }
+      if (!reserve_particles(ctx, s, "file", static_cast<double>(cloud.size()))) return;
+    } else {
+      // The distinct points (STL and OBJ repeat corners per face), equal masses.
+      if (!reserve_particles(ctx, s, "file", static_cast<double>(mesh.vertices.size()))) return;
+      const double m = q.mass.value_or(1.0) / static_cast<double>(mesh.vertices.size());
+      for (const auto& p : mesh.vertices) cloud.push_back({p, m});
+    }
     measure_cloud(cloud, src);
   } else {
     if (mesh.triangles.empty()) {

@@ -120,6 +120,8 @@ struct MeshSource {
   double mass = 0;                  ///< kg
   std::size_t particles = 0;
   double spacing = 0;               ///< m between lattice points or samples
+  double file_mass = 0;             ///< kg: sum of a PLY's per-vertex `mass` (fill "vertices"); 0 for equal masses
+  std::size_t massless_vertices = 0;  ///< PLY vertices of mass 0, left out of the cloud
   bool has_exact = false;           ///< exact tensor known (watertight volume, or surface shell)
   Eigen::Vector3d exact_com = Eigen::Vector3d::Zero();      ///< cloud axes, m
   Eigen::Matrix3d exact_inertia = Eigen::Matrix3d::Zero();  ///< about exact_com, cloud axes, kg·m²

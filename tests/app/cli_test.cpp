@@ -173,4 +173,31 @@ TEST_F(Cli, UnwritableCsvIsAnIoError) {
   EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
 }
 
+// A PLY point cloud with per-vertex masses (kg): info reports them, in text and
+// JSON; a negative mass exits 2 naming the file and the vertex.
+TEST_F(Cli, InfoShowsPlyVertexMasses) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                             "property float z\nproperty float mass\nend_header\n";
+  std::ofstream(dir_ / "t.ply") << header << "0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 1 4\n";
+  std::ofstream(dir_ / "t.toml") << "[[bodies]]\nshape = { type = \"mesh\", file = \"t.ply\", fill = \"vertices\" }\n";
+  const Result text = run("info '" + (dir_ / "t.toml").string() + "'");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("masses          per vertex, the PLY's `mass` property (sum 10 kg)"), std::string::npos)
+      << text.out;
+  const Result json = run("info '" + (dir_ / "t.toml").string() + "' --json");
+  ASSERT_EQ(json.code, 0) << json.err;
+  const auto b = nlohmann::json::parse(json.out).at("bodies").at(0);
+  EXPECT_EQ(b.at("meshes").at(0).at("file_mass").get<double>(), 10.0);
+  EXPECT_EQ(b.at("mass").get<double>(), 10.0);
+  // About c = (0.2, 0.3, 0.4) m: diag(7, 6, 5) about the origin − 10 kg (|c|² I − c cᵀ).
+  const auto J = b.at("inertia").get<std::vector<std::vector<double>>>();
+  const double expected[3][3] = {{4.5, 0.6, 0.8}, {0.6, 4.0, 1.2}, {0.8, 1.2, 3.7}};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(J[i][k], expected[i][k], 1e-12) << i << k;
+  std::ofstream(dir_ / "t.ply") << header << "0 0 0 1\n1 0 0 2\n0 1 0 -3\n0 0 1 4\n";
+  const Result bad = run("info '" + (dir_ / "t.toml").string() + "'");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("t.ply: vertex 2: mass -3 kg is negative"), std::string::npos) << bad.err;
+}
+
 }  // namespace

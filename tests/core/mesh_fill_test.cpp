@@ -79,6 +79,17 @@ TEST(VolumeFill, RowCrossingsAgreeWithWindingNumber) {
   EXPECT_EQ(fill_volume(cube, true, {0.5, Eigen::Vector3d(0.5, 0, 0)}, 1.0).cloud.size(), 4u * 4 * 4);
 }
 
+// Over its point budget a lattice is counted, not filled; at the budget it is filled.
+TEST(VolumeFill, MaxPointsCountsWithoutFilling) {
+  const TriangleMesh m = box_mesh({1.0, 0.6, 0.4});
+  const LatticeSpec l{0.1, Eigen::Vector3d::Constant(0.5)};
+  const VolumeFill over = fill_volume(m, true, l, 1.0, 239);
+  EXPECT_EQ(over.lattice_points, 240.0);
+  EXPECT_TRUE(over.cloud.empty());
+  EXPECT_EQ(fill_volume(m, true, l, 1.0, 240).cloud.size(), 240u);
+  EXPECT_EQ(fill_volume(m, true, l, 1.0).lattice_points, lattice_counts(m, l).prod());
+}
+
 TEST(VolumeFill, WindingNumberToleratesASmallHoleNotAnOpenFace) {
   TriangleMesh sphere = icosphere(3, 1.0);
   const LatticeSpec l{0.08, Eigen::Vector3d(0.3, 0.7, 0.2)};

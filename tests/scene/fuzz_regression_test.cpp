@@ -1,6 +1,6 @@
 // Replays the fuzzing corpora (tests/fuzz/regressions: every input the fuzzers
-// ever crashed on, plus the seeds) through the scene loader and the cloud
-// reader: each must load or fail with InputError, nothing else.
+// ever crashed on, plus the seeds) through the scene loader, the cloud reader
+// and the PLY vertex reader: each must load or fail with InputError, nothing else.
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,6 +10,7 @@
 #include "core/input_file.hpp"
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
+#include "scene/ply_vertices.hpp"
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -59,6 +60,21 @@ TEST(FuzzRegressions, CloudInputsParseOrFailWithInputError) {
     try {
       const tumble::ParticleCloud c = tumble::parse_cloud_text(slurp(p), "fuzz.txt");
       if (!c.empty()) (void)tumble::compute_mass_properties(c, "fuzz");
+    } catch (const tumble::InputError&) {
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "unexpected exception: " << e.what();
+    }
+  }
+}
+
+TEST(FuzzRegressions, PlyInputsParseOrFailWithInputError) {
+  const std::vector<fs::path> inputs = files(kSource / "tests/fuzz/regressions/ply");
+  ASSERT_FALSE(inputs.empty()) << "no PLY corpus: the replay would check nothing";
+  for (const fs::path& p : inputs) {
+    SCOPED_TRACE(p.string());
+    std::istringstream in(slurp(p));
+    try {
+      (void)tumble::scene::read_ply_vertices(in, "fuzz.ply");
     } catch (const tumble::InputError&) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << "unexpected exception: " << e.what();

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -152,6 +153,30 @@ TEST(MeshShape, InertiaTolerancePicksALatticeWithinIt) {
     EXPECT_LE(m.inertia_error(), tol);
     EXPECT_GT(m.particles, 0u);
   }
+}
+
+// The ladder (resolution 8, ×1.2 per rung, rounded up) stops at the first rung
+// within the tolerance: the same cloud, bit for bit, as that resolution given
+// directly, while the rung before misses the tolerance.
+TEST(MeshShape, InertiaToleranceStopsAtTheFirstRungWithinIt) {
+  const double tol = 1e-3;
+  const scene::Scene s = load_mesh(R"({ type = "mesh", file = "OBJ/box.obj", inertia_tolerance = 1e-3 })");
+  const scene::MeshSource& m = s.bodies[0].meshes[0];
+  const long long chosen = std::llround((m.report.box_max - m.report.box_min).maxCoeff() / m.spacing);
+  std::vector<long long> rungs{8};
+  while (rungs.back() < chosen) rungs.push_back(static_cast<long long>(std::ceil(double(rungs.back()) * 1.2)));
+  ASSERT_EQ(rungs.back(), chosen);
+  ASSERT_GE(rungs.size(), 2u);
+  auto at = [](long long r) {
+    return load_mesh(R"({ type = "mesh", file = "OBJ/box.obj", resolution = )" + std::to_string(r) + " }");
+  };
+  const scene::Scene direct = at(chosen);
+  ASSERT_EQ(direct.bodies[0].cloud.size(), s.bodies[0].cloud.size());
+  for (std::size_t i = 0; i < s.bodies[0].cloud.size(); ++i)
+    ASSERT_EQ(direct.bodies[0].cloud[i].position, s.bodies[0].cloud[i].position) << i;
+  EXPECT_EQ(direct.bodies[0].meshes[0].cloud_inertia, m.cloud_inertia);
+  EXPECT_LE(m.inertia_error(), tol);
+  EXPECT_GT(at(rungs[rungs.size() - 2]).bodies[0].meshes[0].inertia_error(), tol);
 }
 
 TEST(MeshShape, SurfaceAndVerticesFills) {
