@@ -1,8 +1,9 @@
 // The measurement behind kernel::split_order and split_order4
 // (splitting_kernel.hpp): the orientation error at 10 s (dt = 1 ms) of each of
 // the six symmetric sub-flow orders of `splitting` (argument 4: of the base map
-// of `splitting4`), torque-free, against the closed form, on 18 bodies × 41
-// spins: the old 5 (10 rad/s near each principal axis, two generic) and 36 that
+// of `splitting4`), torque-free, against the closed form, on 18 bodies × 62
+// spins: the old 5 (10 rad/s near each principal axis, two generic), 21 that
+// start 0.2°–7° from the intermediate axis (three directions each), and 36 that
 // cover both orbit regions of the momentum sphere (Fassò, J. Comput. Phys. 189,
 // 2003): circulation about the smallest-moment axis (ρ = |L|²/(2E I_mid) < 1)
 // and about the largest (ρ > 1), six orbits each from near the axis to 1e-6
@@ -11,9 +12,11 @@
 // of error / best error), and oracles: the best single order per body (the most
 // any rule that reads only the moments can reach), per body and orbit region,
 // and per body and whether Π starts at the intermediate axis (the saddle);
-// for `splitting` also an alternative rule for starts off the saddle and the
+// for `splitting` also an alternative rule for starts off the saddle, the
 // order chosen each step from the current Π (the rule near the saddle, the
-// alternative elsewhere).
+// alternative elsewhere), the order a run fixes at its start
+// (kernel::split_order_for_start), and the rule against the alternative by
+// the start's angle from the intermediate axis.
 // Arguments (any order): `4`, `max` (the worst error at t = 1, 2, ..., 10 s,
 // which no lucky cancellation at 10 s hides, instead of the error at 10 s) and
 // `csv` (one row per case instead of the summary).
@@ -104,6 +107,11 @@ int main(int argc, char** argv) {
     }
     Ls.push_back(I.cwiseProduct(Eigen::Vector3d(3, 7, -2)));
     Ls.push_back(I.cwiseProduct(Eigen::Vector3d(5, 5, 5)));
+    for (double deg : {0.2, 0.4, 1.0, 2.0, 3.0, 5.0, 7.0})  // |Π| = 10 I_mid, tilted towards three directions
+      for (double phi : {0.3, 1.2, 2.5}) {
+        const double a = deg * M_PI / 180, n = 10 * I[1];
+        Ls.push_back(Eigen::Vector3d(n * std::sin(a) * std::cos(phi), n * std::cos(a), n * std::sin(a) * std::sin(phi)));
+      }
     for (double u : us)
       for (double alpha : alphas) {
         Ls.push_back(momentum_on_orbit(I, I[0] / I[1] + u * (1 - I[0] / I[1]), alpha));  // about the smallest
@@ -208,9 +216,23 @@ int main(int argc, char** argv) {
   if (!fourth) {
     row("alternative: 12321, elongated 13231", [](const Case& c) { return alternative_order(c.I.cwiseInverse().eval().data()); });
     row("per step: rule at the saddle, else alt.", [](const Case&) { return kPerStep; });
-    row("per run, from the initial Pi: the same", [&](const Case& c) {
-      return at_saddle(c) ? moments_rule(c) : alternative_order(c.I.cwiseInverse().eval().data());
+    row("per run: split_order_for_start (1 deg)", [](const Case& c) {
+      return kernel::split_order_for_start(c.I.cwiseInverse().eval().data(), c.L.data());  // Π = L at q = 1
     });
+    // The rule against the alternative by the start's angle from the intermediate axis (I_mid = I[1]).
+    std::printf("\nby the start's angle from the intermediate axis: cases, mean regret of the rule | alternative\n");
+    const double edges[] = {0, 0.15, 0.6, 1.5, 4, 8, 20, 90.1};
+    for (int b = 0; b + 1 < 8; ++b) {
+      double sr = 0, sa = 0;
+      int k = 0;
+      for (const Case& c : cases) {
+        const double deg = std::acos(std::min(1.0, std::abs(c.L[1]) / c.L.norm())) * 180 / M_PI;
+        if (deg < edges[b] || deg >= edges[b + 1]) continue;
+        sr += regret_of(c, moments_rule(c)), sa += regret_of(c, alternative_order(c.I.cwiseInverse().eval().data())), ++k;
+      }
+      if (k > 0) std::printf("  [%g, %g) deg  %4d  %.3f | %.3f\n", edges[b], edges[b + 1], k, sr / k, sa / k);
+    }
+    std::printf("\n");
   }
   for (int o = 0; o < 6; ++o) {
     const int* a = kernel::kSplitAxes[o];

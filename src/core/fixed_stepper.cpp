@@ -2,19 +2,26 @@
 
 #include <cmath>
 
+#include "core/dynamics.hpp"
 #include "core/quaternion.hpp"
+#include "core/splitting_kernel.hpp"
 
 namespace tumble {
 
 FixedStepper::FixedStepper(Method method, const RigidBodyModel& m, const BodyState& s0)
     : m_(&m), info_(&method_info(method)), s_(s0) {
   if (info_->coords_step) coords_ = to_body_coords(s0);
+  if (info_->ordered_step) order_ = kernel::split_order_for_start(m.inv_inertia.data(), momentum_body(s0).data());
+}
+
+BodyState FixedStepper::seed_step(const BodyState& s, double t, double h) const {
+  return order_ >= 0 ? info_->ordered_step(*m_, s, t, h, order_) : tumble::step(info_->method, *m_, s, t, h);
 }
 
 void FixedStepper::step(double t, double h) {
   if (!coords_) {
     const Eigen::Quaterniond prev = s_.q;
-    s_ = tumble::step(info_->method, *m_, s_, t, h);
+    s_ = seed_step(s_, t, h);
     s_.q = same_hemisphere(s_.q, prev);
     return;
   }
@@ -37,7 +44,7 @@ BodyState FixedStepper::peek(double t, double h) const {
     info_->coords_step(*m_, x, t, h);
     s = state_of(x);
   } else {
-    s = tumble::step(info_->method, *m_, s_, t, h);
+    s = seed_step(s_, t, h);
   }
   const Eigen::Quaterniond ref = coords_ ? coords_->q : s_.q;
   s.q = same_hemisphere(s.q, ref);

@@ -1,7 +1,8 @@
 // One body stepped by a fixed-step method the way a run steps it: in Euler's
 // coordinates carried from step to step when the method integrates in them
 // (MethodInfo::coords_step: rk4), otherwise on the seed's state through
-// step(). The Propagator adds the grid, sampling and the divergence guard;
+// step(), or with the sub-flow order fixed from the start when the method's
+// best order depends on it (MethodInfo::ordered_step: splitting). The Propagator adds the grid, sampling and the divergence guard;
 // tumble bench steps its methods through this too, so the charts show what a
 // run does (issue #10 §1).
 #pragma once
@@ -31,10 +32,13 @@ class FixedStepper {
   BodyState peek(double t, double h) const;
 
  private:
+  BodyState seed_step(const BodyState& s, double t, double h) const;
+
   const RigidBodyModel* m_;
   const MethodInfo* info_;
   BodyState s_;                       // the state, when not carried in coords_
   std::optional<BodyCoords> coords_;
+  int order_ = -1;                    // sub-flow order fixed at the start, or -1
 };
 
 /// n fixed steps of h (s) from s0 at t0 (s), as a run takes them, no guard.

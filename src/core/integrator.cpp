@@ -23,22 +23,22 @@ struct Cost {
 // alias a turn of π or more per step.
 constexpr double kFollowRk = 0.5, kFollowFirstOrder = 0.1, kFollowGeometric = 3.0;
 
-//  method, name, order, step, coords_step, adaptive, closed form if free, auto candidate, splits, turn, cost
+//  method, name, order, step, coords_step, ordered_step, adaptive, closed form if free, auto candidate, splits, turn, cost
 constexpr MethodInfo kTable[] = {
-    {Method::euler, "euler", 1, euler_step, nullptr, false, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
-    {Method::semi_implicit_euler, "semi_implicit_euler", 1, semi_implicit_euler_step, nullptr, false, false, false, false,
+    {Method::euler, "euler", 1, euler_step, nullptr, nullptr, false, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
+    {Method::semi_implicit_euler, "semi_implicit_euler", 1, semi_implicit_euler_step, nullptr, nullptr, false, false, false, false,
      kFollowFirstOrder, kCostSemiImplicitEuler.free, kCostSemiImplicitEuler.forced},
-    {Method::rk4, "rk4", 4, rk4_body_step, rk4_coords_step, false, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
-    {Method::rk4_seed, "rk4_seed", 4, rk4_step, nullptr, false, false, false, false, kFollowRk, kCostRk4Seed.free,
+    {Method::rk4, "rk4", 4, rk4_body_step, rk4_coords_step, nullptr, false, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
+    {Method::rk4_seed, "rk4_seed", 4, rk4_step, nullptr, nullptr, false, false, false, false, kFollowRk, kCostRk4Seed.free,
      kCostRk4Seed.forced},
-    {Method::rk45, "rk45", 5, rk45_fixed_step, nullptr, true, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
-    {Method::implicit_midpoint, "implicit_midpoint", 2, implicit_midpoint_step, nullptr, false, false, true, false,
+    {Method::rk45, "rk45", 5, rk45_fixed_step, nullptr, nullptr, true, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
+    {Method::implicit_midpoint, "implicit_midpoint", 2, implicit_midpoint_step, nullptr, nullptr, false, false, true, false,
      kFollowGeometric, kCostImplicitMidpoint.free, kCostImplicitMidpoint.forced},
-    {Method::splitting, "splitting", 2, splitting_step, nullptr, false, false, true, true, kFollowGeometric,
+    {Method::splitting, "splitting", 2, splitting_step, nullptr, splitting_step_ordered, false, false, true, true, kFollowGeometric,
      kCostSplitting.free, kCostSplitting.forced},
-    {Method::splitting4, "splitting4", 4, splitting4_step, nullptr, false, false, true, true, kFollowGeometric,
+    {Method::splitting4, "splitting4", 4, splitting4_step, nullptr, nullptr, false, false, true, true, kFollowGeometric,
      kCostSplitting4.free, kCostSplitting4.forced},
-    {Method::exact, "exact", 0, exact_step, nullptr, false, true, true, false, kFollowGeometric, kCostExact.free,
+    {Method::exact, "exact", 0, exact_step, nullptr, nullptr, false, true, true, false, kFollowGeometric, kCostExact.free,
      kCostExact.forced},
 };
 static_assert(std::size(kTable) == kAllMethods.size());

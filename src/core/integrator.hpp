@@ -34,6 +34,10 @@ struct BodyCoords;
 /// between steps (in place: no 128-byte copy per step).
 using CoordsStepFn = void (*)(const RigidBodyModel& m, BodyCoords& x, double t, double h);
 
+/// One step of size h (s) with the splitting sub-flow order given (index into
+/// kernel::kSplitAxes), for methods whose best order depends on the start.
+using OrderedStepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s, double t, double h, int order);
+
 /// Everything tumble knows about a method, in one row.
 struct MethodInfo {
   Method method;
@@ -41,6 +45,9 @@ struct MethodInfo {
   int order;                 ///< global order (rk45: of its 5th-order solution; exact: 0 = exact when torque-free)
   StepFn step;               ///< one fixed step (rk45: one uncontrolled Dormand–Prince step)
   CoordsStepFn coords_step;  ///< the same step in Euler's coordinates, or nullptr (steps on the seed's state)
+  /// The same step with the sub-flow order a run fixes at its start
+  /// (kernel::split_order_for_start), or nullptr (step() alone).
+  OrderedStepFn ordered_step;
   bool adaptive;             ///< Propagator runs its own step control with dense output (rk45)
   bool closed_form_if_free;  ///< Propagator evaluates the closed form at any t when torque-free (exact)
   bool auto_candidate;       ///< method = "auto" may pick it

@@ -91,6 +91,12 @@ BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, 
   return strang(m, s, t, h, static_cast<FreeRotationMap>(free_rotation_splitting));
 }
 
+BodyState splitting_step_ordered(const RigidBodyModel& m, const BodyState& s, double t, double h, int order) {
+  return strang(m, s, t, h, [order](const RigidBodyModel& b, const Eigen::Vector3d& L, Eigen::Quaterniond& q, double tau) {
+    free_rotation_splitting(b, L, q, tau, order);
+  });
+}
+
 BodyState splitting4_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
   const double cbrt2 = std::cbrt(2.0);
   const double w1 = 1.0 / (2.0 - cbrt2), w0 = -cbrt2 * w1;

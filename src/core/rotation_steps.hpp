@@ -42,6 +42,9 @@ BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, dou
                       FreeRotationMap rotate);
 
 BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, double h);
+/// The same step with the sub-flow order given (index into kernel::kSplitAxes):
+/// a run fixes it at its start (kernel::split_order_for_start, FixedStepper).
+BodyState splitting_step_ordered(const RigidBodyModel& m, const BodyState& s, double t, double h, int order);
 /// Yoshida's triple jump (Phys. Lett. A 150, 1990) of the Strang splitting
 /// step, with its own sub-flow order (kernel::split_order4): order 4.
 BodyState splitting4_step(const RigidBodyModel& m, const BodyState& s, double t, double h);

@@ -289,20 +289,16 @@ inline bool axes_by_moment(const double inv[3], int& s, int& m, int& l) {
 /// The orbit region does not matter. Fassò (J. Comput. Phys. 189, 2003) finds
 /// the dominant term of the modified Hamiltonian, hence the energy error,
 /// depends on the moments and on whether Π circulates about the smallest
-/// (|L|² < 2E I2) or the largest moment's axis. On 738 cases covering both
-/// regions (18 bodies × 41 spins, down to 1e-6 from the separatrix) the best
-/// order per body and region is 10^0.125 from the best per case, the best per
-/// body alone 10^0.135: reading the region could gain at most 2% of error
-/// (splitting4: 10^0.117 against 10^0.127). What does matter is where Π
-/// starts: this rule is the best order for the 18 spins that start at the
-/// intermediate axis (10^0.04 from the best; the reference problem, the
-/// Dzhanibekov demos), but 10^0.41 from the best on the 720 that start
-/// elsewhere, where 1,2,3,2,1 (elongated: 1,3,2,3,1) is 10^0.15 from it and
-/// gives 1.2e-4 rad on the reference problem instead of 1.4e-5. Choosing per
-/// step from the current Π (the rule near the saddle, that one elsewhere) does
-/// not keep both: 7.7e-5 rad there. A choice from the initial Π, kept per body
-/// for the whole run, would (10^0.151 on the 738 cases, 1.4e-5 rad there), but
-/// steps are stateless: it needs an order stored with the body at its start.
+/// (|L|² < 2E I2) or the largest moment's axis. On the wider study (18 bodies ×
+/// 62 starts, 1116 cases in both regions, down to 1e-6 from the separatrix) the
+/// best order per body and region is 10^0.118 from the best per case, the best
+/// per body alone 10^0.131: reading the region gains at most 3% of error
+/// (splitting4: 10^0.105 against 10^0.112). What matters is where Π starts:
+/// this rule is the best for starts at the intermediate axis (the reference
+/// problem, the Dzhanibekov demos) and 10^0.3–0.8 from the best for starts
+/// beyond 8° from it, so a run fixes its order at its start
+/// (split_order_for_start). Choosing per step from the current Π instead errs
+/// 7.7e-5 rad on the reference problem (the start's choice: 1.4e-5).
 inline int split_order(const double inv[3]) {
   int s, m, l;
   if (!axes_by_moment(inv, s, m, l)) return 5;  // spherical: every order is the same map
@@ -315,14 +311,37 @@ inline int split_order(const double inv[3]) {
 /// map's h³ error, so other constants lead): smallest moment outermost, the
 /// largest in the middle (1,3,2,3,1), best on 14 of the first study's 18 bodies
 /// and on average 10^0.09 from the best order per case (fixed 1,2,3,2,1:
-/// 10^0.47; `scripts/splitting_order_study.sh 4`). On the 738 cases of both
-/// orbit regions it is the best single order for every body (10^0.127 from the
-/// best per case; fixed 1,2,3,2,1: 10^0.51), and neither the region (10^0.117)
-/// nor a start at the saddle (10^0.121) would gain measurably.
+/// 10^0.47; `scripts/splitting_order_study.sh 4`). On the 1116 cases of the
+/// wider study it is 10^0.119 from the best per case (fixed 1,2,3,2,1:
+/// 10^0.48); the best single order per body would be 10^0.112, per body and
+/// region or per body and start at the saddle 10^0.105: none gains measurably.
 inline int split_order4(const double inv[3]) {
   int s, m, l;
   if (!axes_by_moment(inv, s, m, l)) return 5;
   return split_index(s, l);
+}
+
+/// The sub-flow order of a `splitting` run, chosen once from the body's
+/// moments and its initial Π (body frame, any unit): split_order when Π starts
+/// within 1° of the intermediate axis (the saddle: the Dzhanibekov starts and
+/// the reference problem), else the smallest moment outermost with the
+/// intermediate one in the middle, 1,2,3,2,1 (elongated bodies: the largest in
+/// the middle, 1,3,2,3,1). Measured (scripts/splitting_order_study.sh, 18
+/// bodies × 62 starts): for starts 0.15°–8° from the intermediate axis the two
+/// rules are within 10^0.05 of each other, below 0.15° the moments' rule is
+/// 10^0.15 better, beyond 8° the other 10^0.2–0.5 better. Over all 1116 cases
+/// this choice is 10^0.146 from the best order per case, split_order alone
+/// 10^0.316; a threshold anywhere from 0.15° to 5° gives the same mean within
+/// 10^0.003 (from the study's csv). A body with two equal moments has no
+/// saddle and keeps split_order.
+inline int split_order_for_start(const double inv[3], const double pi0[3]) {
+  int s, m, l;
+  if (!axes_by_moment(inv, s, m, l)) return 5;
+  if (inv[s] == inv[m] || inv[m] == inv[l]) return split_order(inv);
+  constexpr double kCos2Saddle = 0.99969541350954794;  // cos²(1°)
+  const double n2 = pi0[0] * pi0[0] + pi0[1] * pi0[1] + pi0[2] * pi0[2];
+  if (pi0[m] * pi0[m] >= kCos2Saddle * n2) return split_order(inv);
+  return split_order(inv) == split_index(m, l) ? split_index(s, l) : split_index(s, m);
 }
 
 /// splitting_rotation<false> with the order picked at run time (index into kSplitAxes).
