@@ -72,6 +72,15 @@ std::optional<Diverged> run_until_diverged(Propagator& p) {
   return std::nullopt;
 }
 
+/// A run of `method` at step dt (s) from s0, until it diverges (or t = 1000 s).
+std::optional<Diverged> run_until_diverged(const RigidBodyModel& m, const BodyState& s0, Method method, double dt) {
+  StepConfig cfg;
+  cfg.method = method;
+  cfg.dt = dt;
+  Propagator p(m, s0, cfg);
+  return run_until_diverged(p);
+}
+
 // Explicit Euler with a huge step on a fast spin: ω dt = 50 rad per step. The
 // body (0.1, 1.9, 2.0) starts spinning about its major axis with a small tilt;
 // Euler's orientation update rotates about ω by ~π per step and throws the spin
@@ -80,11 +89,7 @@ std::optional<Diverged> run_until_diverged(Propagator& p) {
 TEST(Propagator, DivergingRunThrowsWithTimeStepBodyAndMethod) {
   const RigidBodyModel m = testing::body_with_moments({0.1, 1.9, 2.0}, 1.0, "spinning top");
   BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {3.0, 2.0, 50.0});
-  StepConfig cfg;
-  cfg.method = Method::euler;
-  cfg.dt = 1.0;
-  Propagator p(m, s0, cfg);
-  const auto e = run_until_diverged(p);
+  const auto e = run_until_diverged(m, s0, Method::euler, 1.0);
   ASSERT_TRUE(e) << "expected Diverged";
   const std::string what = e->what();
   EXPECT_NE(what.find("diverged at t="), std::string::npos) << what;
@@ -102,11 +107,7 @@ TEST(Propagator, DivergingRunThrowsWithTimeStepBodyAndMethod) {
 TEST(Propagator, TorqueFreeRk4BlowUpThrowsInEulersCoordinates) {
   const RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 1.0, "t-handle");
   const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {0.5, 20.0, 0.5});
-  StepConfig cfg;
-  cfg.method = Method::rk4;
-  cfg.dt = 0.5;
-  Propagator p(m, s0, cfg);
-  const auto e = run_until_diverged(p);
+  const auto e = run_until_diverged(m, s0, Method::rk4, 0.5);
   ASSERT_TRUE(e) << "expected Diverged";
   const std::string what = e->what();
   EXPECT_NE(what.find("t-handle"), std::string::npos) << what;
