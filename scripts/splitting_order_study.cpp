@@ -56,15 +56,6 @@ double rho_of(const Eigen::Vector3d& I, const Eigen::Vector3d& L) {
   return L.squaredNorm() / (L.cwiseProduct(I.cwiseInverse()).dot(L) * I[1]);
 }
 
-/// The alternative to split_order for spins that do not start at the saddle:
-/// its compact/elongated split, with the smallest moment outermost (1,2,3,2,1;
-/// elongated 1,3,2,3,1).
-int alternative_order(const double inv[3]) {
-  int s, m, l;
-  kernel::axes_by_moment(inv, s, m, l);
-  return kernel::split_order(inv) == kernel::split_index(m, l) ? kernel::split_index(s, l) : kernel::split_index(s, m);
-}
-
 /// Π within 0.6° of the intermediate axis (the saddle).
 bool near_saddle(const double inv[3], const Eigen::Vector3d& pi) {
   int s, m, l;
@@ -73,7 +64,7 @@ bool near_saddle(const double inv[3], const Eigen::Vector3d& pi) {
 }
 
 /// err[6]: `splitting` choosing its order each step from the current Π
-/// (split_order near the saddle, alternative_order elsewhere).
+/// (split_order near the saddle, split_order_off_saddle elsewhere).
 constexpr int kPerStep = 6;
 
 struct Case {
@@ -131,7 +122,7 @@ int main(int argc, char** argv) {
             const Eigen::Vector3d pi = Eigen::Quaterniond(q.w, q.x, q.y, q.z).conjugate() * L;
             const int order = o < kPerStep                   ? o
                               : near_saddle(inv.data(), pi) ? kernel::split_order(inv.data())
-                                                            : alternative_order(inv.data());
+                                                            : kernel::split_order_off_saddle(inv.data());
             q = kernel::splitting_rotation_ordered(order, q, L.data(), inv.data(), dt);
             continue;
           }
@@ -214,7 +205,7 @@ int main(int argc, char** argv) {
   row("oracle: best per body and orbit region", oracle([](const Case& c) { return double(c.rho > 1); }));
   row("oracle: best per body and start at saddle", oracle([&](const Case& c) { return double(at_saddle(c)); }));
   if (!fourth) {
-    row("alternative: 12321, elongated 13231", [](const Case& c) { return alternative_order(c.I.cwiseInverse().eval().data()); });
+    row("alternative: 12321, elongated 13231", [](const Case& c) { return kernel::split_order_off_saddle(c.I.cwiseInverse().eval().data()); });
     row("per step: rule at the saddle, else alt.", [](const Case&) { return kPerStep; });
     row("per run: split_order_for_start (1 deg)", [](const Case& c) {
       return kernel::split_order_for_start(c.I.cwiseInverse().eval().data(), c.L.data());  // Π = L at q = 1
@@ -228,7 +219,7 @@ int main(int argc, char** argv) {
       for (const Case& c : cases) {
         const double deg = std::acos(std::min(1.0, std::abs(c.L[1]) / c.L.norm())) * 180 / M_PI;
         if (deg < edges[b] || deg >= edges[b + 1]) continue;
-        sr += regret_of(c, moments_rule(c)), sa += regret_of(c, alternative_order(c.I.cwiseInverse().eval().data())), ++k;
+        sr += regret_of(c, moments_rule(c)), sa += regret_of(c, kernel::split_order_off_saddle(c.I.cwiseInverse().eval().data())), ++k;
       }
       if (k > 0) std::printf("  [%g, %g) deg  %4d  %.3f | %.3f\n", edges[b], edges[b + 1], k, sr / k, sa / k);
     }

@@ -33,7 +33,7 @@ BodyState state_of(const BodyCoords& x) {
 }
 
 double kinetic_energy(const RigidBodyModel& m, const BodyCoords& x) {
-  return 0.5 * x.P.squaredNorm() / m.mass + 0.5 * x.pi.dot(m.inv_inertia.cwiseProduct(x.pi));
+  return 0.5 * x.P.squaredNorm() / m.mass + rotational_energy(m, x.pi);
 }
 
 bool all_finite(const BodyCoords& x) {

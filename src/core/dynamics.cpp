@@ -46,7 +46,7 @@ Derivative derivative(const RigidBodyModel& m, const BodyState& s, double t) {
 
 double kinetic_energy(const RigidBodyModel& m, const BodyState& s) {
   const Eigen::Vector3d pi = momentum_body(s);
-  return 0.5 * s.P.squaredNorm() / m.mass + 0.5 * pi.dot(m.inv_inertia.cwiseProduct(pi));
+  return 0.5 * s.P.squaredNorm() / m.mass + rotational_energy(m, pi);
 }
 
 double potential_energy(const RigidBodyModel& m, const BodyState& s) {

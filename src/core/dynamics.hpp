@@ -91,6 +91,11 @@ inline Eigen::Vector3d principal_axis_angles_to_L(const BodyState& s) {
   return out;
 }
 
+/// Rotational kinetic energy ½ Π·I⁻¹Π of the body-frame momentum Π (kg·m²/s), J.
+inline double rotational_energy(const RigidBodyModel& m, const Eigen::Vector3d& pi) {
+  return 0.5 * pi.dot(m.inv_inertia.cwiseProduct(pi));
+}
+
 /// Kinetic energy ½|P|²/M + ½ Π·I⁻¹Π, J.
 double kinetic_energy(const RigidBodyModel& m, const BodyState& s);
 /// Sum of the terms' potentials (uniform gravity: -M g·c), J.

@@ -41,8 +41,7 @@ std::optional<std::string> coarse_step_warning(const RigidBodyModel& m, const Bo
 Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg)
     : m_(&m), info_(&method_info(cfg.method)), cfg_(cfg), s0_(s0), s_(s0), grid_(cfg.method, m, s0), e0_(total_energy(m, s0)) {
   scale0_ = kinetic_energy(m, s0) + std::abs(potential_energy(m, s0));
-  const Eigen::Vector3d pi0 = momentum_body(s0);
-  erot0_ = 0.5 * pi0.dot(m.inv_inertia.cwiseProduct(pi0));
+  erot0_ = rotational_energy(m, momentum_body(s0));
   const EnergyFlow f = energy_flow(m, s0);
   power_ = f.driving;
   power_abs_ = f.scale;
@@ -74,20 +73,22 @@ void Propagator::check(const BodyState& s, double t, double h) {
   diverged(s.all_finite(), t, h);
 }
 
+bool Propagator::free_energy_held(double erot) const {
+  return erot - erot0_ <= kBlowUp * scale0_ + 1e-300;  // NaN fails
+}
+
 void Propagator::check_free(const BodyCoords& x, double t, double h) {
-  const double erot = 0.5 * x.pi.dot(m_->inv_inertia.cwiseProduct(x.pi));  // J
+  const double erot = rotational_energy(*m_, x.pi);  // J
   // NaN or ±inf if any coordinate is (a sum of finite ones overflows only far beyond any real run).
   const double all = (x.c.sum() + x.P.sum()) + (x.q.coeffs().sum() + erot);
-  if (erot - erot0_ <= kBlowUp * scale0_ + 1e-300 && std::isfinite(all)) return;  // NaN fails the first test
+  if (free_energy_held(erot) && std::isfinite(all)) return;
   diverged(std::isfinite(all), t, h);
 }
 
 void Propagator::check_free(const BodyState& s, double t, double h) {
-  const Eigen::Vector3d pi = momentum_body(s);
-  const double erot = 0.5 * pi.dot(m_->inv_inertia.cwiseProduct(pi));  // J
+  const double erot = rotational_energy(*m_, momentum_body(s));  // J
   const double all = (s.c.sum() + s.P.sum()) + (s.L.sum() + erot);
-  if (erot - erot0_ <= kBlowUp * scale0_ + 1e-300 && std::abs(s.q.squaredNorm() - 1.0) <= 1e-6 && std::isfinite(all))
-    return;
+  if (free_energy_held(erot) && std::abs(s.q.squaredNorm() - 1.0) <= 1e-6 && std::isfinite(all)) return;
   diverged(std::isfinite(all) && s.q.coeffs().allFinite(), t, h);
 }
 

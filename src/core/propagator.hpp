@@ -60,6 +60,8 @@ class Propagator {
   /// The same for a torque-free body on the seed's state: E = ½ Π·I⁻¹Π with
   /// Π = q̄ L, plus |q| = 1 (a q whose norm overflowed normalises to a finite 0).
   void check_free(const BodyState& s, double t, double h);
+  /// Whether Π's energy erot (J) stays within the blow-up bound of its start.
+  bool free_energy_held(double erot) const;
   [[noreturn]] void diverged(bool finite, double t, double h) const;
 
   const RigidBodyModel* m_;

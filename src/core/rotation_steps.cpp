@@ -88,7 +88,7 @@ BodyState strang_step(const RigidBodyModel& m, const BodyState& s, double t, dou
 }
 
 BodyState splitting_step(const RigidBodyModel& m, const BodyState& s, double t, double h) {
-  return strang(m, s, t, h, static_cast<FreeRotationMap>(free_rotation_splitting));
+  return splitting_step_ordered(m, s, t, h, kernel::split_order(m.inv_inertia.data()));
 }
 
 BodyState splitting_step_ordered(const RigidBodyModel& m, const BodyState& s, double t, double h, int order) {

@@ -321,6 +321,15 @@ inline int split_order4(const double inv[3]) {
   return split_index(s, l);
 }
 
+/// The order for starts away from the intermediate axis: the smallest moment
+/// outermost, the intermediate one in the middle (1,2,3,2,1), or the largest in
+/// the middle for the bodies split_order calls elongated (1,3,2,3,1).
+inline int split_order_off_saddle(const double inv[3]) {
+  int s, m, l;
+  if (!axes_by_moment(inv, s, m, l)) return 5;
+  return split_order(inv) == split_index(m, l) ? split_index(s, l) : split_index(s, m);
+}
+
 /// The sub-flow order of a `splitting` run, chosen once from the body's
 /// moments and its initial Π (body frame, any unit): split_order when Π starts
 /// within 1° of the intermediate axis (the saddle: the Dzhanibekov starts and
@@ -340,8 +349,7 @@ inline int split_order_for_start(const double inv[3], const double pi0[3]) {
   if (inv[s] == inv[m] || inv[m] == inv[l]) return split_order(inv);
   constexpr double kCos2Saddle = 0.99969541350954794;  // cos²(1°)
   const double n2 = pi0[0] * pi0[0] + pi0[1] * pi0[1] + pi0[2] * pi0[2];
-  if (pi0[m] * pi0[m] >= kCos2Saddle * n2) return split_order(inv);
-  return split_order(inv) == split_index(m, l) ? split_index(s, l) : split_index(s, m);
+  return pi0[m] * pi0[m] >= kCos2Saddle * n2 ? split_order(inv) : split_order_off_saddle(inv);
 }
 
 /// splitting_rotation<false> with the order picked at run time (index into kSplitAxes).
