@@ -24,6 +24,7 @@ void add_assemble_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_golden_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
+void add_export_command(CLI::App& app, Action& action);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);
