@@ -5,31 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "app/render_job.hpp"
+#include "run/render_job.hpp"
 #include "render/gl_context.hpp"
 #include "io/image.hpp"
 #include "scene/scene.hpp"
 
-namespace tumble::app {
-
-/// One anti-aliasing choice, as the renderer takes it: the scene's
-/// [output] aa and msaa, or a case of `tumble golden --aa`.
-struct AaSetting {
-  scene::Antialias mode = scene::Antialias::fxaa;
-  int msaa = 4;  ///< samples, used with mode msaa
-  int samples() const { return mode == scene::Antialias::msaa ? msaa : 0; }
-  bool fxaa() const { return mode == scene::Antialias::fxaa; }
-  /// "fxaa", "msaa2", "msaa4", or "msaa0" for none (the golden files' names).
-  std::string name() const;
-};
-AaSetting aa_setting(const scene::OutputConfig& out);
-/// Parses a name of AaSetting::name() (also "none" for msaa0); throws
-/// InputError naming `option` for anything else.
-AaSetting parse_aa_setting(const std::string& text, const std::string& option);
-
-/// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
-/// naming the option for an unknown name, so it fails before any work.
-render::GlBackend parse_backend_option(const std::string& gl);
+namespace tumble::run {
 
 /// A scene simulated at its frame times t_k = k/fps up to a last frame.
 class SceneFrames {
@@ -43,10 +24,10 @@ class SceneFrames {
   long count() const { return count_; }  ///< frames of the whole scene
   const std::vector<Run>& runs() const { return runs_; }
 
-  /// Draws frames `ks` at width × height anti-aliased by `aa` on `ctx`.
+  /// Draws frames `ks` at the size and anti-aliasing of `f` on `ctx`.
   /// Throws InputError for a frame that was not simulated or diverged before it.
-  std::vector<io::Image> render(render::GlContext& ctx, const std::vector<long>& ks, int width, int height,
-                                AaSetting aa, int* samples_used = nullptr) const;
+  std::vector<io::Image> render(render::GlContext& ctx, const std::vector<long>& ks, const scene::FrameSettings& f,
+                                int* samples_used = nullptr) const;
 
   /// The trajectory at frames `ks` in the columns of `tumble simulate`; in a
   /// [compare] scene the body column is "<method>:<body>".
@@ -59,4 +40,4 @@ class SceneFrames {
   std::vector<Run> runs_;
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::run
