@@ -141,7 +141,7 @@ void GoldenCheck::check_images(const scene::FrameSettings& f, render::GlContext&
                {"fps", g.s.render.output.fps}, {"width", f.width}, {"height", f.height}, {"msaa", f.samples()},
                {"samples", samples}, {"gl_backend", render::to_string(backend)}, {"gl_renderer", ctx.renderer()},
                {"gl_version", ctx.version()}, {"tumble_version", TUMBLE_VERSION}};
-    if (f.fxaa()) j["aa"] = "fxaa";  // msaa goldens keep their sidecars as they were
+    if (f.fxaa()) j["aa"] = std::string(scene::antialias_name(f.aa));  // msaa goldens keep their sidecars as they were
     update_image(g, im, j);
   }
 }
