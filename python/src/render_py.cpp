@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #ifdef TUMBLE_HAVE_RENDER
+#include "io/atomic_file.hpp"
 #include "run/frame_renderer.hpp"
 #include "run/render_folder.hpp"
 #include "scene/frame_clock.hpp"

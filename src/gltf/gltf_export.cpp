@@ -22,13 +22,17 @@ struct Geometry {
   std::vector<std::uint32_t> indices;
 };
 
+/// Adds a triangle; one without area (a flat box's edge faces) is left out,
+/// as it has no normal (glTF requires unit normals).
 void add_triangle(Geometry& g, const std::array<Eigen::Vector3d, 3>& p) {
-  const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+  const Eigen::Vector3d cross = (p[1] - p[0]).cross(p[2] - p[0]);
+  if (!(cross.norm() > 0)) return;
+  const Eigen::Vector3f n = cross.normalized().cast<float>();
   for (const Eigen::Vector3d& v : p) {
     g.indices.push_back(static_cast<std::uint32_t>(g.positions.size() / 3));
     for (int i = 0; i < 3; ++i) {
       g.positions.push_back(static_cast<float>(v[i]));
-      g.normals.push_back(static_cast<float>(std::isfinite(n[i]) ? n[i] : 0.0));
+      g.normals.push_back(n[i]);
     }
   }
 }
