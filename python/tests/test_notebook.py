@@ -10,7 +10,8 @@ from conftest import SOURCE_DIR
 NOTEBOOK = SOURCE_DIR / "examples/notebooks/tumble_intro.ipynb"
 
 
-def test_notebook_runs():
+def test_notebook_runs(monkeypatch):
+    monkeypatch.delenv("MPLBACKEND", raising=False)  # the kernel's inline backend shows the figures
     nb = nbformat.read(NOTEBOOK, as_version=4)
     # Raises CellExecutionError (the test fails) on the first cell that raises.
     NotebookClient(nb, timeout=120, kernel_name="python3",
