@@ -62,7 +62,7 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h) {
   if (speed.empty()) return std::nullopt;
   const std::string text = speed + (slow ? " slow motion" : " fast");
-  const float size = std::max(12.0f, static_cast<float>(frame_h) / 30.0f);
+  const float size = std::max(12.0f, static_cast<float>(frame_h) / 36.0f);
   // Bottom-right, below the caption line (caption_item: top at h − 2.4 of its size h/26).
   const float x = static_cast<float>(frame_w) - approx_text_width(text, size) - 0.8f * size;
   return TextItem{text, {x, static_cast<float>(frame_h) - 1.3f * size}, size, {0.70f, 0.12f, 0.10f, 1.0f}};

@@ -46,7 +46,7 @@ void build_poinsot(View& view, const PoinsotInput& in, float font_px) {
   plane_basis(p.normal, u, v);
   const Eigen::Vector3d up = -p.normal;
   const Eigen::Vector3d foot = p.plane_distance * scale * p.normal;
-  const Eigen::Vector3d target = 0.55 * foot;
+  const Eigen::Vector3d target = 0.3 * foot + 0.25 * up;  // the key above the ellipsoid
   view.camera = Camera{};
   view.camera.target = g(target);
   view.camera.position = g(target + 3.6 * (0.85 * u + 0.25 * v).normalized() + 3.0 * up);
@@ -85,34 +85,38 @@ void build_poinsot(View& view, const PoinsotInput& in, float font_px) {
     view.polylines.push_back({{g(on - half * u + s * v), g(on + half * u + s * v)}, grid, 1.0f, false});
   }
   // L, ω to the contact point, polhode (body-fixed, carried by R) and herpolhode (on the plane).
-  const Eigen::Vector3d L_tip = p.normal * 1.3 * std::max(1.0, p.plane_distance * scale);
+  // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
+  const Eigen::Vector3d L_tip = foot - 3 * kHerpolhodeLift * p.normal;
   view.arrows.push_back({{0, 0, 0}, g(L_tip), 0.015, kLColor});
   view.arrows.push_back({{0, 0, 0}, g(p.contact * scale), 0.015, kOmegaColor});
   PolylineItem polhode{{}, kPolhodeColor, 2.5f, false}, herpolhode{{}, kHerpolhodeColor, 2.0f, false};
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history) herpolhode.points.push_back(g(w * scale - kHerpolhodeLift * p.normal));
   view.points.push_back({g(p.contact * scale), 0.035, kHerpolhodeColor});
-  // Names next to what they name (the key of this view).
-  const float w = static_cast<float>(in.width_px), h = static_cast<float>(in.height_px);
-  auto name = [&](const std::string& text, const Eigen::Vector3d& at, const Color& c, float dx, float dy) {
-    glm::vec2 px;
-    if (!project_to_viewport(view.camera, w, h, g(at), px)) return;
-    const float x = std::clamp(px.x + dx * font_px, 2.0f, w - approx_text_width(text, font_px) - 2.0f);
-    const float y = std::clamp(px.y + dy * font_px, 2.0f + 1.5f * font_px, h - 1.3f * font_px);
-    view.texts.push_back({text, {x, y}, font_px, c});
-  };
-  if (polhode.points.size() >= 2) {
-    name("polhode", in.q * in.omega_principal_history.front() * scale, kPolhodeColor, 0.6f, -1.4f);
-    view.polylines.push_back(std::move(polhode));
+  if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
+  if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
+  // The key: each element in its colour, under the view's title; the plane named on itself.
+  const float f = font_px, pad = 10.0f;
+  float y = 8.0f;
+  if (!in.title.empty()) {
+    view.texts.push_back({in.title, {pad, y}, f, {0.12f, 0.13f, 0.16f, 1.0f}});
+    y += 1.6f * f;
   }
-  if (herpolhode.points.size() >= 2) {
-    name("herpolhode", in.omega_world_history.front() * scale, kHerpolhodeColor, 0.6f, 0.4f);
-    view.polylines.push_back(std::move(herpolhode));
+  const std::pair<const char*, Color> key[] = {{"L: angular momentum, normal to the plane", kLColor},
+                                               {"ω: angular velocity, to the contact point", kOmegaColor},
+                                               {"polhode: ω's path on the ellipsoid", kPolhodeColor},
+                                               {"herpolhode: ω's path on the plane", kHerpolhodeColor}};
+  for (const auto& [text, color] : key) {
+    view.texts.push_back({text, {pad, y}, 0.85f * f, color});
+    y += 1.15f * f;
   }
-  name("L", L_tip, kLColor, 0.5f, -0.5f);
-  name("ω", p.contact * scale, kOmegaColor, -1.4f, -0.2f);
-  name("invariable plane", foot + 0.9 * half * u - 0.9 * half * v, {0.35f, 0.37f, 0.42f, 1.0f}, -6.0f, -1.2f);
-  if (!in.title.empty()) view.texts.push_back({in.title, {10.0f, 8.0f}, font_px, {0.12f, 0.13f, 0.16f, 1.0f}});
+  glm::vec2 px;
+  const Eigen::Vector3d corner = foot + 0.9 * half * u - 0.9 * half * v;
+  if (project_to_viewport(view.camera, in.width_px, in.height_px, g(corner), px)) {
+    const char* name = "invariable plane";
+    const float x = std::clamp(px.x - approx_text_width(name, f), 2.0f, in.width_px - approx_text_width(name, f) - 2.0f);
+    view.texts.push_back({name, {x, std::clamp(px.y - 1.5f * f, y, in.height_px - 1.3f * f)}, f, {0.35f, 0.37f, 0.42f, 1.0f}});
+  }
 }
 
 }  // namespace tumble::viz

@@ -112,11 +112,11 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   // The camera looks down on the plane from at least 30° above it.
   const glm::dvec3 eye = glm::normalize(v.camera.position - v.camera.target);
   EXPECT_GT(glm::dot(eye, -n), std::sin(30.0 * 3.14159265 / 180));
-  // Names inside the viewport.
-  for (const char* name : {"polhode", "herpolhode", "L", "invariable plane"}) {
+  // The key's entries and the plane's name, inside the viewport.
+  for (const std::string name : {"L:", "ω:", "polhode:", "herpolhode:", "invariable plane"}) {
     bool found = false;
     for (const TextItem& t : v.texts)
-      if (t.text == name) {
+      if (t.text.rfind(name, 0) == 0) {
         found = true;
         EXPECT_GE(t.position_px.x, 0.0f) << name;
         EXPECT_LE(t.position_px.x + approx_text_width(t.text, t.size_px), 640.0f) << name;
