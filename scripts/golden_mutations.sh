@@ -66,5 +66,5 @@ scene_mutant "explained: captions' text edited" '/^text = "/s/ the / a /'
 scene_mutant "explained: time_scale 0.5 -> 0.55" 's/^time_scale = 0.5 /time_scale = 0.55 /'
 # Issue 22: captions anchored to flips found from the simulation.
 scene_mutant "explained: flip caption 0.3 s late" 's/^start = "flip 1 - 0.1"/start = "flip 1 + 0.2"/'
-scene_mutant "explained: flip caption on flip 2" 's/^start = "flip 1 - 0.1"/start = "flip 2 - 0.1"/; s/^end = "flip 1 + 0.5"/end = "flip 2 + 0.2"/'
+scene_mutant "explained: flip caption on flip 2" '/^start = "flip 1 - 0.1"/{s//start = "flip 2 - 0.1"/;n;s/^end = "flip 1 + 0.5"/end = "flip 2 + 0.2"/}'
 scene_mutant "explained: title hold 2.5 -> 2.4 s" 's/^hold = 2.5 /hold = 2.4 /'

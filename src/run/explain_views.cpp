@@ -1,4 +1,4 @@
-#include "app/explain_views.hpp"
+#include "run/explain_views.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "viz/poinsot.hpp"
 #include "viz/strip_chart.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 namespace {
 
@@ -171,4 +171,4 @@ bool ExplainViews::title_card(viz::DrawList& dl, long k) const {
   return true;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

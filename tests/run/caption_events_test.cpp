@@ -7,8 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/render_job.hpp"
-#include "cli_fixture.hpp"
+#include "run/render_job.hpp"
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
@@ -36,8 +35,8 @@ Scene racket(double wobble, const std::string& start, const std::string& end) {
 // Opacity of the caption in frame k (0 when it is not drawn).
 float caption_alpha(const Scene& s, long k) {
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, s.render.output.fps);
-  const auto runs = tumble::app::simulate_runs(s, clock.count(), clock.fps());
-  const tumble::app::FrameBuilder fb(s, runs, clock.fps(), 320, 180);
+  const auto runs = tumble::run::simulate_runs(s, clock.count(), clock.fps());
+  const tumble::run::FrameBuilder fb(s, runs, clock.fps(), 320, 180);
   for (const tumble::viz::TextItem& t : fb.build(k).texts)
     if (t.text == kCaption) return t.color.a;
   return 0;
@@ -64,22 +63,6 @@ TEST(CaptionEvents, CaptionFollowsTheFlipWhenOmegaChanges) {
   // Written in seconds at a's flip instead, the caption misses b's flip.
   const Scene fixed = racket(0.2, std::to_string(fa - 0.3), std::to_string(fa + 0.5));
   EXPECT_EQ(caption_alpha(fixed, frame_of(fixed, fb)), 0.0f);
-}
-
-class InfoCli : public Cli {};
-
-// `tumble info` lists the flips and the frames with the time each shows.
-TEST_F(InfoCli, ListsFlipsAndTheFramesClock) {
-  const Result r = run("info " + scene("dzhanibekov_explained.toml"));
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("flips (e2 ⊥ L)     1.7999, 5.0887 s in 6 s"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("frames 616 at 30 fps"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("0-74     video   0.000-2.467   s  title card, t = 0 s"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("t = 1.2999-2.2958 s  ×1/8"), std::string::npos) << r.out;
-  const Result j = run("info --json " + scene("dzhanibekov_explained.toml"));
-  ASSERT_EQ(j.code, 0) << j.err;
-  EXPECT_NE(j.out.find("\"flip_times\": ["), std::string::npos) << j.out;
-  EXPECT_NE(j.out.find("\"count\": 616"), std::string::npos);
 }
 
 }  // namespace
