@@ -1,6 +1,6 @@
 // method = "auto" checked the bench way: for a sweep of tolerances, what auto
 // picks on a forced body, what it predicted, and what the pick then really
-// costs (median CPU) and really errs (against rk45 at rtol 1e-13).
+// costs (median CPU) and really errs (against dop853 at rtol 1e-13).
 #include <cmath>
 #include <sstream>
 
@@ -12,7 +12,7 @@ namespace tumble::bench {
 
 namespace {
 
-// Well away from the separatrix, so the rk45 reference is good to ~1e-12 rad
+// Well away from the separatrix, so the dop853 reference is good to ~1e-12 rad
 // (the forced T-handle amplifies every error ~1e7 and would hide auto's picks).
 struct AutoProblem {
   RigidBodyModel model;
@@ -41,13 +41,13 @@ BodyState run_like_a_scene(const AutoProblem& p, const StepConfig& cfg) {
 
 std::string auto_problem_description() {
   return "moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.5, 3, 0.2) rad/s, gravity (0, 0, -9.81) m/s^2, body-fixed "
-         "2 N along z at (1, 0, 0) m, body torque (0, 0.3, 0) N m, 10 s sampled at 30 fps; reference rk45 at rtol 1e-13";
+         "2 N along z at (1, 0, 0) m, body torque (0, 0.3, 0) N m, 10 s sampled at 30 fps; reference dop853 at rtol 1e-13";
 }
 
 std::vector<AutoRow> auto_study(const Settings& st, std::ostream& log) {
   const AutoProblem p = thruster();
   StepConfig ref_cfg;
-  ref_cfg.method = Method::rk45;
+  ref_cfg.method = Method::dop853;
   ref_cfg.rtol = 1e-13;
   ref_cfg.atol = 1e-16;
   const BodyState reference = Propagator(p.model, p.s0, ref_cfg).advance_to(p.request.duration);
@@ -62,8 +62,9 @@ std::vector<AutoRow> auto_study(const Settings& st, std::ostream& log) {
     AutoRow row;
     row.tolerance = tol;
     row.method = std::string(method_name(c.config.method));
-    row.param_name = c.config.method == Method::rk45 ? "rtol" : "dt";
-    row.param = c.config.method == Method::rk45 ? c.config.rtol : c.config.dt;
+    const bool adaptive = method_info(c.config.method).adaptive != nullptr;
+    row.param_name = adaptive ? "rtol" : "dt";
+    row.param = adaptive ? c.config.rtol : c.config.dt;
     row.predicted_error = c.error;
     row.predicted_cpu_s = c.cost_s;
     row.pilot_cpu_s = pilot;

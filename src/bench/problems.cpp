@@ -9,7 +9,7 @@
 #include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/quaternion.hpp"
-#include "core/rk45.hpp"
+#include "core/embedded_rk.hpp"
 
 namespace tumble::bench {
 
@@ -57,17 +57,18 @@ Problem forced_problem() {
   p.name = "forced";
   p.description = "forced T-handle: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.01, 10, 0.01) rad/s, gravity "
                   "(0, 0, -9.81) m/s^2 plus a body-fixed force (0, 0, 2) N at (1, 0, 0) m, 10 s; reference: "
-                  "rk45 at rtol 1e-13";
+                  "dop853 at rtol 1e-13";
   ForceSet f;
   f.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
   f.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
   p.model = diagonal_model("forced", {1, 2, 3}, f);
   p.s0 = spinning_state(p.model, {0.01, 10, 0.01});
   p.torque_free = false;
-  p.reference = run_rk45(p.model, p.s0, p.duration, 1e-13);
+  p.peers = true;
+  p.reference = reference_run(p.model, p.s0, p.duration);
   // The same reference integrator on the torque-free T-handle, against the closed form.
   const Problem th = t_handle_problem();
-  p.reference_check = rotation_angle_between(run_rk45(th.model, th.s0, th.duration, 1e-13).q, th.reference.q);
+  p.reference_check = rotation_angle_between(reference_run(th.model, th.s0, th.duration).q, th.reference.q);
   return p;
 }
 
@@ -80,8 +81,8 @@ Problem body_problem(const std::string& name, const RigidBodyModel& m, const Bod
   p.s0 = s0;
   p.duration = duration;
   p.torque_free = m.forces.empty();
-  p.peers = p.torque_free;
-  p.reference = p.torque_free ? exact_free_state(m, s0, duration) : run_rk45(m, s0, duration, 1e-13);
+  p.peers = true;  // forced bodies: the peers that take forces (odeint)
+  p.reference = p.torque_free ? exact_free_state(m, s0, duration) : reference_run(m, s0, duration);
   // Largest step h·|ω| = 1 at the start, and at least 10 steps per run.
   const double w = omega_principal(m, s0).norm();
   p.dt_max = std::min(w > 0 ? 1 / w : duration, duration / 10);
@@ -89,7 +90,7 @@ Problem body_problem(const std::string& name, const RigidBodyModel& m, const Bod
   d.precision(4);
   d << "body `" << m.name << "`: mass " << m.mass << " kg, principal moments (" << m.inertia.x() << ", "
     << m.inertia.y() << ", " << m.inertia.z() << ") kg m^2, |omega| " << w << " rad/s at t = 0, " << duration << " s, "
-    << (p.torque_free ? "torque-free; reference: closed form" : "forced; reference: rk45 at rtol 1e-13");
+    << (p.torque_free ? "torque-free; reference: closed form" : "forced; reference: dop853 at rtol 1e-13");
   p.description = d.str();
   return p;
 }
@@ -118,12 +119,16 @@ BodyState run_fixed(Method method, const RigidBodyModel& m, const BodyState& s0,
   return s.state();
 }
 
-BodyState run_rk45(const RigidBodyModel& m, const BodyState& s0, double T, double rtol) {
-  Rk45Options o;
+BodyState run_adaptive(Method method, const RigidBodyModel& m, const BodyState& s0, double T, double rtol) {
+  AdaptiveOptions o;
   o.rtol = rtol;
   o.atol = rtol;
-  Rk45 r(m, s0, 0.0, o);
-  return r.advance_to(T);
+  o.t_stop = T;
+  return method_info(method).adaptive(m, s0, 0.0, o)->advance_to(T);
+}
+
+BodyState reference_run(const RigidBodyModel& m, const BodyState& s0, double T) {
+  return run_adaptive(Method::dop853, m, s0, T, kReferenceRtol);
 }
 
 double thread_cpu_seconds() {

@@ -44,7 +44,7 @@ std::string header_markdown(const std::string& title, const Settings& st, const 
   for (const Problem& p : problems) {
     md << "- `" << p.name << "`: " << p.description;
     if (p.reference_check > 0)
-      md << " (that rk45 at rtol 1e-13 is " << fmt(p.reference_check)
+      md << " (that dop853 at rtol 1e-13 is " << fmt(p.reference_check)
          << " rad from the closed form on the torque-free T-handle)";
     md << "\n";
   }
@@ -108,7 +108,7 @@ int run(const BenchOptions& opt, std::ostream& log) {
   md << "## Stability map (T-handle moments, spin Ω about the intermediate axis for ≈ 10 s ending between flips, "
      << "plus major/minor-axis spins with a 1e-3 tilt)\n\nok: error ≤ 1 % (max of orientation rad and relative energy); "
      << "inaccurate: > 1 %; wrong: flip count differs from the closed form's (both seen at the method's step times, so a step longer than half a flip interval is not blamed for aliasing) or a stable axis tilts > 0.1 rad; "
-     << "diverged: non-finite or energy × 10. rk45 and odeint_dopri5_body here are fixed-step Dormand–Prince steps.\n\n"
+     << "diverged: non-finite or energy × 10. rk45, dop853 and odeint_dopri5_body here are fixed-step steps of their pairs.\n\n"
      << stability_table(stab) << "\n";
   md << "## Long-run drift (T-handle, dt = 1 ms)\n\nWorld L is a state variable with L' = 0 when torque-free, so every method keeps "
      << "it exactly; the |Π| column (Π = q* L q) shows |q| drift instead.\n\n| method | steps | |ΔE|/E at end | |Δ|Π||/|L| at end |\n|---|---|---|---|\n";

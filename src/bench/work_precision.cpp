@@ -33,7 +33,7 @@ std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Se
       for (double par : params) {
         BodyState s;
         auto once = [&] {
-          s = adaptive ? run_rk45(p.model, p.s0, p.duration, par) : run_fixed(m, p.model, p.s0, p.duration, par);
+          s = adaptive ? run_adaptive(m, p.model, p.s0, p.duration, par) : run_fixed(m, p.model, p.s0, p.duration, par);
         };
         once();
         const Errors e = errors(p, s);

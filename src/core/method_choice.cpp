@@ -18,6 +18,11 @@ constexpr double kPilotBudgetS = 0.2;     // predicted CPU per candidate's pilot
 constexpr double kMaxPilotSteps = 1 << 22;
 constexpr double kRoundOff = 1e-13;       // end differences below this are round-off
 constexpr double kMaxRunSteps = 1e9;      // the scenes' step cap (scene::kMaxSteps)
+constexpr double kAdaptiveMargin = 10;    // adaptive pairs run at rtol = tolerance / this
+constexpr double kPriceWindows = 32;      // an adaptive pair is priced on 1/32 of the run
+// All fixed-step pilot ladders together may cost at most this share of the
+// cheapest run known so far: auto's whole cost stays near the cheapest run's.
+constexpr double kPilotShare = 0.5;
 
 
 std::string fmt(const char* f, double v) {
@@ -58,6 +63,11 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
     c.dt = r.duration / n;
     return c;
   };
+  // A ladder shows an order only after 64 + 128 + 256 steps: skip what cannot fit.
+  if (448 * ns * 1e-9 > budget_s) {
+    e.note = "pilot budget (" + fmt("%.2g", budget_s * 1e3) + " ms) too small for a ladder";
+    return e;
+  }
   std::vector<double> n_k, d_k;  // d_k[i] = error(x at n_k[i], x at n_k[i+1])
   std::optional<BodyState> prev = run(m, s0, cfg(64), r.duration);
   double n = 64, spent = 64 * ns * 1e-9;
@@ -99,6 +109,7 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
     e.error = err_n * std::pow(n / n_star, p);
     break;
   }
+  e.pilot_s = spent;
   if (!e.usable) {
     const double last = d_k.empty() ? 0 : d_k.back();
     e.note = d_k.empty() ? "pilot budget (" + fmt("%.2g", budget_s * 1e3) + " ms) too small for a second run" :
@@ -116,40 +127,26 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
   return e;
 }
 
-MethodEstimate rk45_estimate(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r, double budget_s) {
+// An adaptive pair needs no pilot ladder: its rtol asks for the end error
+// (embedded_rk.hpp: the pairs deliver within ~5× of rtol on the bench
+// problems), so it runs at rtol = tolerance / kAdaptiveMargin. The first
+// 1/kPriceWindows of the run at that rtol prices it (steps × the windows).
+MethodEstimate adaptive_estimate(Method method, const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
   MethodEstimate e;
-  e.method = Method::rk45;
-  auto cfg = [&](int k) {
-    StepConfig c;
-    c.method = Method::rk45;
-    c.dt = r.duration;
-    c.rtol = std::pow(10.0, -k);
-    c.atol = c.rtol * 1e-3;
-    return c;
-  };
-  // rtol = 10^-k against 10^-(k+1): the finer run errs ~10× less, so the
-  // difference is ~0.9 of the coarser one's error; 10/9 of it is taken.
-  const double ns = step_cost_ns(Method::rk45, true);
-  long steps = 0, next_steps = 0;
-  std::optional<BodyState> x = run(m, s0, cfg(3), r.duration, &steps);
-  double spent = static_cast<double>(steps) * ns * 1e-9;
-  for (int k = 3; k <= 11 && spent <= budget_s; ++k) {
-    std::optional<BodyState> next = run(m, s0, cfg(k + 1), r.duration, &next_steps);
-    spent += static_cast<double>(next_steps) * ns * 1e-9;
-    const double d = x && next ? end_state_error(m, *x, *next) * 10 / 9 : std::numeric_limits<double>::infinity();
-    if (d <= kSafety * r.tolerance) {
-      e.usable = true;
-      e.config = cfg(k);
-      e.steps = static_cast<double>(std::max(1L, steps));
-      e.error = d;
-      e.cost_s = e.steps * ns * 1e-9;
-      return e;
-    }
-    x = next;
-    steps = next_steps;
+  e.method = method;
+  e.config.method = method;
+  e.config.dt = r.duration;
+  e.config.rtol = r.tolerance / kAdaptiveMargin;
+  e.config.atol = e.config.rtol * 1e-3;
+  long steps = 0;
+  if (!run(m, s0, e.config, r.duration / kPriceWindows, &steps)) {
+    e.note = "diverged in the first 1/" + fmt("%.0f", kPriceWindows) + " of the run";
+    return e;
   }
-  e.note = spent > budget_s ? "pilot stopped at its budget (" + fmt("%.2g", budget_s * 1e3) + " ms) before an rtol met the tolerance"
-                            : "no rtol >= 1e-11 met the tolerance";
+  e.usable = true;
+  e.steps = static_cast<double>(std::max(1L, steps)) * kPriceWindows;
+  e.error = e.config.rtol;
+  e.cost_s = e.steps * step_cost_ns(method, true) * 1e-9;
   return e;
 }
 
@@ -174,20 +171,29 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
     c.reason = "exact: torque-free, so the closed form (error at round-off)";
     return c;
   }
-  // Once a run of cost C is known, a pilot costing many times C cannot pay
-  // off: budgets shrink to 4 C (a pilot ladder costs ~2–4 runs of its finest
-  // level, so a cheaper method still fits). The likely winners go first.
+  // The adaptive pairs go first: one cheap pricing run each. Once a run of
+  // cost C is known, a fixed-step pilot ladder may cost only kPilotShare C
+  // (pruning), so auto's whole cost stays near the cheapest run's; `exact`
+  // keeps the full budget when no force torques the body (its rotation is
+  // then the closed form, and its ladder agrees at round-off at once).
   double best_cost = std::numeric_limits<double>::infinity();
   // Candidates (MethodInfo::auto_candidate): the methods whose error stays
-  // bounded over long runs, plus rk4 and rk45 (users' usual picks). The
-  // first-order methods are left out: wherever they would be cheapest,
-  // splitting costs about the same and keeps |L| exactly.
+  // bounded over long runs, plus rk4 and the adaptive pairs (users' usual
+  // picks). The first-order methods are left out: wherever they would be
+  // cheapest, splitting costs about the same and keeps |L| exactly.
   for (const MethodInfo& info : method_table()) {
-    if (!info.auto_candidate) continue;
-    const Method method = info.method;
-    const double budget = r.prune ? std::min(kPilotBudgetS, 4 * best_cost) : kPilotBudgetS;
-    c.candidates.push_back(info.adaptive ? rk45_estimate(m, s0, r, budget)
-                                                  : fixed_step_estimate(method, m, s0, r, budget));
+    if (!info.auto_candidate || !info.adaptive) continue;
+    c.candidates.push_back(adaptive_estimate(info.method, m, s0, r));
+    if (c.candidates.back().usable) best_cost = std::min(best_cost, c.candidates.back().cost_s);
+  }
+  const double share = kPilotShare * best_cost;
+  double spent = 0;  // predicted CPU of the ladders so far
+  for (const MethodInfo& info : method_table()) {
+    if (!info.auto_candidate || info.adaptive) continue;
+    const bool free_rotation = info.closed_form_if_free && !m.forces.has_torque();
+    const double budget = r.prune && !free_rotation ? std::min(kPilotBudgetS, share - spent) : kPilotBudgetS;
+    c.candidates.push_back(fixed_step_estimate(info.method, m, s0, r, budget));
+    spent += c.candidates.back().pilot_s;
     if (c.candidates.back().usable) best_cost = std::min(best_cost, c.candidates.back().cost_s);
   }
   const MethodEstimate* best = nullptr;
@@ -203,7 +209,7 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
   c.error = best->error;
   c.cost_s = best->cost_s;
   c.reason = std::string(method_name(best->method)) +
-             (best->method == Method::rk45 ? " at rtol " + fmt("%.0e", best->config.rtol)
+             (method_info(best->method).adaptive ? " at rtol " + fmt("%.0e", best->config.rtol)
                                            : " at dt " + fmt("%.3g", best->config.dt) + " s") +
              ": predicted end error " + fmt("%.1e", best->error) + " rad <= tolerance " + fmt("%.3g", r.tolerance) +
              ", " + fmt("%.0f", best->steps) + " steps, ~" + fmt("%.2g", best->cost_s * 1e3) + " ms";

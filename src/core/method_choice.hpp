@@ -24,11 +24,12 @@ struct ChoiceRequest {
 struct MethodEstimate {
   Method method = Method::splitting;
   bool usable = false;          ///< its error model was verified on this body
-  StepConfig config;            ///< step (rk45: rtol, atol) that meets the tolerance
+  StepConfig config;            ///< step (adaptive pairs: rtol, atol) that meets the tolerance
   double steps = 0;             ///< predicted steps of the run
   double error = 0;             ///< predicted end error, rad
   double cost_s = 0;            ///< predicted CPU s: steps × step_cost_ns
-  double observed_order = 0;    ///< from the pilot (rk45: 0)
+  double observed_order = 0;    ///< from the pilot (adaptive pairs: 0)
+  double pilot_s = 0;           ///< predicted CPU s of its pilot ladder (fixed-step methods)
   std::string note;             ///< why it is not usable
 };
 
@@ -55,10 +56,13 @@ double step_cost_ns(Method method, bool forced);
 /// bodies: each candidate runs the whole duration at N, 2N, 4N, … steps; the
 /// differences of successive end states give its error (Richardson: e(h) ≈
 /// d/(2^p - 1) once two successive ratios match the order p), which fixes the
-/// step that meets half the tolerance. rk45 is run at rtol 1e-3, 1e-4, … and
-/// takes the first rtol whose difference to the next stays within half of it.
-/// Each pilot has a CPU budget (0.2 s by step_cost_ns, less once a cheaper run
-/// is known). The cheapest usable candidate wins. Throws InputError when none is.
+/// step that meets half the tolerance. The adaptive pairs (rk45, dop853) need
+/// no ladder: they run at rtol = tolerance / 10 (their rtol asks for the end
+/// error), priced by the first 1/32 of the run and the price table. Each
+/// ladder has a CPU budget (0.2 s by step_cost_ns; when `prune`, all ladders
+/// together at most half the cheapest run known, except `exact`'s when no force
+/// torques the body). The cheapest usable candidate wins. Throws InputError
+/// when none is.
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& req);
 
 }  // namespace tumble
