@@ -72,7 +72,52 @@ Problem forced_problem() {
   return p;
 }
 
-std::vector<Problem> all_problems() { return {t_handle_problem(), symmetric_top_problem(), forced_problem()}; }
+namespace {
+
+// A forced scene: its reference is reference_run; odeint joins the peers.
+Problem forced_scene(std::string name, std::string description, RigidBodyModel m, const Eigen::Vector3d& omega_body) {
+  Problem p;
+  p.name = std::move(name);
+  p.description = std::move(description) + "; reference: dop853 at rtol 1e-13";
+  p.model = std::move(m);
+  p.s0 = spinning_state(p.model, omega_body);
+  p.torque_free = false;
+  p.peers = true;
+  p.reference = reference_run(p.model, p.s0, p.duration);
+  return p;
+}
+
+}  // namespace
+
+std::vector<Problem> scene_problems() {
+  ForceSet thruster, damped, top;
+  thruster.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  thruster.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  thruster.terms.push_back(ConstantTorque{Eigen::Vector3d(0, 0.3, 0), Frame::body});
+  damped.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  damped.terms.push_back(LinearDamping{0.3});
+  damped.terms.push_back(AngularDamping{0.05});
+  top.terms.push_back(ConstantTorque{Eigen::Vector3d(0.5, 0, 0), Frame::world});
+  top.terms.push_back(AngularDamping{0.02});
+  return {forced_scene("thruster",
+                       "thruster: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.5, 3, 0.2) rad/s, gravity, body-fixed 2 N "
+                       "along z at (1, 0, 0) m, body torque (0, 0.3, 0) N m, 10 s",
+                       diagonal_model("thruster", {1, 2, 3}, thruster), {0.5, 3, 0.2}),
+          forced_scene("damped",
+                       "damped tumbler: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.3, 6, 0.2) rad/s, gravity, linear "
+                       "damping 0.3 N s/m, angular damping 0.05 N m s, 10 s",
+                       diagonal_model("damped", {1, 2, 3}, damped), {0.3, 6, 0.2}),
+          forced_scene("torqued_top",
+                       "torqued top: moments (2, 2, 4) kg m^2, 1 kg, omega_body (3, 1, 5) rad/s, world torque (0.5, 0, 0) "
+                       "N m, angular damping 0.02 N m s, 10 s",
+                       diagonal_model("torqued_top", {2, 2, 4}, top), {3, 1, 5})};
+}
+
+std::vector<Problem> all_problems() {
+  std::vector<Problem> v = {t_handle_problem(), symmetric_top_problem(), forced_problem()};
+  for (Problem& p : scene_problems()) v.push_back(std::move(p));
+  return v;
+}
 
 Problem body_problem(const std::string& name, const RigidBodyModel& m, const BodyState& s0, double duration) {
   Problem p;

@@ -31,6 +31,11 @@ Problem t_handle_problem();
 Problem symmetric_top_problem();
 /// T-handle under gravity g = (0, 0, -9.81) m/s² plus a body-fixed 2 N force at (1, 0, 0) m.
 Problem forced_problem();
+/// Three more forced scenes with forces and damping (issue #27 §4): a thruster
+/// (gravity, body-fixed force, body torque), a damped tumbler (gravity, linear
+/// and angular damping) and a torqued, damped symmetric top.
+std::vector<Problem> scene_problems();
+/// The T-handle, the symmetric top, the forced T-handle, then scene_problems().
 std::vector<Problem> all_problems();
 /// A user's body (from a scene) over `duration` (s): the reference is the closed
 /// form when it has no forces, else dop853 at rtol 1e-13; with the peers that run it.

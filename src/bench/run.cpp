@@ -85,14 +85,15 @@ int run(const BenchOptions& opt, std::ostream& log) {
 
   const std::vector<Problem> problems = all_problems();
   std::vector<std::filesystem::path> pngs;
-  const std::string wp_md = work_precision_report(problems, st, dir, plot, pngs, log);
+  std::vector<WpRow> wp;
+  const std::string wp_md = work_precision_report(problems, st, dir, plot, pngs, log, &wp);
   std::vector<StabilityRow> stab = stability_map(st, log);
   write_stability_csv(dir / "stability_map.csv", stab);
   std::vector<DriftRow> drift = long_run_drift(st, log);
   write_drift_csv(dir / "drift.csv", drift);
   std::vector<FlipRow> flips = dzhanibekov(st, log);
   write_flips_csv(dir / "dzhanibekov.csv", flips);
-  std::vector<AutoRow> autos = auto_study(st, log);
+  std::vector<AutoRow> autos = auto_study(problems, wp, st, log);
   write_auto_csv(dir / "auto.csv", autos);
 
   if (plot) {
@@ -118,16 +119,7 @@ int run(const BenchOptions& opt, std::ostream& log) {
     const DriftRow& r = last[std::string(method_name(m))];
     md << "| " << r.method << " | " << r.step << " | " << fmt(r.energy) << " | " << fmt(r.momentum) << " |\n";
   }
-  md << "\n## method = \"auto\": the pick against the tolerance\n\nProblem: " << auto_problem_description()
-     << ". Auto measures each candidate on the body (the pilot) and runs the cheapest that meets the tolerance; "
-     << "the run is then timed (median CPU) and its end error measured against the reference.\n\n"
-     << "| tolerance (rad) | pick | at | predicted error | error | predicted CPU (ms) | CPU (ms) | pilot CPU (ms) |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
-  for (const AutoRow& a : autos)
-    md << "| " << fmt(a.tolerance) << " | " << a.method << " | " << a.param_name << " = " << fmt(a.param) << " | "
-       << fmt(a.predicted_error) << " | " << fmt(a.error) << " | " << fmt(a.predicted_cpu_s * 1e3) << " | "
-       << fmt(a.cpu_s * 1e3) << " | " << fmt(a.pilot_cpu_s * 1e3) << " |\n";
-  md << "\n";
+  md << auto_markdown(autos);
   finish(dir, md.str(),
          "work_precision.csv, convergence_orders.csv, cheapest.csv, stability_map.csv, drift.csv, dzhanibekov.csv, "
          "auto.csv",

@@ -17,7 +17,7 @@ struct ChoiceRequest {
   double duration = 10;         ///< s, the run's length
   double sample_interval = 0;   ///< s between samples (frames): one partial step each; 0 = none
   double tolerance = 1e-6;      ///< largest end error, rad (see end_state_error)
-  bool prune = true;            ///< false: measure every candidate in full (tests, bench)
+  bool prune = true;            ///< false: also run every fixed-step ladder (tests)
 };
 
 /// One candidate's measured error model and predicted cost.
@@ -29,7 +29,6 @@ struct MethodEstimate {
   double error = 0;             ///< predicted end error, rad
   double cost_s = 0;            ///< predicted CPU s: steps × step_cost_ns
   double observed_order = 0;    ///< from the pilot (adaptive pairs: 0)
-  double pilot_s = 0;           ///< predicted CPU s of its pilot ladder (fixed-step methods)
   std::string note;             ///< why it is not usable
 };
 
@@ -59,10 +58,9 @@ double step_cost_ns(Method method, bool forced);
 /// step that meets half the tolerance. The adaptive pairs (rk45, dop853) need
 /// no ladder: they run at rtol = tolerance / 10 (their rtol asks for the end
 /// error), priced by the first 1/32 of the run and the price table. Each
-/// ladder has a CPU budget (0.2 s by step_cost_ns; when `prune`, all ladders
-/// together at most half the cheapest run known, except `exact`'s when no force
-/// torques the body). The cheapest usable candidate wins. Throws InputError
-/// when none is.
+/// ladder has a CPU budget (0.2 s by step_cost_ns); with `prune` the ladders
+/// run only when no pair could be priced, or for `exact` when no force torques
+/// the body. The cheapest usable candidate wins. Throws InputError when none is.
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& req);
 
 }  // namespace tumble
