@@ -17,7 +17,7 @@ struct ChoiceRequest {
   double duration = 10;         ///< s, the run's length
   double sample_interval = 0;   ///< s between samples (frames): one partial step each; 0 = none
   double tolerance = 1e-6;      ///< largest end error, rad (see end_state_error)
-  bool prune = true;            ///< false: also run every fixed-step ladder (tests)
+  bool prune = true;            ///< false: measure every candidate (tests)
 };
 
 /// One candidate's measured error model and predicted cost.
@@ -52,15 +52,16 @@ double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodySt
 double step_cost_ns(Method method, bool forced);
 
 /// Torque-free bodies get `exact` (the closed form, error at round-off). Other
-/// bodies: each candidate runs the whole duration at N, 2N, 4N, … steps; the
+/// bodies, with `prune` (scenes): `exact` when no force torques the body and
+/// its pilot ladder qualifies, else the highest-order adaptive pair (dop853) at
+/// rtol = tolerance / 10 with no pilot (the pairs' rtol asks for the end error;
+/// embedded_rk.hpp). Without `prune` every candidate is measured: each
+/// fixed-step method runs the whole duration at N, 2N, 4N, … steps; the
 /// differences of successive end states give its error (Richardson: e(h) ≈
 /// d/(2^p - 1) once two successive ratios match the order p), which fixes the
-/// step that meets half the tolerance. The adaptive pairs (rk45, dop853) need
-/// no ladder: they run at rtol = tolerance / 10 (their rtol asks for the end
-/// error), priced by the first 1/32 of the run and the price table. Each
-/// ladder has a CPU budget (0.2 s by step_cost_ns); with `prune` the ladders
-/// run only when no pair could be priced, or for `exact` when no force torques
-/// the body. The cheapest usable candidate wins. Throws InputError when none is.
+/// step that meets half the tolerance (0.2 s of predicted CPU per ladder); the
+/// adaptive pairs are priced on the first 1/32 of the run. The cheapest usable
+/// candidate wins. Throws InputError when none is.
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& req);
 
 }  // namespace tumble

@@ -80,10 +80,11 @@ TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
     r.tolerance = tol;
     r.prune = false;
     const MethodChoice c = choose_method(m, s0, r);
-    // Pruning only skips pilots that could not pay off: the pick costs at most
-    // 2× the pick made with every pilot in full.
+    // The scenes' pick (prune: the adaptive pair, no pilot) meets the tolerance too.
     r.prune = true;
-    EXPECT_LE(choose_method(m, s0, r).cost_s, 2 * c.cost_s) << "tolerance " << tol;
+    const MethodChoice pruned = choose_method(m, s0, r);
+    EXPECT_TRUE(method_info(pruned.config.method).adaptive) << pruned.reason;
+    EXPECT_LE(end_state_error(m, run_like_a_scene(m, s0, pruned.config, r), ref), tol) << pruned.reason;
     r.prune = false;
     int usable = 0;
     for (const MethodEstimate& e : c.candidates) {
