@@ -141,8 +141,8 @@ std::string to_text(const scene::Scene& s) {
       char line[200];
       if (e.usable)
         std::snprintf(line, sizeof line, "    %-18s %-9s %-10.3g %10.0f steps  error %.1e rad  ~%.3g ms%s\n",
-                      std::string(method_name(e.method)).c_str(), e.method == Method::rk45 ? "rtol" : "dt (s)",
-                      e.method == Method::rk45 ? e.config.rtol : e.config.dt, e.steps, e.error, e.cost_s * 1e3,
+                      std::string(method_name(e.method)).c_str(), method_info(e.method).adaptive ? "rtol" : "dt (s)",
+                      method_info(e.method).adaptive ? e.config.rtol : e.config.dt, e.steps, e.error, e.cost_s * 1e3,
                       e.method == plan.config.method ? "  <- picked" : "");
       else
         std::snprintf(line, sizeof line, "    %-18s not usable: %s\n", std::string(method_name(e.method)).c_str(),
