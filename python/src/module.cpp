@@ -120,7 +120,7 @@ PYBIND11_MODULE(_tumble, m) {
           pybind11::dict d;
           d["name"] = std::string(i.name);
           d["order"] = i.order;
-          d["adaptive"] = i.adaptive;
+          d["adaptive"] = i.adaptive != nullptr;
           d["closed_form_if_free"] = i.closed_form_if_free;
           d["auto_candidate"] = i.auto_candidate;
           d["max_turn_per_step"] = i.max_turn_per_step;
