@@ -26,3 +26,14 @@ def test_render_frame_needs_a_frame_time():
     s = tumble.Scene.load(SCENES / "dzhanibekov.toml")
     with pytest.raises(tumble.SceneError, match="not a frame time"):
         tumble.render_frame(s, t=0.01234, width=64, height=64)
+
+
+def test_render_writes_what_the_cli_writes(tmp_path, cli):
+    cli("render", SCENES / "thrown_box.toml", "--frames", "1:2", "--width", 64, "--height", 48, "--video", "none",
+        "--out", tmp_path / "cli")
+    summary = tumble.render(tumble.Scene.load(SCENES / "thrown_box.toml"), tmp_path / "py", frames="1:2", width=64,
+                            height=48, video="none")
+    assert "frames 1..2" in summary
+    for k in (1, 2):
+        name = f"frame_{k:06d}.png"
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
