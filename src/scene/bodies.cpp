@@ -103,7 +103,7 @@ void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
                    {"type", "force", "point", "frame"});
     const std::string type = fr.string("type").value_or("point");
     if (type != "point") {
-      fr.error("type", "expected \"point\" (torques and damping are body keys), found \"" + type + "\"");
+      fr.error("type", "expected \"point\" (torques and damping are body keys), found " + quote_token(type));
       continue;
     }
     PointForce pf;
@@ -113,7 +113,7 @@ void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
     const std::string frame = fr.string("frame").value_or("world");
     if (frame == "world") pf.frame = Frame::world;
     else if (frame == "body") pf.frame = Frame::body;
-    else fr.error("frame", "expected \"world\" or \"body\", found \"" + frame + "\"");
+    else fr.error("frame", "expected \"world\" or \"body\", found " + quote_token(frame));
     f.terms.push_back(pf);
   }
   f.terms.insert(f.terms.end(), keyed.begin(), keyed.end());
@@ -130,7 +130,7 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   Body b;
   b.name = r.string("name").value_or("body" + std::to_string(index));
   if (!valid_name(b.name)) {
-    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-], found \"" + b.name + "\"");
+    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-], found " + quote_token(b.name));
   } else if (std::find(ctx.body_names.begin(), ctx.body_names.end(), b.name) != ctx.body_names.end()) {
     r.error("name", "duplicate body name \"" + b.name + "\"; names must be unique");
   }

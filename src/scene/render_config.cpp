@@ -23,7 +23,7 @@ void read_output(TableReader& r, Scene& s) {
     if (*a == "fxaa") o.aa = Antialias::fxaa;
     else if (*a == "msaa") o.aa = Antialias::msaa;
     else if (*a == "none") o.aa = Antialias::none;
-    else r.error("aa", "expected \"fxaa\", \"msaa\" or \"none\", found \"" + *a + "\"");
+    else r.error("aa", "expected \"fxaa\", \"msaa\" or \"none\", found " + quote_token(*a));
     if (o.aa == Antialias::msaa && m && *m == 0) r.error("msaa", "aa = \"msaa\" needs msaa = 2 or 4, found 0");
   } else if (m) {
     // Scenes written before `aa` existed: msaa = N meant N samples, 0 none.
@@ -35,7 +35,7 @@ void read_output(TableReader& r, Scene& s) {
     if (*v == "mp4") o.video = VideoFormat::mp4;
     else if (*v == "gif") o.video = VideoFormat::gif;
     else if (*v == "none") o.video = VideoFormat::none;
-    else r.error("video", "expected \"mp4\", \"gif\" or \"none\", found \"" + *v + "\"");
+    else r.error("video", "expected \"mp4\", \"gif\" or \"none\", found " + quote_token(*v));
   }
   if (o.fps * s.simulation.duration / s.render.explain.time_scale > kMaxFrames)
     r.error("fps", "duration × fps exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
@@ -57,7 +57,7 @@ void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
   if (auto f = r.string("follow")) {
     const std::vector<std::string_view> names(ctx.body_names.begin(), ctx.body_names.end());
     if (std::find(names.begin(), names.end(), *f) == names.end()) {
-      std::string msg = "expected the name of a body, found \"" + *f + "\"";
+      std::string msg = "expected the name of a body, found " + quote_token(*f);
       const std::string hint = closest(*f, names);
       if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
       r.error("follow", msg);
@@ -83,7 +83,7 @@ void read_draw(TableReader& r, Scene& s) {
       else if (item == "method") d.overlay_items.method = true;
       else if (item == "step") d.overlay_items.step = true;
       else if (item == "energy") d.overlay_items.energy = true;
-      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", found \"" + item + "\"");
+      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", found " + quote_token(item));
     }
     d.overlay = d.overlay_items.any();
   } else {
@@ -107,7 +107,7 @@ void read_compare(TableReader& r, Scene& s) {
     const std::string& n = (*names)[i];
     auto m = parse_method(n);
     if (!m) {
-      r.error("methods", "entry " + std::to_string(i) + ": expected one of " + method_list() + ", found \"" + n + "\"");
+      r.error("methods", "entry " + std::to_string(i) + ": expected one of " + method_list() + ", found " + quote_token(n));
       continue;
     }
     if (std::find(s.render.compare_methods.begin(), s.render.compare_methods.end(), *m) !=
