@@ -7,12 +7,15 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
 
 #include "io/atomic_file.hpp"
+#include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
+#include "io/frame_sums.hpp"
 #include "app/commands.hpp"
 #include "app/frame_renderer.hpp"
 #include "app/progress.hpp"
@@ -145,6 +148,10 @@ int run_render(const RenderOptions& o) {
   const bool shard = asked.first != 0 || asked.second != count - 1;
   const std::string own = shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
   const fs::path man_path = dir / own;
+  // One writer per folder; the shards of one render (same scene and settings) together.
+  const io::FolderLock lock(dir, shard ? io::FolderLock::Mode::shared : io::FolderLock::Mode::exclusive,
+                            "tumble render " + quote_arg(o.scene) + (shard ? " --frames " + o.frames : std::string()),
+                            man.scene_hash + " " + man.settings_hash);
   const Existing existing = inspect_output(dir, man, own, o.force);
   std::pair<long, long> range = asked;
   if (o.frames.empty() && o.resume && existing.resumable && existing.first >= 0 && existing.last < count &&
@@ -214,14 +221,25 @@ int run_render(const RenderOptions& o) {
   io::atomic_write_file(man_path, man.json());
 
   Progress progress(last - first + 1, o.progress != "none");
-  long skipped = 0;
+  long skipped = 0, rejected = 0;
   int signal = 0;
+  // A frame on disk is kept only if it is what was recorded when written (io/frame_sums.hpp).
+  const auto sums = resume ? io::read_frame_sums(dir) : std::map<std::string, io::FrameSum>{};
+  if (!resume && !shard) remove_file(dir / io::kFrameSumsName);  // every frame is written again: start afresh
+  auto kept = [&](long k) {
+    const fs::path f = io::frame_path(dir, k);
+    if (!fs::exists(fs::symlink_status(f, ec))) return false;
+    if (io::check_frame(f, sums, out.width, out.height).empty()) return true;
+    ++rejected;
+    remove_file(f);  // a link goes, not what it points to
+    return false;
+  };
   try {
-    render::FrameEncoder encoder(2, 4);
+    render::FrameEncoder encoder(2, 4, [](const fs::path& f) { io::record_frame(f); });
     for (long k = first; k <= last && k < good; ++k) {
       if ((signal = stop.received()) != 0) break;
-      if (resume && fs::exists(io::frame_path(dir, k), ec)) {
-        ++skipped;  // written whole by an earlier run (rename is atomic)
+      if (resume && kept(k)) {
+        ++skipped;  // written whole by an earlier run (rename is atomic) and unchanged since
       } else {
         // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
         // page faults. The encoder's threads finish it (FXAA) while we draw on.
@@ -242,6 +260,9 @@ int run_render(const RenderOptions& o) {
     throw io::IoError(e.what());
   }
   progress.finish();
+  if (rejected > 0)
+    std::cerr << "tumble: " << rejected << " frame(s) on disk failed their check (truncated, changed, a link, or "
+              << "not recorded in " << io::kFrameSumsName << ") and were drawn again\n";
   if (signal == 0) signal = stop.received();  // arrived during the last frames: they are whole anyway
   man.written = on_disk();
   man.complete = man.written == last - first + 1;

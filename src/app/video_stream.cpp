@@ -13,7 +13,7 @@
 namespace tumble::app {
 
 VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output)
-    : output_(std::move(output)), tmp_(io::temp_path_for(output_)) {
+    : output_(std::move(output)), tmp_(io::temp_path_for(output_)), fps_(fps), format_(format) {
   // A dead ffmpeg must show as EPIPE from write(), not kill tumble by SIGPIPE.
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;
@@ -73,6 +73,7 @@ int VideoStream::write(const io::Image& frame, const StopPoll& stop) {
     p += n;
     left -= static_cast<std::size_t>(n);
   }
+  if (left == 0 && !broken_) ++frames_;
   return stop ? stop() : 0;
 }
 
@@ -98,6 +99,10 @@ VideoResult VideoStream::finish() {
     std::filesystem::remove(tmp_, ec);
     const std::string how = end < -1 ? "killed by signal " + std::to_string(-1 - end) : "exit " + std::to_string(end);
     return status_ = {VideoResult::failed, 0, "ffmpeg failed (" + how + ") making " + output_.string()};
+  }
+  if (const std::string bad = verify_video(tmp_, frames_, fps_, format_); !bad.empty()) {  // exit 0 is no proof
+    std::filesystem::remove(tmp_, ec);
+    return status_ = {VideoResult::failed, 0, "ffmpeg's " + output_.filename().string() + " failed its check (" + bad + ")"};
   }
   std::filesystem::rename(tmp_, output_, ec);
   if (ec) {

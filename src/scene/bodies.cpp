@@ -1,8 +1,11 @@
 // [[bodies]]: particle sources, initial conditions, per-body forces, colour.
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
+#include <iterator>
 
+#include "core/dynamics.hpp"
 #include "core/error.hpp"
 #include "scene/internal.hpp"
 
@@ -183,6 +186,14 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   b.initial = make_state(b.model, ic);
   if (!b.initial.all_finite()) {
     ctx.diag.error(t.source(), r.path(), "initial state of \"" + b.name + "\" is not finite; check the values");
+    return;
+  }
+  // The steps square momenta and divide energies: each must stay a normal double (or 0).
+  const double sizes[] = {b.initial.L.squaredNorm(), b.initial.P.squaredNorm(), kinetic_energy(b.model, b.initial)};
+  if (std::any_of(std::begin(sizes), std::end(sizes), [](double v) { return !std::isfinite(v) || (v != 0 && v < DBL_MIN); })) {
+    ctx.diag.error(t.source(), r.path(), "body '" + b.name + "': the initial momenta or kinetic energy (" +
+                                             format_number(sizes[2]) + " J) leave the normal double range "
+                                             "(2.2e-308 to 1.8e308); express the body in other units");
     return;
   }
   scene.bodies.push_back(std::move(b));

@@ -18,13 +18,6 @@
 
 #include "core/error.hpp"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define TUMBLE_NO_ADDRESS_LIMIT 1  // sanitizers reserve terabytes of shadow address space
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define TUMBLE_NO_ADDRESS_LIMIT 1
-#endif
-#endif
 
 namespace tumble::scene {
 
@@ -44,16 +37,16 @@ void write_all(int fd, const std::string& s) {
   const auto cpu = static_cast<rlim_t>(std::ceil(limits.seconds)) + 1;
   const rlimit cpu_limit{cpu, cpu + 1};
   ::setrlimit(RLIMIT_CPU, &cpu_limit);
-#ifndef TUMBLE_NO_ADDRESS_LIMIT
-  long pages = 0;  // the budget is on top of what the parent already maps
-  if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
-    if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
-    std::fclose(f);
+  if (kImportAddressLimit) {
+    long pages = 0;  // the budget is on top of what the parent already maps
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    const auto as = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + limits.bytes;
+    const rlimit as_limit{as, as};
+    ::setrlimit(RLIMIT_AS, &as_limit);
   }
-  const auto as = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + limits.bytes;
-  const rlimit as_limit{as, as};
-  ::setrlimit(RLIMIT_AS, &as_limit);
-#endif
   std::string reply;
   try {
     reply = "O" + work();

@@ -9,7 +9,21 @@
 #include <functional>
 #include <string>
 
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define TUMBLE_NO_ADDRESS_LIMIT 1  // sanitizers reserve terabytes of shadow address space
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+#define TUMBLE_NO_ADDRESS_LIMIT 1
+#endif
+#endif
+
 namespace tumble::scene {
+
+#ifdef TUMBLE_NO_ADDRESS_LIMIT
+inline constexpr bool kImportAddressLimit = false;
+#else
+inline constexpr bool kImportAddressLimit = true;  ///< whether IsolationLimits::bytes is applied (not under sanitizers)
+#endif
 
 struct IsolationLimits {
   double seconds = 60;                        ///< wall clock (and CPU, +1 s) for the child
