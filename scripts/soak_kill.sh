@@ -34,10 +34,12 @@ t0=$(date +%s.%N)
 while [ "$kills" -lt "$KILLS" ]; do
   runs=$((runs + 1))
   s=${shards[$((RANDOM % 2))]}
+  # The binary itself in the background (not a function: $! would be a subshell).
+  r=("$TUMBLE" render "$work/scene.toml" -o "$out" --progress none --video mp4 --frames "$s")
   case $((RANDOM % 3)) in
-    0) what=render; cmd=(render "$out" "$s") ;;
-    1) what=resume; cmd=(render "$out" "$s" --resume) ;;
-    2) what=assemble; cmd=(assemble "$out") ;;
+    0) what=render; cmd=("${r[@]}") ;;
+    1) what=resume; cmd=("${r[@]}" --resume) ;;
+    2) what=assemble; cmd=("$TUMBLE" assemble "$out" --progress none) ;;
   esac
   # A kill point anywhere in a run: uniform over half the clean run's time.
   delay=$(awk -v r=$RANDOM -v c="$clean_s" 'BEGIN{printf "%.3f", r / 32768 * c / 2}')

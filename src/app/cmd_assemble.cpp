@@ -84,6 +84,8 @@ int run_assemble(const AssembleOptions& o) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw io::IoError("'" + dir.string() + "' is not a folder");
   const io::FolderLock lock(dir, io::FolderLock::Mode::exclusive, "tumble assemble", "");  // no shard may run meanwhile
+  // Alone in the folder: every temp file is a killed run's leftover (a video half encoded, say).
+  for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
   const std::vector<Part> parts = read_parts(dir);
   if (parts.empty())
     throw InputError("tumble assemble: " + dir.string() +

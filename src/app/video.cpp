@@ -1,6 +1,7 @@
 #include "app/video.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -56,6 +57,7 @@ ChildEnd run(const std::vector<std::string>& args, const StopPoll& stop, const E
     return {};
   }
   if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // dies with tumble (kill -9): no orphan writing a temp file
     ::dup2(fds[1], STDOUT_FILENO);
     ::execvp(argv[0], argv.data());
     ::_exit(127);

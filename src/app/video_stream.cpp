@@ -1,6 +1,7 @@
 #include "app/video_stream.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -37,6 +38,7 @@ VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int
   }
   pid_ = ::fork();
   if (pid_ == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // dies with tumble (kill -9): no orphan writing a temp file
     ::dup2(fds[0], STDIN_FILENO);  // dup2 clears O_CLOEXEC on the copy
     ::signal(SIGPIPE, SIG_DFL);     // an ignored signal would stay ignored across exec
     ::execvp(argv[0], argv.data());

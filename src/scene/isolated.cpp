@@ -1,6 +1,7 @@
 #include "scene/isolated.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -74,6 +75,7 @@ std::string run_isolated(const std::function<std::string()>& work, const Isolati
     throw InputError(what + ": cannot fork the guarded import: " + std::strerror(errno));
   }
   if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // dies with its parent
     ::close(fds[0]);
     child(fds[1], work, limits);
   }

@@ -264,10 +264,11 @@ class Data {
 // Reads record `i` of `e`; scalar values go to `values` (by property index) when given.
 // With `vertices` > 0, every list entry must be a vertex index below it (faces).
 void read_record(Data& d, const Element& e, std::uint64_t i, const std::string& name, std::vector<double>* values,
-                 std::uint64_t vertices = 0) {
+                 std::uint64_t vertices = 0, bool after_vertices = false) {
   auto record = [&] {  // built only for a message
     return e.name == "vertex" ? "vertex " + std::to_string(i)
-                              : "element " + quote(e.name) + " record " + std::to_string(i);
+                              : "element " + quote(e.name) + " record " + std::to_string(i) +
+                                    (after_vertices ? "" : " (before the vertices)");
   };
   auto check = [&](Read r, const Property& p) {
     if (r == Read::end)
@@ -343,7 +344,8 @@ PlyVertices read_ply(std::istream& in, const std::string& name, bool whole) {
     out.masses.push_back(m);
   }
   for (auto e = vertex + 1; whole && e != h.elements.end(); ++e)
-    for (std::uint64_t i = 0; i < e->count; ++i) read_record(d, *e, i, name, nullptr, e->name == "face" ? vertex->count : 0);
+    for (std::uint64_t i = 0; i < e->count; ++i)
+      read_record(d, *e, i, name, nullptr, e->name == "face" ? vertex->count : 0, true);
   double total = 0;
   for (double m : out.masses) total += m;
   if (mass >= 0 && !(total > 0 && std::isfinite(total)))
