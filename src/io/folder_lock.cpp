@@ -42,6 +42,12 @@ FolderLock::FolderLock(const std::filesystem::path& dir, Mode mode, const std::s
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
   if (fd_ < 0) throw IoError("cannot open the lock file " + path.string() + ": " + std::strerror(errno));
   auto refuse = [&](const std::string& why) {
+    if (errno != EWOULDBLOCK) {  // no lock support here (some network filesystems): say so, not "in use"
+      const int e = errno;
+      ::close(fd_);
+      fd_ = -1;
+      throw IoError("cannot lock " + path.string() + ": " + std::strerror(e));
+    }
     std::string other_key;
     const std::string who = read_holder(fd_, &other_key);
     ::close(fd_);
@@ -60,6 +66,7 @@ FolderLock::FolderLock(const std::filesystem::path& dir, Mode mode, const std::s
   if (::flock(fd_, LOCK_SH | LOCK_NB) != 0) refuse("");
   std::string other_key;
   (void)read_holder(fd_, &other_key);
+  errno = EWOULDBLOCK;
   if (other_key != key) refuse(" (rendering another scene or other settings there)");
 }
 

@@ -262,7 +262,8 @@ TEST_F(HostileInput, InterruptedSimulateLeavesNoTempFileAndNoCsv) {
                             " --csv '" + csv + "' --method rk4 --dt 1e-6 --duration 900 2>'" + (dir_ / "err").string() +
                             "' & p=$!; for i in $(seq 600); do ls '" + dir_.string() + "' | grep -q tmp- && break; sleep 0.05; done; "
                             "pkill -" + sig + " -P $p; wait $p; echo $? >'" + (dir_ / "code").string() + "'";
-    ASSERT_EQ(std::system(("bash -c \"" + cmd + "\"").c_str()), 0);
+    std::ofstream(dir_ / "run.sh") << cmd << "\n";
+    ASSERT_EQ(std::system(("bash '" + (dir_ / "run.sh").string() + "'").c_str()), 0);
     const std::string err = slurp(dir_ / "err");
     EXPECT_EQ(std::stoi(slurp(dir_ / "code")), 128 + (std::string(sig) == "INT" ? 2 : 15)) << err;
     EXPECT_NE(err.find(std::string("interrupted (SIG") + sig + "): no CSV written"), std::string::npos) << err;
