@@ -2,17 +2,25 @@
 # Runs the libFuzzer targets (built by the `fuzz` preset) for SECONDS each
 # (default 30), seeded from the shipped scenes, the broken-scene corpus, assimp's
 # PLY models and the regression corpus. A crash leaves crash-* in build/fuzz/artifacts/: add the
-# input to tests/fuzz/regressions/{scene,cloud,ply}/ (replayed by scene_tests).
+# input to tests/fuzz/regressions/{scene,cloud,ply,mesh}/ (replayed by scene_tests). fuzz_mesh
+# inputs start with a byte naming the format (o, s, p, f: OBJ, STL, PLY, OFF), then the file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_EACH="${1:-30}"
 BUILD="${FUZZ_BUILD_DIR:-build/fuzz}"
 work="$BUILD/corpus"
-mkdir -p "$work/scene" "$work/cloud" "$work/ply" "$BUILD/artifacts"
+mkdir -p "$work/scene" "$work/cloud" "$work/ply" "$work/mesh" "$BUILD/artifacts"
 cp scenes/*.toml tests/scene/broken/*.toml tests/fuzz/regressions/scene/* "$work/scene/" 2>/dev/null || true
 cp tests/fuzz/regressions/cloud/* "$work/cloud/" 2>/dev/null || true
 cp tests/fuzz/regressions/ply/* tests/scene/broken/data/*.ply /usr/share/assimp/models/PLY/*.ply "$work/ply/" 2>/dev/null || true
-for t in scene cloud ply; do
+cp tests/fuzz/regressions/mesh/* "$work/mesh/" 2>/dev/null || true
+models=/usr/share/assimp/models
+for f in $models/OBJ/*.obj $models/STL/*.stl $models/PLY/*.ply $models/OFF/*.off scenes/meshes/*.stl; do
+  [ -f "$f" ] && [ "$(stat -c %s "$f")" -le 65535 ] || continue
+  case "${f##*.}" in obj) k=o ;; stl) k=s ;; ply) k=p ;; off) k=f ;; esac
+  { printf %s "$k"; cat "$f"; } >"$work/mesh/seed_$(basename "$f")"
+done
+for t in scene cloud ply mesh; do
   echo "fuzz: fuzz_$t for ${SECONDS_EACH}s"
   # -timeout 60: a valid scene near the 10⁷-particle cap takes ~15 s to build
   # under the fuzz build's sanitizers (a t_handle 5.1 m thick at 63/m did, and

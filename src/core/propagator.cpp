@@ -29,7 +29,7 @@ std::optional<std::string> coarse_step_warning(const RigidBodyModel& m, const Bo
   const MethodInfo& info = method_info(cfg.method);
   if (info.adaptive || (info.closed_form_if_free && m.forces.empty())) return std::nullopt;
   const double turn = cfg.dt * rate(m, s0);
-  if (turn <= info.max_turn_per_step) return std::nullopt;
+  if (!(turn > info.max_turn_per_step)) return std::nullopt;  // NaN too: no NaN in a message
   std::ostringstream msg;
   msg.precision(3);
   msg << "body '" << m.name << "': dt = " << cfg.dt << " s turns or damps by " << turn << " rad per step, beyond the "
@@ -96,8 +96,10 @@ void Propagator::diverged(bool finite, double t, double h) const {
   std::ostringstream msg;
   msg.precision(6);
   msg << "diverged at t=" << t << " s, step " << steps_ << ", body '" << m_->name << "', method " << info_->name
-      << (finite ? " (energy grew beyond the work of the declared forces)" : "") << "; try dt <= " << h / 10
-      << " s or a geometric method (splitting, exact)";
+      << (finite ? " (energy grew beyond the work of the declared forces)" : "");
+  const bool geometric = cfg_.method == Method::splitting || cfg_.method == Method::exact;
+  if (std::isfinite(h) && h > 0) msg << "; try dt <= " << h / 10 << " s" << (geometric ? "" : " or a geometric method (splitting, exact)");
+  else if (!geometric) msg << "; try a geometric method (splitting, exact)";
   throw Diverged(msg.str(), t, steps_);
 }
 

@@ -6,9 +6,10 @@
 
 namespace tumble::render {
 
-FrameEncoder::FrameEncoder(int threads, std::size_t capacity)
+FrameEncoder::FrameEncoder(int threads, std::size_t capacity, OnWritten on_written)
     : capacity_(std::max<std::size_t>(capacity, 1)),
-      max_spare_(capacity_ + static_cast<std::size_t>(std::max(threads, 1))) {
+      max_spare_(capacity_ + static_cast<std::size_t>(std::max(threads, 1))),
+      on_written_(std::move(on_written)) {
   const int n = std::max(threads, 1);
   workers_.reserve(n);
   for (int i = 0; i < n; ++i) workers_.emplace_back([this] { worker(); });
@@ -96,6 +97,7 @@ void FrameEncoder::worker() {
       // One thread each: the other workers and the drawing use the other core.
       if (raw) finish_frame(job.raw, finished, fxaa, 1);
       io::write_png_atomic(job.path, raw ? finished : job.image);
+      if (on_written_) on_written_(job.path);
     } catch (...) {
       failure = std::current_exception();
     }

@@ -8,6 +8,7 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -20,8 +21,12 @@ namespace tumble::render {
 
 class FrameEncoder {
  public:
+  /// Called on a worker with each frame's path once it is renamed into place
+  /// (e.g. to record its checksum); what it throws is that frame's error.
+  using OnWritten = std::function<void(const std::filesystem::path&)>;
+
   /// `threads` workers (at least 1); `capacity` queued frames (at least 1).
-  explicit FrameEncoder(int threads = 2, std::size_t capacity = 4);
+  explicit FrameEncoder(int threads = 2, std::size_t capacity = 4, OnWritten on_written = {});
   /// Drains the queue and joins; errors not yet reported are dropped (call
   /// flush() first to see them).
   ~FrameEncoder();
@@ -69,6 +74,7 @@ class FrameEncoder {
   std::size_t written_ = 0;
   bool stopping_ = false;
   std::exception_ptr error_;
+  OnWritten on_written_;
   std::vector<std::thread> workers_;
 };
 

@@ -49,8 +49,7 @@ struct CameraMatrices {
 };
 
 inline CameraMatrices camera_matrices(const viz::Camera& cam, float aspect) {
-  const glm::mat4 view = glm::lookAt(glm::vec3(cam.position), glm::vec3(cam.target),
-                                     glm::vec3(cam.up));
+  const glm::mat4 view = glm::lookAt(glm::vec3(cam.position), glm::vec3(cam.target), glm::vec3(viz::view_up(cam)));
   const float hh = float(cam.ortho_half_height);
   const glm::mat4 proj =
       hh > 0 ? glm::ortho(-hh * aspect, hh * aspect, -hh, hh, float(cam.near_m), float(cam.far_m))

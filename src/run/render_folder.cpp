@@ -4,10 +4,14 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <map>
+#include <memory>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
+#include "io/frame_sums.hpp"
 #include "io/trajectory_csv.hpp"
 #include "render/frame_encoder.hpp"
 #include "render/renderer.hpp"
@@ -65,6 +69,7 @@ struct Job {
   std::string own;  ///< manifest.json, or this shard's part
   Existing existing;
   Manifest man;
+  std::unique_ptr<io::FolderLock> lock;  ///< held from open_folder to the end
   fs::path man_path() const { return req.dir / own; }
   void save() const { io::atomic_write_file(man_path(), man.json()); }
   /// "tumble render SCENE -o DIR" + `tail`: how to run this again.
@@ -88,6 +93,11 @@ void open_folder(Job& j) {
   // part, so shards running at once never overwrite each other's manifest.
   j.shard = asked.first != 0 || asked.second != j.count - 1;
   j.own = j.shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
+  // One writer per folder; the shards of one render (same scene and settings) together.
+  j.lock = std::make_unique<io::FolderLock>(
+      j.req.dir, j.shard ? io::FolderLock::Mode::shared : io::FolderLock::Mode::exclusive,
+      "tumble render " + quote_arg(j.req.scene_arg) + (j.shard ? " --frames " + j.req.frames : std::string()),
+      j.man.scene_hash + " " + j.man.settings_hash);
   j.existing = inspect_output(j.req.dir, j.man, j.own, j.req.force);
   const Existing& ex = j.existing;
   std::tie(j.first, j.last) = asked;
@@ -105,6 +115,7 @@ void open_folder(Job& j) {
     const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
     if (!j.shard || target == j.own || (k >= j.first && k <= j.last)) remove_file(t);
   }
+  if (!j.resume && !j.shard) remove_file(j.req.dir / io::kFrameSumsName);  // every frame is written again
 }
 
 /// What the manifest records of the runs, the GL context and the frames.
@@ -136,7 +147,7 @@ long on_disk(const Job& j, long drawn) {
 }
 
 struct Drawn {
-  long drawn = 0, skipped = 0;
+  long drawn = 0, skipped = 0, rejected = 0;
   int signal = 0;
 };
 
@@ -146,13 +157,24 @@ struct Drawn {
 Drawn draw_frames(Job& j, const FrameBuilder& builder, render::Renderer& renderer, long good) {
   Drawn d;
   std::error_code ec;
+  // A frame on disk is kept only if it is what was recorded when written (io/frame_sums.hpp).
+  const auto sums = j.resume ? io::read_frame_sums(j.req.dir) : std::map<std::string, io::FrameSum>{};
+  const scene::OutputConfig& out = j.req.scene.render.output;
+  auto kept = [&](long k) {
+    const fs::path f = io::frame_path(j.req.dir, k);
+    if (!fs::exists(fs::symlink_status(f, ec))) return false;
+    if (io::check_frame(f, sums, out.width, out.height).empty()) return true;
+    ++d.rejected;
+    remove_file(f);  // a link goes, not what it points to
+    return false;
+  };
   j.l.begin(j.last - j.first + 1);
   try {
-    render::FrameEncoder encoder(2, 4);
+    render::FrameEncoder encoder(2, 4, [](const fs::path& f) { io::record_frame(f); });
     for (long k = j.first; k <= j.last && k < good; ++k) {
       if ((d.signal = j.l.stop()) != 0) break;
-      if (j.resume && fs::exists(io::frame_path(j.req.dir, k), ec)) {
-        ++d.skipped;  // written whole by an earlier run (rename is atomic)
+      if (j.resume && kept(k)) {
+        ++d.skipped;  // written whole by an earlier run (rename is atomic) and unchanged since
       } else {
         // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
         // page faults. The encoder's threads finish it (FXAA) while we draw on.
@@ -173,6 +195,9 @@ Drawn draw_frames(Job& j, const FrameBuilder& builder, render::Renderer& rendere
     throw io::IoError(e.what());
   }
   j.l.end();
+  if (d.rejected > 0)
+    j.l.note(std::to_string(d.rejected) + " frame(s) on disk failed their check (truncated, changed, a link, or not "
+             "recorded in " + io::kFrameSumsName + ") and were drawn again");
   if (d.signal == 0) d.signal = j.l.stop();  // arrived during the last frames: they are whole anyway
   return d;
 }

@@ -1,11 +1,13 @@
 #include "run/video.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <system_error>
@@ -42,7 +44,7 @@ struct ChildEnd {
 // ffmpeg's `-progress pipe:1` lines ("frame=N") arrive on a pipe; between
 // them, `stop` is polled every 100 ms so a Ctrl-C ends the encode promptly.
 ChildEnd run(const std::vector<std::string>& args, const StopPoll& stop, const EncodeProgress& progress,
-             int& stopped_by) {
+             int& stopped_by, std::string* all = nullptr) {
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -55,6 +57,7 @@ ChildEnd run(const std::vector<std::string>& args, const StopPoll& stop, const E
     return {};
   }
   if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // dies with tumble (kill -9): no orphan writing a temp file
     ::dup2(fds[1], STDOUT_FILENO);
     ::execvp(argv[0], argv.data());
     ::_exit(127);
@@ -72,6 +75,7 @@ ChildEnd run(const std::vector<std::string>& args, const StopPoll& stop, const E
     const ssize_t n = ::read(fds[0], buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     open = n > 0;
+    if (all && n > 0) all->append(buf, static_cast<std::size_t>(n));
     for (ssize_t i = 0; i < n; ++i) {
       if (buf[i] != '\n') {
         line += buf[i];
@@ -89,7 +93,43 @@ ChildEnd run(const std::vector<std::string>& args, const StopPoll& stop, const E
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0};
 }
 
+// What a program prints on stdout (no shell: any path is one argument), "" when it cannot run.
+std::string capture(const std::vector<std::string>& args) {
+  std::string out;
+  int stopped_by = 0;
+  std::vector<std::string> a = args;
+  const ChildEnd end = run(a, {}, {}, stopped_by, &out);
+  return end.code == 0 ? out : std::string();
+}
+
+// "a/100%/b" for ffmpeg's image2 pattern, which reads '%' as a format directive.
+std::string escape_pattern(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '%' ? std::string("%%") : std::string(1, c);
+  return out;
+}
+
 }  // namespace
+
+std::string verify_video(const std::filesystem::path& video, long frames, int fps, VideoFormat format) {
+  const std::string out = capture({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                                   "stream=codec_type,nb_read_frames:format=duration", "-of",
+                                   "default=noprint_wrappers=1", video.string()});
+  auto field = [&](const std::string& key) {
+    const std::size_t at = out.find(key + "=");
+    return at == std::string::npos ? std::string() : out.substr(at + key.size() + 1, out.find('\n', at) - at - key.size() - 1);
+  };
+  if (out.empty()) return "ffprobe cannot read it (or is missing: Debian package ffmpeg)";
+  if (field("codec_type") != "video") return "no video stream";
+  const long n = std::atol(field("nb_read_frames").c_str());
+  // GIF merges identical consecutive frames: fewer is fine there, never more.
+  if (format == VideoFormat::mp4 ? n != frames : (n < 1 || n > frames))
+    return std::to_string(n) + " frames, expected " + std::to_string(frames);
+  const double d = std::atof(field("duration").c_str()), want = static_cast<double>(frames) / fps;
+  if (!(std::abs(d - want) <= 0.1 * want + 2.0 / fps))
+    return "lasts " + field("duration") + " s, expected " + std::to_string(want) + " s";
+  return "";
+}
 
 std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp) {
   if (format == VideoFormat::mp4)
@@ -110,7 +150,7 @@ VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
   const std::filesystem::path tmp = io::temp_path_for(output);
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-nostats", "-progress",
                                    "pipe:1", "-framerate", std::to_string(fps), "-i",
-                                   (frame_dir / io::kFramePattern).string()};
+                                   escape_pattern(frame_dir.string()) + "/" + io::kFramePattern};
   for (std::string& a : ffmpeg_output_args(format, crf, tmp)) args.push_back(std::move(a));
   int stopped_by = 0;
   const ChildEnd end = run(args, stop, progress, stopped_by);
@@ -125,6 +165,15 @@ VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
     const std::string how = end.signal ? "killed by signal " + std::to_string(end.signal)
                                        : "exit " + std::to_string(end.code);
     return {VideoResult::failed, 0, "ffmpeg failed (" + how + ") making " + output.string()};
+  }
+  // ffmpeg's exit status is no proof (a full disk fails the trailer, exit 0 or
+  // not): the video replaces an earlier one only once ffprobe reads it whole.
+  long frames = 0;
+  while (std::filesystem::exists(io::frame_path(frame_dir, frames), ec)) ++frames;
+  if (const std::string bad = verify_video(tmp, frames, fps, format); !bad.empty()) {
+    std::filesystem::remove(tmp, ec);
+    return {VideoResult::failed, 0, "ffmpeg's " + output.filename().string() + " failed its check (" + bad + ")" +
+                                        (std::filesystem::exists(output, ec) ? "; the earlier video is kept" : "")};
   }
   std::filesystem::rename(tmp, output, ec);
   if (ec) return {VideoResult::failed, 0, "cannot rename " + tmp.string() + " to " + output.string() + ": " + ec.message()};

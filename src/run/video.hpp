@@ -24,6 +24,11 @@ inline constexpr const char* kMissingFfmpeg = "ffmpeg not found on PATH (Debian 
 /// Bit-exact (no encoder version in the file): the same frames give the same bytes.
 std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp);
 
+/// "" when `video` holds a video stream of `frames` frames (GIF: 1..frames,
+/// it merges repeats) lasting about frames / fps, as ffprobe counts them;
+/// else what is wrong.
+std::string verify_video(const std::filesystem::path& video, long frames, int fps, VideoFormat format);
+
 /// How an encode ended. `signal` is SIGINT/SIGTERM when it was interrupted
 /// (tumble asked to stop, or ffmpeg itself got the terminal's Ctrl-C).
 struct VideoResult {

@@ -45,6 +45,9 @@ class VideoStream {
   pid_t pid_ = -1;
   int in_ = -1;      // the write end of ffmpeg's stdin
   bool broken_ = false;
+  long frames_ = 0;  // written whole, for the check of the video
+  int fps_ = 0;
+  VideoFormat format_ = VideoFormat::mp4;
   struct sigaction old_pipe_ {};
   VideoResult status_;
 };

@@ -56,7 +56,7 @@ void read_viewport(TableReader& r, ViewConfig& v) {
 void check_body(TableReader& r, const LoadContext& ctx, const std::string& name) {
   const std::vector<std::string_view> names(ctx.body_names.begin(), ctx.body_names.end());
   if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  std::string msg = "expected the name of a body, found \"" + name + "\"";
+  std::string msg = "expected the name of a body, found " + quote_token(name);
   const std::string hint = closest(name, names);
   if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
   r.error("body", msg);
@@ -76,7 +76,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     for (ViewKind k : {ViewKind::world, ViewKind::body_frame, ViewKind::momentum_sphere, ViewKind::plot,
                        ViewKind::poinsot})
       if (*kind == view_kind_name(k)) v.kind = k, known = true;
-    if (!known) r.error("kind", "expected world, body_frame, momentum_sphere, plot or poinsot, found \"" + *kind + "\"");
+    if (!known) r.error("kind", "expected world, body_frame, momentum_sphere, plot or poinsot, found " + quote_token(*kind));
     read_viewport(r, v);
     v.body = r.string("body").value_or("");
     if (!v.body.empty()) check_body(r, ctx, v.body);
@@ -85,8 +85,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
       for (const std::string& name : *series) {
         const auto& all = plot_series_names();
         if (std::find(all.begin(), all.end(), name) == all.end())
-          r.error("series", "expected names from wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, axis3_L, found \"" +
-                                name + "\"");
+          r.error("series", "expected names from wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, axis3_L, found " + quote_token(name));
       }
       v.series = *series;
     }

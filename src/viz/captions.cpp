@@ -22,7 +22,7 @@ float fade_alpha(double tau, double start, double end, double fade) {
 
 bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out) {
   const double aspect = width_px / std::max(height_px, 1.0);
-  const glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
+  const glm::dmat4 view = glm::lookAt(cam.position, cam.target, view_up(cam));
   const double hh = cam.ortho_half_height;
   const glm::dmat4 proj = hh > 0 ? glm::ortho(-hh * aspect, hh * aspect, -hh, hh, cam.near_m, cam.far_m)
                                  : glm::perspective(glm::radians(cam.fov_y_deg), aspect, cam.near_m, cam.far_m);

@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "core/camera_up.hpp"
+
 namespace tumble::viz {
 
 /// Linear RGBA colour, components in [0, 1].
@@ -115,6 +117,14 @@ struct Camera {
   /// > 0: orthographic, showing ± this many m vertically (plots); 0 = perspective.
   double ortho_half_height = 0;
 };
+
+/// The camera's up, or the fallback of core/camera_up.hpp when it is parallel
+/// to the view direction (a camera that follows a body can come to look along it).
+inline glm::dvec3 view_up(const Camera& c) {
+  const glm::dvec3 d = c.target - c.position;
+  const Eigen::Vector3d u = usable_up({c.up.x, c.up.y, c.up.z}, {d.x, d.y, d.z});
+  return {u.x(), u.y(), u.z()};
+}
 
 /// One viewport's content. Several of them form a comparison grid.
 struct View {
