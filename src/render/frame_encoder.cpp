@@ -3,13 +3,14 @@
 #include <algorithm>
 
 #include "io/png.hpp"
+#include "render/worker_threads.hpp"
 
 namespace tumble::render {
 
-FrameEncoder::FrameEncoder(int threads, std::size_t capacity)
-    : capacity_(std::max<std::size_t>(capacity, 1)),
-      max_spare_(capacity_ + static_cast<std::size_t>(std::max(threads, 1))) {
-  const int n = std::max(threads, 1);
+FrameEncoder::FrameEncoder(int threads, std::size_t capacity) {
+  const int n = threads > 0 ? threads : worker_threads();
+  capacity_ = capacity > 0 ? capacity : 2 * static_cast<std::size_t>(n);
+  max_spare_ = capacity_ + static_cast<std::size_t>(n);
   workers_.reserve(n);
   for (int i = 0; i < n; ++i) workers_.emplace_back([this] { worker(); });
 }
@@ -93,7 +94,7 @@ void FrameEncoder::worker() {
     std::exception_ptr failure;
     const bool raw = !job.raw.rgba.empty();
     try {
-      // One thread each: the other workers and the drawing use the other core.
+      // One thread each: the other workers and the drawing use the other cores.
       if (raw) finish_frame(job.raw, finished, fxaa, 1);
       io::write_png_atomic(job.path, raw ? finished : job.image);
     } catch (...) {

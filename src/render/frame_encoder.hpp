@@ -20,8 +20,12 @@ namespace tumble::render {
 
 class FrameEncoder {
  public:
-  /// `threads` workers (at least 1); `capacity` queued frames (at least 1).
-  explicit FrameEncoder(int threads = 2, std::size_t capacity = 4);
+  /// `threads` workers, 0 = render::worker_threads() (--jobs, TUMBLE_JOBS,
+  /// else the cores this process may use); `capacity` queued frames, 0 = two
+  /// per worker, so each has the next frame waiting while the GL thread draws.
+  explicit FrameEncoder(int threads = 0, std::size_t capacity = 0);
+  int threads() const { return static_cast<int>(workers_.size()); }
+  std::size_t capacity() const { return capacity_; }
   /// Drains the queue and joins; errors not yet reported are dropped (call
   /// flush() first to see them).
   ~FrameEncoder();
