@@ -111,7 +111,7 @@ class EglContext final : public GlContext {
     if (index < 0 || index >= count) {
       std::string list;
       for (EGLint i = 0; i < count; ++i) list += (i ? ", " : "") + std::to_string(i) + ": " + device_label(devices[i]);
-      throw std::runtime_error("EGL device " + std::to_string(index) + " does not exist (TUMBLE_EGL_DEVICE / --gpu); " +
+      throw std::invalid_argument("EGL device " + std::to_string(index) + " does not exist (TUMBLE_EGL_DEVICE / --gpu); " +
                                std::to_string(count) + " device(s)" + (list.empty() ? "" : ": " + list));
     }
     display_name_ = "EGL device " + std::to_string(index) + " of " + std::to_string(count) + " (" +

@@ -78,7 +78,8 @@ std::unique_ptr<GlContext> create_gl_context(GlBackend backend, std::optional<in
 // Backend factories (one .cpp each).
 std::unique_ptr<GlContext> create_osmesa_context();
 /// `device`: an index of eglQueryDevicesEXT, or nullopt for automatic (see
-/// choose_egl_display); an index past the last device is an error listing them.
+/// choose_egl_display); an index past the last device throws
+/// std::invalid_argument listing them (a user's choice, not a missing library).
 std::unique_ptr<GlContext> create_egl_context(std::optional<int> device = std::nullopt);
 
 }  // namespace tumble::render

@@ -58,7 +58,7 @@ TEST_F(EglDeviceTest, DeviceBeyondTheLastIsAnErrorListingTheDevices) {
   try {
     create_egl_context(64);
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& e) {
+  } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("EGL device 64 does not exist"), std::string::npos) << what;
     EXPECT_NE(what.find("0: "), std::string::npos) << what;  // device 0 exists (SetUp made it)
