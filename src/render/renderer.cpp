@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -38,26 +36,6 @@ const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 0.55f, 0.75f));
 constexpr float kOpaqueSpecular = 0.28f;
 
 }  // namespace
-
-GpuPaths parse_gpu_paths(std::string_view text, bool hardware_gpu) {
-  if (text.empty() || text == "auto") return {hardware_gpu, hardware_gpu};
-  GpuPaths p;
-  if (text == "none") return p;
-  std::istringstream in{std::string(text)};
-  for (std::string item; std::getline(in, item, ',');) {
-    if (item == "pbo") p.overlapped_readback = true;
-    else if (item == "fxaa") p.gl_fxaa = true;
-    else
-      throw std::invalid_argument("TUMBLE_GPU_PATHS = '" + std::string(text) +
-                                  "': expected auto, none, or a comma list of pbo and fxaa");
-  }
-  return p;
-}
-
-GpuPaths default_gpu_paths(const GlContext& context) {
-  const char* env = std::getenv("TUMBLE_GPU_PATHS");
-  return parse_gpu_paths(env ? env : "", context.hardware_gpu());
-}
 
 // Everything GL lives here, so renderer.hpp stays free of GL headers.
 class Renderer::Impl {
