@@ -96,7 +96,7 @@ void add_bench_command(CLI::App& app, Action& action) {
                   "With --render: frame encoder threads (default: env TUMBLE_JOBS, else the cores this process may use)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--scene", o->scene,
-                  "Work-precision study (every method x a dt sweep, rk45 x rtol, peers when torque-free) on this "
+                  "Work-precision study (every method x a dt sweep, the adaptive pairs x rtol, the peers that take the body) on this "
                   "scene's bodies against a tight reference; with --render: the scene to render (default "
                   "scenes/dzhanibekov.toml)");
   cmd->add_option("--body", o->body, "With --scene: study only this body")->excludes(render);

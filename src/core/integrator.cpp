@@ -3,7 +3,7 @@
 #include "core/body_frame.hpp"
 #include "core/explicit_rk.hpp"
 #include "core/free_rotation_exact.hpp"
-#include "core/rk45.hpp"
+#include "core/embedded_rk.hpp"
 #include "core/rotation_steps.hpp"
 
 namespace tumble {
@@ -25,20 +25,22 @@ constexpr double kFollowRk = 0.5, kFollowFirstOrder = 0.1, kFollowGeometric = 3.
 
 //  method, name, order, step, coords_step, ordered_step, adaptive, closed form if free, auto candidate, splits, turn, cost
 constexpr MethodInfo kTable[] = {
-    {Method::euler, "euler", 1, euler_step, nullptr, nullptr, false, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
-    {Method::semi_implicit_euler, "semi_implicit_euler", 1, semi_implicit_euler_step, nullptr, nullptr, false, false, false, false,
+    {Method::euler, "euler", 1, euler_step, nullptr, nullptr, nullptr, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
+    {Method::semi_implicit_euler, "semi_implicit_euler", 1, semi_implicit_euler_step, nullptr, nullptr, nullptr, false, false, false,
      kFollowFirstOrder, kCostSemiImplicitEuler.free, kCostSemiImplicitEuler.forced},
-    {Method::rk4, "rk4", 4, rk4_body_step, rk4_coords_step, nullptr, false, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
-    {Method::rk4_seed, "rk4_seed", 4, rk4_step, nullptr, nullptr, false, false, false, false, kFollowRk, kCostRk4Seed.free,
+    {Method::rk4, "rk4", 4, rk4_body_step, rk4_coords_step, nullptr, nullptr, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
+    {Method::rk4_seed, "rk4_seed", 4, rk4_step, nullptr, nullptr, nullptr, false, false, false, kFollowRk, kCostRk4Seed.free,
      kCostRk4Seed.forced},
-    {Method::rk45, "rk45", 5, rk45_fixed_step, nullptr, nullptr, true, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
-    {Method::implicit_midpoint, "implicit_midpoint", 2, implicit_midpoint_step, nullptr, nullptr, false, false, true, false,
+    {Method::rk45, "rk45", 5, rk45_fixed_step, nullptr, nullptr, make_rk45, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
+    {Method::dop853, "dop853", 8, dop853_fixed_step, nullptr, nullptr, make_dop853, false, true, false, kFollowRk, kCostDop853.free,
+     kCostDop853.forced},
+    {Method::implicit_midpoint, "implicit_midpoint", 2, implicit_midpoint_step, nullptr, nullptr, nullptr, false, true, false,
      kFollowGeometric, kCostImplicitMidpoint.free, kCostImplicitMidpoint.forced},
-    {Method::splitting, "splitting", 2, splitting_step, nullptr, splitting_step_ordered, false, false, true, true, kFollowGeometric,
+    {Method::splitting, "splitting", 2, splitting_step, nullptr, splitting_step_ordered, nullptr, false, true, true, kFollowGeometric,
      kCostSplitting.free, kCostSplitting.forced},
-    {Method::splitting4, "splitting4", 4, splitting4_step, nullptr, nullptr, false, false, true, true, kFollowGeometric,
+    {Method::splitting4, "splitting4", 4, splitting4_step, nullptr, nullptr, nullptr, false, true, true, kFollowGeometric,
      kCostSplitting4.free, kCostSplitting4.forced},
-    {Method::exact, "exact", 0, exact_step, nullptr, nullptr, false, true, true, false, kFollowGeometric, kCostExact.free,
+    {Method::exact, "exact", 0, exact_step, nullptr, nullptr, nullptr, true, true, false, kFollowGeometric, kCostExact.free,
      kCostExact.forced},
 };
 static_assert(std::size(kTable) == kAllMethods.size());

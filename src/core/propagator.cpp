@@ -47,10 +47,10 @@ Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepC
   power_abs_ = f.scale;
   if (info_->closed_form_if_free && m.forces.empty()) exact_.emplace(m.inertia, s0.q, s0.L);
   if (info_->adaptive) {
-    Rk45Options o;
+    AdaptiveOptions o;
     o.rtol = cfg_.rtol;
     o.atol = cfg_.atol;
-    rk45_ = std::make_unique<Rk45>(m, s0, 0.0, o);
+    adaptive_ = info_->adaptive(m, s0, 0.0, o);
   }
 }
 
@@ -123,16 +123,16 @@ const BodyState& Propagator::advance_to(double t) {
     check(s_, t, h);
     return s_;
   }
-  if (rk45_) {
+  if (adaptive_) {
     try {
-      s_ = rk45_->advance_to(t);
+      s_ = adaptive_->advance_to(t);
     } catch (const Diverged&) {
       t_ = t;
       check(s_, t, cfg_.dt);
       throw;
     }
     s_.q = same_hemisphere(s_.q, prev);
-    steps_ = rk45_->accepted();
+    steps_ = adaptive_->accepted();
     check(s_, t, t - t_);
     t_ = t;
     return s_;
@@ -156,7 +156,7 @@ const BodyState& Propagator::advance_to(double t) {
 }
 
 const BodyState& Propagator::advance_steps(long n) {
-  if (exact_ || rk45_) return advance_to(t_ + static_cast<double>(n) * cfg_.dt);
+  if (exact_ || adaptive_) return advance_to(t_ + static_cast<double>(n) * cfg_.dt);
   const long target = steps_ + n;
   while (steps_ < target) grid_step();
   s_ = grid_.state();

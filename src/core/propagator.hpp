@@ -11,15 +11,15 @@
 #include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
-#include "core/rk45.hpp"
+#include "core/embedded_rk.hpp"
 
 namespace tumble {
 
 struct StepConfig {
   Method method = Method::rk4;
-  double dt = 1e-3;         ///< s, fixed step (rk45: its largest step)
-  double rtol = 1e-9;       ///< rk45 only
-  double atol = 1e-12;      ///< rk45 only
+  double dt = 1e-3;         ///< s, fixed step (adaptive pairs: unused)
+  double rtol = 1e-9;       ///< adaptive pairs (rk45, dop853) only
+  double atol = 1e-12;      ///< adaptive pairs only (a fraction of the body's scales)
 };
 
 /// A warning when dt is too coarse for the method to follow the body's initial
@@ -35,7 +35,7 @@ class Propagator {
   /// methods step on the grid t_n = n·dt whatever the sample times are; a
   /// sample between grid points is one partial step from the last grid state,
   /// never fed back, so the trajectory does not depend on fps, --every or
-  /// --frames. rk45 uses dense output; `exact` on a torque-free body evaluates
+  /// --frames. the adaptive pairs use dense output; `exact` on a torque-free body evaluates
   /// the closed form at t. Throws Diverged with time, step, body and method.
   const BodyState& advance_to(double t);
   /// Advances by exactly n steps of dt (fixed-step methods: to the grid point
@@ -43,7 +43,7 @@ class Propagator {
   const BodyState& advance_steps(long n);
 
   double time() const { return t_; }
-  /// Steps taken on the grid (rk45: accepted steps; closed form: evaluations).
+  /// Steps taken on the grid (adaptive pairs: accepted steps; closed form: evaluations).
   long steps() const { return steps_; }
   const BodyState& state() const { return s_; }
   const RigidBodyModel& model() const { return *m_; }
@@ -74,7 +74,7 @@ class Propagator {
   // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.
   double e0_ = 0, erot0_ = 0, scale0_ = 0, work_ = 0, work_abs_ = 0, power_ = 0, power_abs_ = 0;
   std::optional<FreeRotationExact> exact_;
-  std::unique_ptr<Rk45> rk45_;
+  std::unique_ptr<AdaptiveIntegrator> adaptive_;
 };
 
 }  // namespace tumble

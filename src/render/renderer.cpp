@@ -308,6 +308,8 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   }
   lines_.draw(batches.box_edges, view_proj, kEdgeWidthPx);
   gl_.DepthMask(GL_TRUE);
+  // Translucent surfaces last, over the curves behind them.
+  surfaces_.draw_translucent(view.surfaces, cam.view, cam.proj, kLightDir);
 
   gl_.Disable(GL_DEPTH_TEST);
   draw_text(view.texts, view.label, rect);
@@ -375,9 +377,11 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
   }
   for (const viz::TextItem& t : items) {
     // Shrink a line that would run past the viewport's right edge (keeping the
-    // left margin on the right too) rather than clip it: small frames and
-    // comparison grids keep their whole overlay and legend.
-    const float room = static_cast<float>(rect.width) - 2 * std::max(t.position_px.x, 0.0f);
+    // left margin, up to 12 px, on the right too) rather than clip it: small
+    // frames and comparison grids keep their whole overlay and legend, and a
+    // label in the middle of a view keeps its size.
+    const float left = std::max(t.position_px.x, 0.0f);
+    const float room = static_cast<float>(rect.width) - left - std::min(left, 12.0f);
     const float width = font_.measure(t.text, t.size_px).x;
     const float size = width > room && room > 0 ? t.size_px * room / width : t.size_px;
     font_.layout(t.text, t.position_px, size, t.color, quads);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/dynamics.hpp"
+#include "scene/frame_clock.hpp"
 #include "viz/captions.hpp"
 #include "viz/momentum_sphere.hpp"
 #include "viz/poinsot.hpp"
@@ -109,6 +110,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       in.t0 = 0, in.t1 = scene_.simulation.duration, in.lo = slot.lo, in.hi = slot.hi;
       in.playhead = fb_.clock().time(k);
       in.title = vc.title;
+      for (const scene::SlowMotion& m : scene_.render.explain.slow_motion)
+        in.shaded.push_back({m.start, m.end, scene::speed_text(m.time_scale)});
       for (long j = 0; j <= kk; ++j) in.times.push_back(fb_.clock().time(j));
       for (std::size_t s = 0; s < vc.series.size(); ++s) {
         viz::Series series{vc.series[s], {}, series_color(vc.series[s], s)};
@@ -129,6 +132,7 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
         in.omega_world_history.push_back(omega_world(m, run.path[j][slot.body]));
       }
       in.title = vc.title;
+      in.width_px = slot.width_px, in.height_px = slot.height_px;
       viz::build_poinsot(v, in, fb_.font_px());
       break;
     }
@@ -146,17 +150,25 @@ void ExplainViews::add_views(viz::DrawList& dl, long k) const {
 
 void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   const scene::ExplainConfig& e = scene_.render.explain;
-  const double tau = static_cast<double>(k) / fb_.clock().fps();  // video time
+  const scene::FrameClock& clock = fb_.clock();
+  const double tau = static_cast<double>(k) / clock.fps();  // video time
   for (const scene::Caption& c : e.captions) {
-    const float a = viz::fade_alpha(tau, fb_.clock().video_time(c.start), fb_.clock().video_time(c.end));
+    const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time(c.end));
     if (a > 0) dl.texts.push_back(viz::caption_item(c.text, a, width_, height_));
   }
-  if (e.title.duration > 0) {
-    const float a = viz::fade_alpha(tau, -1.0, e.title.duration);
-    if (a > 0)
-      for (viz::TextItem& t : viz::title_items(e.title.text, e.title.subtitle, a, width_, height_))
-        dl.texts.push_back(std::move(t));
-  }
+  const double rate = clock.rate(k);
+  if (auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_)) dl.texts.push_back(std::move(*badge));
+}
+
+bool ExplainViews::title_card(viz::DrawList& dl, long k) const {
+  const scene::TitleCard& t = scene_.render.explain.title;
+  if (t.hold <= 0 || !fb_.clock().on_title_card(k)) return false;
+  const double tau = static_cast<double>(k) / fb_.clock().fps();
+  dl.background = viz::kTitleCardBackground;
+  dl.views.clear();
+  for (viz::TextItem& item : viz::title_items(t.text, t.subtitle, viz::fade_alpha(tau, -1.0, t.hold), width_, height_))
+    dl.texts.push_back(std::move(item));
+  return true;
 }
 
 }  // namespace tumble::run

@@ -14,8 +14,10 @@ class ExplainViews {
   ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const std::vector<Run>& runs, int width, int height);
   /// One view per [[views]] table, each in its viewport.
   void add_views(viz::DrawList& dl, long k) const;
-  /// Captions and the title card over the whole frame.
+  /// Captions and the slow-motion badge over the whole frame.
   void add_text(viz::DrawList& dl, long k) const;
+  /// Frame k as the title card (its own backdrop, no views), if it is one.
+  bool title_card(viz::DrawList& dl, long k) const;
 
  private:
   struct Slot {

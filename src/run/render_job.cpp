@@ -205,7 +205,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
     for (size_t r = 0; r < runs.size(); ++r)
       for (size_t j = 0; j < runs[r].path.size(); ++j)
         trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
-  if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.duration > 0)
+  if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.hold > 0)
     explain_ = std::make_unique<ExplainViews>(*this, s, runs, width, height);
 }
 
@@ -288,6 +288,7 @@ viz::DrawList FrameBuilder::build(long k) const {
   dl.background = rgba(bg, 1.0f);
   dl.columns = columns_;
   const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
+  if (explain_ && explain_->title_card(dl, k)) return dl;  // the animation waits
   if (explain_ && !scene_.render.explain.views.empty()) {
     explain_->add_views(dl, k);
   } else {

@@ -16,15 +16,20 @@ struct SlowMotion {
 };
 
 /// Text shown while the simulated time is in [start, end], fading in and out.
+/// A scene may anchor start/end to flips (scene/events.hpp): they are resolved
+/// at load, and `start_text`/`end_text` keep what the file said.
 struct Caption {
   double start = 0, end = 0;  ///< simulated s
   std::string text;
+  std::string start_text, end_text;  ///< as written ("flip 1 - 0.2", "1.5")
+  std::size_t body = 0;              ///< the body whose flips anchor it
 };
 
-/// A title over the first `duration` s of video, fading out.
+/// A title card on its own backdrop for the first `hold` s of video, while the
+/// animation waits at t = 0 (FrameClock).
 struct TitleCard {
   std::string text, subtitle;
-  double duration = 0;        ///< video s; 0 = no title
+  double hold = 0;            ///< video s; 0 = no title
 };
 
 enum class ViewKind { world, body_frame, momentum_sphere, plot, poinsot };

@@ -197,7 +197,7 @@ MethodPlan plan_method(const SimulationConfig& sim, const Body& body) {
 
 std::string step_label(const StepConfig& c, const RigidBodyModel& m) {
   char buf[64];
-  if (c.method == Method::rk45) std::snprintf(buf, sizeof buf, "rtol = %g", c.rtol);
+  if (method_info(c.method).adaptive) std::snprintf(buf, sizeof buf, "rtol = %g", c.rtol);
   else if (c.method == Method::exact && m.forces.empty()) std::snprintf(buf, sizeof buf, "closed form");
   else std::snprintf(buf, sizeof buf, "dt = %g s", c.dt);
   return buf;

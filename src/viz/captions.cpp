@@ -52,11 +52,20 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
   const float big = std::clamp(static_cast<float>(frame_h) / 12.0f, 16.0f, 72.0f), small = big * 0.5f;
   const float fw = static_cast<float>(frame_w), fh = static_cast<float>(frame_h);
   out.push_back({title, {std::max(8.0f, 0.5f * (fw - approx_text_width(title, big))), 0.38f * fh}, big,
-                 {0.08f, 0.09f, 0.12f, alpha}});
+                 {0.97f, 0.97f, 0.98f, alpha}});
   if (!subtitle.empty())
     out.push_back({subtitle, {std::max(8.0f, 0.5f * (fw - approx_text_width(subtitle, small))), 0.38f * fh + 1.5f * big},
-                   small, {0.25f, 0.27f, 0.32f, alpha}});
+                   small, {0.78f, 0.82f, 0.90f, alpha}});
   return out;
+}
+
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h) {
+  if (speed.empty()) return std::nullopt;
+  const std::string text = speed + (slow ? " slow motion" : " fast");
+  const float size = std::max(12.0f, static_cast<float>(frame_h) / 36.0f);
+  // Bottom-right, below the caption line (caption_item: top at h − 2.4 of its size h/26).
+  const float x = static_cast<float>(frame_w) - approx_text_width(text, size) - 0.8f * size;
+  return TextItem{text, {x, static_cast<float>(frame_h) - 1.3f * size}, size, {0.70f, 0.12f, 0.10f, 1.0f}};
 }
 
 }  // namespace tumble::viz

@@ -3,6 +3,7 @@
 // projected position) and the overlay line built from switchable items.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,16 @@ bool project_to_viewport(const Camera& cam, double width_px, double height_px, c
 /// A caption line centred near the bottom of a frame_w × frame_h frame.
 TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h);
 
-/// Title (and subtitle) centred in the frame, with opacity `alpha`.
+/// The title card's own backdrop (the whole frame; no views are drawn on it).
+inline constexpr Color kTitleCardBackground{0.12f, 0.15f, 0.21f, 1.0f};
+
+/// Title (and subtitle) centred in the frame, light on kTitleCardBackground, with opacity `alpha`.
 std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
                                   int frame_h);
+
+/// The speed badge in the frame's bottom-right corner, below the caption line, while the video does not
+/// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h);
 
 /// Approximate width of `text` at `size_px` (the UI font's average advance), px.
 float approx_text_width(const std::string& text, float size_px);

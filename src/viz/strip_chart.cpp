@@ -1,5 +1,7 @@
 #include "viz/strip_chart.hpp"
 
+#include "viz/surfaces.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -48,6 +50,16 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
   auto line = [&](std::vector<glm::dvec3> pts, Color c, float w) {
     view.polylines.push_back({std::move(pts), c, w, false});
   };
+  // Slowed stretches: pale bands behind the curves (z < 0, the camera looks down -z).
+  for (const StripChartInput::Band& band : in.shaded) {
+    const double t0 = std::clamp(band.start, in.t0, in.t1), t1 = std::clamp(band.end, in.t0, in.t1);
+    if (t1 <= t0) continue;
+    const glm::dvec3 p0 = m.at(t0, in.lo), p1 = m.at(t1, in.hi);
+    view.surfaces.push_back(rectangle({0.5 * (p0.x + p1.x), 0.5 * (p0.y + p1.y), -0.5},
+                                      {0.5 * (p1.x - p0.x), 0, 0}, {0, 0.5 * (p1.y - p0.y), 0}, kSlowBandColor));
+    const glm::vec2 at = m.pixel(m.at(t0, in.lo));
+    view.texts.push_back({band.label, {at.x + 0.2f * font_px, at.y + 0.3f * font_px}, font_px, {0.2f, 0.3f, 0.6f, 1.0f}});
+  }
   // Frame, zero line, playhead.
   line({m.at(in.t0, in.lo), m.at(in.t1, in.lo), m.at(in.t1, in.hi), m.at(in.t0, in.hi), m.at(in.t0, in.lo)}, ink, 1.0f);
   if (in.lo < 0 && in.hi > 0) line({m.at(in.t0, 0), m.at(in.t1, 0)}, faint, 1.0f);

@@ -10,6 +10,9 @@
 
 namespace tumble::viz {
 
+/// Tint of the slowed stretches (translucent, lit face-on).
+inline constexpr Color kSlowBandColor{0.35f, 0.55f, 0.95f, 0.22f};
+
 struct Series {
   std::string name;
   std::vector<double> values;  ///< one per sample of StripChartInput::times
@@ -23,6 +26,12 @@ struct StripChartInput {
   double lo = -1, hi = 1;      ///< value axis (the caller's unit)
   double playhead = 0;         ///< s
   std::string title;
+  /// Stretches (s) played at another speed: shaded over the plot's height, `label` ("×1/8") on top.
+  struct Band {
+    double start, end;
+    std::string label;
+  };
+  std::vector<Band> shaded;
 };
 
 /// Fills `view` (camera included) for a viewport of `width_px` × `height_px`.

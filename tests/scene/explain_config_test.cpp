@@ -67,7 +67,7 @@ labels = true
 overlay = ["time", "energy"]
 [title]
 text = "Flip"
-duration = 2
+hold = 2
 [[views]]
 kind = "world"
 viewport = [0, 0, 0.5, 1]
@@ -98,7 +98,7 @@ time_scale = 0.1
   EXPECT_EQ(e.captions[0].text, "spin");
   ASSERT_EQ(e.slow_motion.size(), 1u);
   EXPECT_EQ(e.title.text, "Flip");
-  EXPECT_EQ(frame_clock(s, 30).count(), 1 + 30 * (1.0 / 0.5 + 0.5 / 0.1 + 0.5 / 0.5));
+  EXPECT_EQ(frame_clock(s, 30).count(), 1 + 30 * (2 + 1.0 / 0.5 + 0.5 / 0.1 + 0.5 / 0.5));  // hold, then the run
 }
 
 TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {
@@ -113,7 +113,7 @@ TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {
             std::string::npos);
   EXPECT_NE(error_of("[output]\ntime_scale = 0\n").find("output.time_scale"), std::string::npos);
   EXPECT_NE(error_of("[draw]\noverlay = [\"time\", \"fps\"]\n").find("draw.overlay"), std::string::npos);
-  EXPECT_NE(error_of("[title]\nduration = 2\n").find("title.text"), std::string::npos);
+  EXPECT_NE(error_of("[title]\nhold = 2\n").find("title.text"), std::string::npos);
 }
 
 }  // namespace
