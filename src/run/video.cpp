@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
+#include "render/worker_threads.hpp"
 
 namespace tumble::run {
 
@@ -131,19 +132,64 @@ std::string verify_video(const std::filesystem::path& video, long frames, int fp
   return "";
 }
 
-std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp) {
-  if (format == VideoFormat::mp4)
+VideoEncoder x264_encoder(int cores) {
+  // scripts/video_presets.sh's table (README, "Video encode"): at CRF 18 the
+  // fastest preset whose PSNR and SSIM against the frames are at least those
+  // of x264's default (medium): ultrafast, at a quarter of medium's CPU time
+  // and about twice its file size. One thread on 2 cores, where tumble draws
+  // on the other (a second x264 thread bought nothing); else x264's own count.
+  return {"libx264", "ultrafast", cores <= 2 ? 1 : 0};
+}
+
+VideoEncoder default_video_encoder() { return x264_encoder(render::usable_cores()); }
+
+namespace {
+
+/// Whether ffmpeg can open h264_nvenc here: listed is not enough (Debian's
+/// ffmpeg lists it on every machine; it needs NVIDIA's libnvidia-encode).
+bool nvenc_works() {
+  const std::vector<std::string> args = {"ffmpeg", "-nostdin", "-loglevel", "quiet", "-f", "lavfi", "-i",
+                                         "color=size=256x256:rate=30:duration=0.5", "-frames:v", "16", "-c:v",
+                                         "h264_nvenc", "-f", "null", "-"};
+  int stopped_by = 0;
+  return run(args, {}, {}, stopped_by).code == 0;
+}
+
+}  // namespace
+
+VideoEncoder choose_video_encoder(const std::string& gl_vendor, int cores) {
+  if (gl_vendor.find("NVIDIA") != std::string::npos && ffmpeg_available() && nvenc_works())
+    return {"h264_nvenc", "p4", 0};
+  return x264_encoder(cores);
+}
+
+std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp,
+                                            const VideoEncoder& encoder) {
+  if (format == VideoFormat::mp4) {
     // yuv420p needs even sizes; +faststart puts the index first for streaming.
-    return {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf",
-            std::to_string(crf), "-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", "-f",
-            "mp4", tmp.string()};
+    std::vector<std::string> args = {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", encoder.codec, "-pix_fmt",
+                                     "yuv420p"};
+    if (encoder.codec == "h264_nvenc") {
+      // NVENC's constant-quality mode at the CRF's number: not the same
+      // scale as x264's CRF, close at 18 (unmeasured here: no NVIDIA GPU).
+      for (const char* a : {"-rc", "vbr", "-b:v", "0"}) args.emplace_back(a);
+      args.insert(args.end(), {"-cq", std::to_string(crf)});
+    } else {
+      args.insert(args.end(), {"-crf", std::to_string(crf), "-threads", std::to_string(encoder.threads)});
+    }
+    if (!encoder.preset.empty()) args.insert(args.end(), {"-preset", encoder.preset});
+    for (const char* a : {"-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", "-f", "mp4"})
+      args.emplace_back(a);
+    args.push_back(tmp.string());
+    return args;
+  }
   return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-fflags",
           "+bitexact", "-f", "gif", tmp.string()};
 }
 
-
 VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoFormat format, int crf,
-                         const std::filesystem::path& output, const StopPoll& stop, const EncodeProgress& progress) {
+                         const std::filesystem::path& output, const StopPoll& stop, const EncodeProgress& progress,
+                         const VideoEncoder& encoder) {
   if (format == VideoFormat::none) return {VideoResult::not_wanted, 0, {}};
   if (!ffmpeg_available())
     return {VideoResult::missing_ffmpeg, 0, std::string(kMissingFfmpeg) + "; frames were written, no video"};
@@ -151,7 +197,10 @@ VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-nostats", "-progress",
                                    "pipe:1", "-framerate", std::to_string(fps), "-i",
                                    escape_pattern(frame_dir.string()) + "/" + io::kFramePattern};
-  for (std::string& a : ffmpeg_output_args(format, crf, tmp)) args.push_back(std::move(a));
+  // Alone on the machine (the frames are drawn already): all cores.
+  VideoEncoder alone = encoder;
+  alone.threads = 0;
+  for (std::string& a : ffmpeg_output_args(format, crf, tmp, alone)) args.push_back(std::move(a));
   int stopped_by = 0;
   const ChildEnd end = run(args, stop, progress, stopped_by);
   if (stopped_by == 0 && stop) stopped_by = stop();

@@ -13,7 +13,8 @@
 
 namespace tumble::run {
 
-VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output)
+VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output,
+                         const VideoEncoder& encoder)
     : output_(std::move(output)), tmp_(io::temp_path_for(output_)), fps_(fps), format_(format) {
   // A dead ffmpeg must show as EPIPE from write(), not kill tumble by SIGPIPE.
   struct sigaction ignore {};
@@ -27,7 +28,7 @@ VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-nostats", "-f", "rawvideo",
                                    "-pix_fmt", "rgb24", "-s", std::to_string(width) + "x" + std::to_string(height),
                                    "-framerate", std::to_string(fps), "-i", "pipe:0"};
-  for (std::string& a : ffmpeg_output_args(format, crf, tmp_)) args.push_back(std::move(a));
+  for (std::string& a : ffmpeg_output_args(format, crf, tmp_, encoder)) args.push_back(std::move(a));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -19,7 +19,8 @@ class VideoStream {
  public:
   /// Starts ffmpeg for width × height rgb24 frames at `fps` (frames/s). Check
   /// status() before writing: missing_ffmpeg or failed when it could not start.
-  VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output);
+  VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output,
+              const VideoEncoder& encoder = default_video_encoder());
   ~VideoStream();
   VideoStream(const VideoStream&) = delete;
   VideoStream& operator=(const VideoStream&) = delete;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "run/video.hpp"
 #include "render_fixture.hpp"
 
 namespace {
@@ -39,6 +40,32 @@ class VideoRender : public RobustRender {
     for (const std::string& n : names(out)) EXPECT_EQ(n.find(".tmp"), std::string::npos) << n;
   }
 };
+
+// Issue 23: the measured x264 settings at the CRF, and NVENC only for an
+// NVIDIA GPU whose ffmpeg can open it (a fake ffmpeg answers the trial).
+TEST_F(VideoRender, EncoderIsChosenByGpuAndTrialEncode) {
+  using tumble::run::choose_video_encoder;
+  auto args = [](const tumble::run::VideoEncoder& e) {
+    std::string s;
+    for (const std::string& a : tumble::run::ffmpeg_output_args(tumble::scene::VideoFormat::mp4, 18, "out.tmp", e)) s += a + " ";
+    return s;
+  };
+  const tumble::run::VideoEncoder x264 = tumble::run::x264_encoder(2);
+  EXPECT_NE(args(x264).find("-c:v libx264 -pix_fmt yuv420p -crf 18 -threads 1 -preset ultrafast"), std::string::npos) << args(x264);
+  EXPECT_EQ(tumble::run::x264_encoder(16).threads, 0);
+  const std::string old_path = std::getenv("PATH");
+  ::setenv("PATH", fake_ffmpeg("exit 0").c_str(), 1);
+  const tumble::run::VideoEncoder nvidia = choose_video_encoder("NVIDIA Corporation", 16);
+  const tumble::run::VideoEncoder mesa = choose_video_encoder("Mesa/X.org", 16);
+  ::setenv("PATH", fake_ffmpeg("exit 1").c_str(), 1);
+  const tumble::run::VideoEncoder broken = choose_video_encoder("NVIDIA Corporation", 16);
+  ::setenv("PATH", old_path.c_str(), 1);
+  EXPECT_EQ(nvidia.codec, "h264_nvenc");
+  EXPECT_NE(args(nvidia).find("-c:v h264_nvenc"), std::string::npos) << args(nvidia);
+  EXPECT_NE(args(nvidia).find("-cq 18"), std::string::npos) << args(nvidia);
+  EXPECT_EQ(mesa.codec, "libx264");
+  EXPECT_EQ(broken.codec, "libx264") << "NVENC listed but failing its trial must fall back";
+}
 
 TEST_F(VideoRender, InterruptedEncodeExits130ThenResumeMakesTheVideo) {
   TUMBLE_NEED_GL();
