@@ -64,3 +64,6 @@ scene_mutant "explained: sphere view moved 1%" 's/^viewport = \[0.5, 0.0, 0.5, 0
 scene_mutant "explained: captions' text edited" '/^text = "/s/ the / a /'
 scene_mutant "explained: time_scale 0.5 -> 0.55" 's/^time_scale = 0.5 /time_scale = 0.55 /'
 
+# Issue 22: the keys turned off, and the momentum sphere's camera fixed instead of following Π.
+scene_mutant "explained: keys off" '/^\[draw\]$/a key = false'
+scene_mutant "explained: sphere camera fixed" '/^viewport = \[0.5, 0.0, 0.5, 0.6\]$/a camera = { follow = false, azimuth = 132, elevation = 34 }'

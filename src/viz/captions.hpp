@@ -26,14 +26,17 @@ float fade_alpha(double tau, double start, double end, double fade = 0.4);
 /// width × height viewport, as the renderer projects it; false when behind the camera.
 bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out);
 
-/// A caption line centred near the bottom of a frame_w × frame_h frame.
+/// A caption centred near the bottom of a frame_w × frame_h frame, on a
+/// backdrop: one item per line ('\n' breaks and wrapping at 90 % of the width).
+std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h);
+/// Its first line (with the backdrop of them all).
 TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h);
 
-/// Title (and subtitle) centred in the frame, with opacity `alpha`.
+/// Title (and subtitle) centred in the frame on a band across it, with opacity `alpha`.
 std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
                                   int frame_h);
 
-/// Approximate width of `text` at `size_px` (the UI font's average advance), px.
+/// Width of `text` at `size_px` (viz::text_width), px.
 float approx_text_width(const std::string& text, float size_px);
 
 }  // namespace tumble::viz

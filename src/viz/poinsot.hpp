@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "viz/draw_list.hpp"
+#include "viz/sphere_camera.hpp"
 
 namespace tumble::viz {
 
@@ -37,9 +38,16 @@ struct PoinsotInput {
   std::vector<Eigen::Vector3d> omega_principal_history;  ///< ω in the principal frame, oldest first (polhode)
   std::vector<Eigen::Vector3d> omega_world_history;      ///< ω in the world, oldest first (herpolhode)
   std::string title;
+  /// Azimuth (in the plane, from its first basis vector), elevation (above the
+  /// plane's far side) and distance (largest semi-axes) of the camera; follow is unused.
+  SphereCameraSettings camera = {16.4, 23.3, 4.05, false, 0, 0};
+  bool key = true;                          ///< the key of colours and meanings
+  float width_px = 640, height_px = 360;    ///< the viewport
+  int frame_h = 360;                        ///< the frame's height (text sizes)
 };
 
 /// Fills `view` (camera included); ω-space scaled so the ellipsoid's largest semi-axis is 1.
-void build_poinsot(View& view, const PoinsotInput& in, float font_px);
+/// ω's tip is the point named "contact_point".
+void build_poinsot(View& view, const PoinsotInput& in);
 
 }  // namespace tumble::viz

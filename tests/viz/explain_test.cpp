@@ -66,7 +66,7 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
     in.omega_world_history.push_back(omega_world(b.model, s));
   }
   View v;
-  build_poinsot(v, in, 14.0f);
+  build_poinsot(v, in);
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
   const double scale = 1.0 / p.semi_axes.maxCoeff();
   // The dot sits on the contact point; the herpolhode (last polyline) lies in the plane.
@@ -89,7 +89,7 @@ TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
   for (const BodyState& s : b.run(80, 0.05)) {
     MomentumSphereInput in{I, momentum_body(s), {}, two_E, ""};
     View v;
-    build_momentum_sphere(v, in, 14.0f);
+    build_momentum_sphere(v, in);
     const glm::dvec3 d = v.points.back().position;  // in units of |L|
     const Eigen::Vector3d pi = L * Eigen::Vector3d(d.x, d.y, d.z);
     EXPECT_NEAR(pi.norm() / L, 1.0, 1e-9);
@@ -127,13 +127,17 @@ TEST(MomentumSphere, SeparatrixPassesThroughTheIntermediateAxis) {
     }
     EXPECT_TRUE(plus && minus);
   }
-  // The view draws it: a red polyline through +e2 (units of |L|).
+  // The view draws it: a polyline through +e2 (units of |L|) in the separatrix's colour, not e1's.
   View v;
-  build_momentum_sphere(v, {I, Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""}, 14.0f);
+  build_momentum_sphere(v, {I, Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""});
   int through = 0;
   for (const PolylineItem& p : v.polylines)
-    if (p.color.r > 0.8f && p.color.g < 0.2f)
-      for (const glm::dvec3& x : p.points) through += glm::length(x - glm::dvec3(0, 1, 0)) < 1e-12;
+    if (p.name == "separatrix")
+      for (const glm::dvec3& x : p.points) {
+        through += glm::length(x - glm::dvec3(0, 1, 0)) < 1e-12;
+        EXPECT_EQ(p.color, color_of(Meaning::separatrix, p.color.a));
+        EXPECT_NE(glm::vec3(p.color), glm::vec3(kAxisColors[0]));
+      }
   EXPECT_EQ(through, 2);
 }
 
