@@ -165,9 +165,9 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
                                              0.75f * b.color.cast<float>().z(), 1.0f));
     const scene::DrawConfig& d = scene_.render.draw;
     const viz::DrawOptions opt{d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
-    // Below the overlay line, which world_view puts at the top-left under the title.
-    const float below = top + (scene_.render.draw.overlay ? 12.0f + 1.4f * fb_.font_px() : 0.0f);
-    viz::add_key_top_right(v, viz::bodies_key(opt, bodies), w, below, viz::text_px(viz::TextRole::key, height_));
+    // Bottom-right, where a body framed in the middle leaves room (the overlay line is top-left).
+    viz::add_key_bottom_right(v, viz::bodies_key(opt, bodies), w, static_cast<float>(slot.height_px), top,
+                              viz::text_px(viz::TextRole::key, height_));
   }
   return v;
 }

@@ -93,4 +93,12 @@ Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float wi
   return add_key(view, entries, {std::max(margin, width_px - size.x - margin), top_px + margin}, size_px);
 }
 
+Box add_key_bottom_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px,
+                         float top_px, float size_px) {
+  const glm::vec2 size = key_size(entries, size_px);
+  const float margin = 0.5f * size_px;
+  return add_key(view, entries,
+                 {std::max(margin, width_px - size.x - margin), std::max(top_px, height_px - size.y - margin)}, size_px);
+}
+
 }  // namespace tumble::viz

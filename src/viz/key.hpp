@@ -41,4 +41,9 @@ Box add_key(View& view, const std::vector<KeyEntry>& entries, glm::vec2 top_left
 /// below its top, and returns its box.
 Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float top_px, float size_px);
 
+/// Adds the key at the bottom-right corner of a `width_px` × `height_px` view,
+/// never above `top_px`, and returns its box.
+Box add_key_bottom_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px,
+                         float top_px, float size_px);
+
 }  // namespace tumble::viz

@@ -107,7 +107,8 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
   view.points.push_back({g(p.contact * scale), 0.035, color_of(Meaning::omega), "contact_point"});
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
-  if (in.key) add_key_top_right(view, poinsot_key(), in.width_px, top, text_px(TextRole::key, in.frame_h));
+  // Bottom-right, over the plane's near edge: the ellipsoid stands in the middle.
+  if (in.key) add_key_bottom_right(view, poinsot_key(), in.width_px, in.height_px, top, text_px(TextRole::key, in.frame_h));
 }
 
 }  // namespace tumble::viz

@@ -9,6 +9,36 @@
 
 namespace tumble::viz {
 
+namespace {
+
+// The chart's head: the title top-left, the series' key (names in their
+// colours) top-right, or below the title when they do not fit side by side.
+struct Head {
+  View title;           // the title's text
+  float key_y = 0;      // top of the key row, px
+  float key_px = 0;     // key text size
+  float key_w = 0;      // key row width, px
+  float top_px = 0;     // where the plot may start
+};
+
+Head head_layout(const StripChartInput& in, int width_px, float font_px) {
+  Head h;
+  const float f = font_px, w = static_cast<float>(width_px);
+  const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h) : f;
+  h.key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h) : f;
+  for (const Series& s : in.series) h.key_w += text_width(s.name, h.key_px) + 1.2f * h.key_px;
+  const float title_bottom = in.frame_h > 0 ? add_view_title(h.title, in.title, w - h.key_w, in.frame_h)
+                                            : (in.title.empty() ? 0.0f : 1.5f * f);
+  const float title_w = h.title.texts.empty() ? 0.0f : text_width(h.title.texts[0].text, title_px);
+  const bool beside = h.key_w + title_w + 2 * title_px < w;
+  h.key_y = beside ? 0.35f * title_px : title_bottom;
+  // The plot starts below both, with room for the top value tick (half a tick above it).
+  h.top_px = std::max(title_bottom, h.key_y + 1.3f * h.key_px) + 0.7f * f;
+  return h;
+}
+
+}  // namespace
+
 ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float font_px)
     : t0_(in.t0), t1_(in.t1 > in.t0 ? in.t1 : in.t0 + 1), lo_(in.lo), hi_(in.hi > in.lo ? in.hi : in.lo + 1),
       aspect_(static_cast<double>(width_px) / std::max(height_px, 1)), w_(width_px), h_(height_px) {
@@ -17,7 +47,7 @@ ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float
   x0_ = -aspect_ + 5.5 * font_px * px;
   x1_ = aspect_ - 1.2 * font_px * px;
   y0_ = -1 + 2.4 * font_px * px;
-  y1_ = 1 - (in.top_px > 0 ? in.top_px : 2.6 * font_px) * px;
+  y1_ = 1 - (in.top_px > 0 ? in.top_px : head_layout(in, width_px, static_cast<float>(font_px)).top_px) * px;
 }
 
 glm::dvec3 ChartMap::at(double t, double v) const {
@@ -38,22 +68,9 @@ std::string num(double v) {
 
 }  // namespace
 
-void build_strip_chart(View& view, const StripChartInput& in_, int width_px, int height_px, float font_px) {
-  StripChartInput in = in_;
+void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px) {
+  const Head head = head_layout(in, width_px, font_px);
   const float f = font_px, w = static_cast<float>(width_px);
-  const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h) : f;
-  const float key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h) : f;
-  // The key: each series' name in its colour, one row; beside the title or below it.
-  float key_w = 0;
-  for (const Series& s : in.series) key_w += text_width(s.name, key_px) + 1.2f * key_px;
-  View head;
-  const float title_bottom = in.frame_h > 0 ? add_view_title(head, in.title, w - key_w, in.frame_h)
-                                            : (in.title.empty() ? 0.0f : 1.5f * f);
-  const bool beside = key_w + (in.title.empty() ? 0.0f : text_width(head.texts.empty() ? in.title : head.texts[0].text, title_px)) +
-                          2 * title_px < w;
-  const float key_y = beside ? 0.35f * title_px : title_bottom;
-  // The plot starts below both, with room for the top value tick (half a tick above it).
-  in.top_px = std::max(title_bottom, key_y + 1.3f * key_px) + 0.7f * f;
   const ChartMap m(in, width_px, height_px, font_px);
   view.name = "plot";
   view.camera = Camera{};
@@ -93,14 +110,14 @@ void build_strip_chart(View& view, const StripChartInput& in_, int width_px, int
   const std::string t1 = num(in.t1) + " s";
   text(num(in.t0) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
   text(t1, {bottom_right.x - text_width(t1, f), bottom_left.y + 0.3f * f}, ink);
-  for (TextItem& t : head.texts) view.texts.push_back(std::move(t));
+  for (const TextItem& t : head.title.texts) view.texts.push_back(t);
   if (in.frame_h == 0 && !in.title.empty()) text(in.title, {top_left.x, 0.3f * f}, ink);
-  float x = w - key_w;
+  float x = w - head.key_w;
   for (const Series& s : in.series) {
-    TextItem k{s.name, {x, key_y}, key_px, s.color, "key"};
+    TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};
     k.key = true;
     view.texts.push_back(std::move(k));
-    x += text_width(s.name, key_px) + 1.2f * key_px;
+    x += text_width(s.name, head.key_px) + 1.2f * head.key_px;
   }
 }
 
