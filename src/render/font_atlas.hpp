@@ -49,7 +49,7 @@ class FontAtlas {
   };
   const Glyph* find(char32_t c) const;
 
-  int width_ = 2048, height_ = 1024;
+  int width_ = 1024, height_ = 2048;  // the first 1024 rows as before issue 22: the same glyph texels
   glm::vec2 solid_uv_{0};
   float bake_px_;
   float ascent_px_ = 0, line_px_ = 0;  // at bake size
