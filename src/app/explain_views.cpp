@@ -165,9 +165,22 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
                                              0.75f * b.color.cast<float>().z(), 1.0f));
     const scene::DrawConfig& d = scene_.render.draw;
     const viz::DrawOptions opt{d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
-    // Bottom-right, where a body framed in the middle leaves room (the overlay line is top-left).
-    viz::add_key_bottom_right(v, viz::bodies_key(opt, bodies), w, static_cast<float>(slot.height_px), top,
-                              viz::text_px(viz::TextRole::key, height_));
+    // In a corner clear of the bodies on screen and of the view's text.
+    const float h = static_cast<float>(slot.height_px);
+    std::vector<viz::Box> avoid;
+    for (const viz::TextItem& t : v.texts) avoid.push_back(viz::text_box(t));
+    if (kk >= 0)
+      for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+        const glm::dvec3 c = to_glm(run.frames[static_cast<std::size_t>(kk)][b].c);
+        const double r = viz::box_radius(scene_.bodies[b].model);
+        glm::vec2 p0, p1;
+        if (!viz::project_to_viewport(v.camera, w, h, c, p0) ||
+            !viz::project_to_viewport(v.camera, w, h, c + r * glm::normalize(v.camera.up), p1))
+          continue;
+        const float rp = glm::length(p1 - p0);
+        avoid.push_back({p0.x - rp, p0.y - rp, p0.x + rp, p0.y + rp});
+      }
+    viz::add_key_clear(v, viz::bodies_key(opt, bodies), w, h, top, viz::text_px(viz::TextRole::key, height_), avoid);
   }
   return v;
 }

@@ -101,4 +101,25 @@ Box add_key_bottom_right(View& view, const std::vector<KeyEntry>& entries, float
                  {std::max(margin, width_px - size.x - margin), std::max(top_px, height_px - size.y - margin)}, size_px);
 }
 
+Box add_key_clear(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px, float top_px,
+                  float size_px, const std::vector<Box>& avoid) {
+  const glm::vec2 size = key_size(entries, size_px);
+  const float m = 0.5f * size_px;
+  const float right = std::max(m, width_px - size.x - m), bottom = std::max(top_px + m, height_px - size.y - m);
+  const glm::vec2 corners[] = {{right, bottom}, {m, bottom}, {right, top_px + m}};
+  glm::vec2 best = corners[0];
+  float least = 1e30f;
+  for (const glm::vec2& c : corners) {
+    const Box b{c.x, c.y, c.x + size.x, c.y + size.y};
+    float covered = 0;
+    for (const Box& o : avoid) {
+      const float w = std::min(b.x1, o.x1) - std::max(b.x0, o.x0), h = std::min(b.y1, o.y1) - std::max(b.y0, o.y0);
+      if (w > 0 && h > 0) covered += w * h;
+    }
+    if (covered < least) least = covered, best = c;
+    if (covered == 0) break;
+  }
+  return add_key(view, entries, best, size_px);
+}
+
 }  // namespace tumble::viz

@@ -46,4 +46,11 @@ Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float wi
 Box add_key_bottom_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px,
                          float top_px, float size_px);
 
+/// Adds the key in the first corner of a `width_px` × `height_px` view
+/// (bottom-right, bottom-left, top-right, each below `top_px`) where it covers
+/// none of the `avoid` boxes (the bodies on screen, the view's text), else
+/// where it covers the least of them; returns its box.
+Box add_key_clear(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px, float top_px,
+                  float size_px, const std::vector<Box>& avoid);
+
 }  // namespace tumble::viz
