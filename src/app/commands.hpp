@@ -10,6 +10,10 @@
 #include "io/trajectory_csv.hpp"
 #include "scene/scene.hpp"
 
+namespace tumble::render {
+enum class GlBackend;
+}
+
 namespace tumble::app {
 
 /// Exit codes (documented in scenes/README.md and the README).
@@ -24,6 +28,10 @@ void add_assemble_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_golden_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
+
+/// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
+/// naming the option for an unknown name, so it fails before any work.
+render::GlBackend parse_backend_option(const std::string& gl);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/render_job.hpp"
+#include "run/render_job.hpp"
 #include "render/layout_report.hpp"
 #include "scene/scene.hpp"
 
@@ -52,9 +52,9 @@ const std::map<std::string, std::map<int, Layouts>>& all_layouts() {
       const tumble::scene::Scene s = tumble::scene::load_scene(p);
       const double fps = s.render.output.fps;
       const long count = tumble::scene::frame_clock(s, fps).count();
-      const std::vector<tumble::app::Run> runs = tumble::app::simulate_runs(s, count, fps);
+      const std::vector<tumble::run::Run> runs = tumble::run::simulate_runs(s, count, fps);
       for (const Size& z : kSizes) {
-        const tumble::app::FrameBuilder fb(s, runs, fps, z.w, z.h);
+        const tumble::run::FrameBuilder fb(s, runs, fps, z.w, z.h);
         Layouts& l = out[p.stem().string()][z.h];
         for (long k = 0; k < count; ++k) l.frames.push_back(tumble::render::layout_items(fb.build(k), z.w, z.h));
       }

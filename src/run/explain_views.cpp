@@ -1,4 +1,4 @@
-#include "app/explain_views.hpp"
+#include "run/explain_views.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "viz/strip_chart.hpp"
 #include "viz/text_layout.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 namespace {
 
@@ -273,4 +273,4 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   }
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run
