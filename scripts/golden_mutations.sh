@@ -68,3 +68,7 @@ scene_mutant "explained: time_scale 0.5 -> 0.55" 's/^time_scale = 0.5 /time_scal
 scene_mutant "explained: flip caption 0.3 s late" 's/^start = "flip 1 - 0.1"/start = "flip 1 + 0.2"/'
 scene_mutant "explained: flip caption on flip 2" '/^start = "flip 1 - 0.1"/{s//start = "flip 2 - 0.1"/;n;s/^end = "flip 1 + 0.5"/end = "flip 2 + 0.2"/}'
 scene_mutant "explained: title hold 2.5 -> 2.4 s" 's/^hold = 2.5 /hold = 2.4 /'
+
+# Issue 22: the keys turned off, and the momentum sphere's camera fixed instead of following Π.
+scene_mutant "explained: keys off" '/^\[draw\]$/a key = false'
+scene_mutant "explained: sphere camera fixed" '/^viewport = \[0.5, 0.0, 0.5, 0.6\]$/a camera = { follow = false, azimuth = 132, elevation = 34 }'

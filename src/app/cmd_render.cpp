@@ -1,14 +1,19 @@
 // `tumble render SCENE`: frames (PNG, atomic), manifest.json and a video.
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
+#include "io/atomic_file.hpp"
 #include "render/gl_context.hpp"
 #include "render/worker_threads.hpp"
+#include "render/layout_report.hpp"
 #include "run/render_folder.hpp"
+#include "run/render_job.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {
@@ -18,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderOptions {
-  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png", aa;
+  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png", aa, layout;
   std::optional<int> width, height, msaa, gpu;
   std::optional<double> fps;
   int jobs = 0;  // 0: TUMBLE_JOBS, else the cores this process may use
@@ -90,7 +95,26 @@ RenderPlan plan_render(const RenderOptions& o) {
   return {std::move(s), backend, gpu, jobs};
 }
 
+// --layout FILE: the layout report of the asked frames, no pixels (no GL, no output folder).
+int run_layout(const RenderOptions& o) {
+  const scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  const scene::OutputConfig& out = s.render.output;
+  const long count = scene::frame_clock(s, out.fps).count();
+  const auto [first, last] =
+      o.frames.empty() ? std::pair<long, long>{0, count - 1} : run::parse_frame_range(o.frames, count);
+  const std::vector<run::Run> runs = run::simulate_runs(s, count, out.fps);
+  const run::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
+  std::ostringstream text;
+  for (long k = first; k <= last; ++k)
+    render::write_layout(text, k, render::layout_items(builder.build(k), out.width, out.height));
+  io::atomic_write_file(o.layout, text.str());
+  std::cout << "wrote the layout of frames " << first << ".." << last << " of " << count << " (" << out.width << "x"
+            << out.height << ") to " << o.layout << "\n";
+  return kOk;
+}
+
 int run_render(const RenderOptions& o) {
+  if (!o.layout.empty()) return run_layout(o);
   const RenderPlan plan = plan_render(o);
   const run::RenderRequest req{plan.scene,
                                o.out_dir.empty() ? fs::path("out") / plan.scene.name : fs::path(o.out_dir),
@@ -128,6 +152,9 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--msaa", o->msaa,
                   "MSAA samples 0, 2 or 4 (overrides --quality; alone it also sets aa: msaa, or none for 0)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
+  cmd->add_option("--layout", o->layout,
+                  "Write only the layout report, JSON Lines (frame, view, name, kind, box, visible per drawn item), "
+                  "to this file: no pixels, no output folder");
   cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
   cmd->add_option("--gpu", o->gpu,
                   "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "

@@ -376,14 +376,8 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
     font_.layout(label, {lm.pad_px, lm.top_px}, lm.size_px, {0.13f, 0.14f, 0.18f, 0.95f}, quads);
   }
   for (const viz::TextItem& t : items) {
-    // Shrink a line that would run past the viewport's right edge (keeping the
-    // left margin, up to 12 px, on the right too) rather than clip it: small
-    // frames and comparison grids keep their whole overlay and legend, and a
-    // label in the middle of a view keeps its size.
-    const float left = std::max(t.position_px.x, 0.0f);
-    const float room = static_cast<float>(rect.width) - left - std::min(left, 12.0f);
-    const float width = font_.measure(t.text, t.size_px).x;
-    const float size = width > room && room > 0 ? t.size_px * room / width : t.size_px;
+    if (t.backdrop.a > 0) font_.rect(t.backdrop_px, t.backdrop, quads);
+    const float size = fitted_text_px(t, static_cast<float>(rect.width), font_.measure(t.text, t.size_px).x);
     font_.layout(t.text, t.position_px, size, t.color, quads);
   }
   if (quads.empty()) return;

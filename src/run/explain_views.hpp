@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "run/render_job.hpp"
+#include "viz/sphere_camera.hpp"
 
 namespace tumble::run {
 
@@ -23,10 +24,13 @@ class ExplainViews {
   struct Slot {
     int width_px = 0, height_px = 0;
     std::size_t body = 0;
-    viz::Camera camera;         // world / body_frame
+    viz::Camera camera;         // world / body_frame (at t = 0)
     double lo = -1, hi = 1;     // plot: value range over the whole run
+    viz::SphereCameraSettings sphere;     // momentum_sphere, poinsot
+    std::vector<viz::SpherePose> track;   // momentum_sphere: the camera at each path sample
   };
   viz::View view_at(std::size_t i, long k) const;
+  viz::View bodies_view(std::size_t i, long k) const;  // world, body_frame
   const FrameBuilder& fb_;
   const scene::Scene& scene_;
   const std::vector<Run>& runs_;

@@ -10,6 +10,7 @@
 #include "core/propagator.hpp"
 #include "run/explain_views.hpp"
 #include "viz/captions.hpp"
+#include "viz/text_layout.hpp"
 #include "viz/particle_set.hpp"
 
 namespace tumble::run {
@@ -136,7 +137,8 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, int w
     glm::vec2 px;
     if (!viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;
     const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
-    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f}});
+    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+                       "label:" + b.model->name});
   }
 }
 
@@ -193,7 +195,9 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
   const int n = std::max<int>(1, static_cast<int>(runs.size()));
   columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
   rows_ = (n + columns_ - 1) / columns_;
-  font_px_ = std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f);
+  // Explanatory views: the label size of the text roles (in proportion to the frame).
+  font_px_ = s.render.explain.views.empty() ? std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f)
+                                            : viz::text_px(viz::TextRole::label, height);
   const scene::DrawConfig& d = s.render.draw;
   draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
   for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, d.particles));

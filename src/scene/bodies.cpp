@@ -13,10 +13,12 @@ namespace tumble::scene::detail {
 
 namespace {
 
-// Default body colours (linear RGB), cycled by body index.
+// Default body colours (linear RGB), cycled by body index: after the first
+// (kept for the goldens), muted tones apart from the meanings' colours of
+// docs/colours.md (no L orange, ω purple or axis green).
 constexpr std::array<std::array<double, 3>, 6> kPalette = {{
-    {0.25, 0.45, 0.80}, {0.85, 0.45, 0.15}, {0.30, 0.65, 0.35},
-    {0.60, 0.35, 0.70}, {0.80, 0.70, 0.20}, {0.40, 0.40, 0.45}}};
+    {0.25, 0.45, 0.80}, {0.66, 0.60, 0.50}, {0.50, 0.62, 0.56},
+    {0.62, 0.52, 0.60}, {0.56, 0.52, 0.40}, {0.40, 0.40, 0.45}}};
 
 bool valid_name(const std::string& n) {
   if (n.empty() || n.size() > 64) return false;

@@ -34,6 +34,14 @@ struct TitleCard {
 
 enum class ViewKind { world, body_frame, momentum_sphere, plot, poinsot };
 
+/// A view's `camera = { azimuth, elevation, distance, follow }` (body_frame,
+/// momentum_sphere, poinsot); unset fields keep the view kind's defaults.
+struct ViewCamera {
+  std::optional<double> azimuth_deg, elevation_deg;  ///< degrees
+  std::optional<double> distance;  ///< body_frame: body sizes; momentum_sphere: |L|; poinsot: largest semi-axes
+  std::optional<bool> follow;      ///< momentum_sphere: follow Π (default true); body_frame: turn with the body
+};
+
 /// One `[[views]]` table.
 struct ViewConfig {
   ViewKind kind = ViewKind::world;
@@ -42,6 +50,7 @@ struct ViewConfig {
   std::string body;                 ///< body name; empty = the first body
   std::vector<std::string> series;  ///< plot: wbx wby wbz |w| energy_error axis1_L axis2_L axis3_L
   std::string title;                ///< drawn in the view's corner
+  ViewCamera camera;
 };
 
 /// Names of the plot series, in the order of `plot_series_names()`.
@@ -55,6 +64,7 @@ struct ExplainConfig {
   TitleCard title;
   std::vector<ViewConfig> views;   ///< empty: the classic single world view (or [compare] grid)
   bool labels = false;             ///< [draw] labels: body names next to the bodies
+  bool key = true;                 ///< [draw] key: each view's key of colours and meanings
 };
 
 }  // namespace tumble::scene

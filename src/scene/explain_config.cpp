@@ -8,8 +8,8 @@
 namespace tumble::scene {
 
 const std::vector<std::string>& plot_series_names() {
-  static const std::vector<std::string> names = {"wbx", "wby", "wbz", "|w|", "energy_error", "axis1_L", "axis2_L",
-                                                 "axis3_L"};
+  static const std::vector<std::string> names = {"w1",           "w2",      "w3",      "wbx",    "wby", "wbz", "|w|",
+                                                 "energy_error", "axis1_L", "axis2_L", "axis3_L"};
   return names;
 }
 
@@ -62,10 +62,24 @@ void check_body(TableReader& r, const LoadContext& ctx, const std::string& name)
   r.error("body", msg);
 }
 
+void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
+  auto t = r.subtable("camera");
+  if (!t) return;
+  if (v.kind == ViewKind::world || v.kind == ViewKind::plot) {
+    r.error("camera", "only body_frame, momentum_sphere and poinsot views take a camera (a world view uses [camera])");
+    return;
+  }
+  TableReader c(*t, r.key_path("camera"), ctx.diag, {"azimuth", "elevation", "distance", "follow"});
+  v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
+  v.camera.elevation_deg = c.number("elevation", Range::closed(-89, 89));
+  v.camera.distance = c.number("distance", Range::closed(1.5, 100));
+  v.camera.follow = c.boolean("follow");
+}
+
 void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("views", i), ctx.diag, {"kind", "viewport", "body", "series", "title"});
+    TableReader r(*list[i], indexed("views", i), ctx.diag, {"kind", "viewport", "body", "series", "title", "camera"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -85,11 +99,13 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
       for (const std::string& name : *series) {
         const auto& all = plot_series_names();
         if (std::find(all.begin(), all.end(), name) == all.end())
-          r.error("series", "expected names from wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, axis3_L, found " + quote_token(name));
+          r.error("series", "expected names from w1, w2, w3, wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, "
+                            "axis3_L, found " + quote_token(name));
       }
       v.series = *series;
     }
-    if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"wbx", "wby", "wbz"};
+    if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"w1", "w2", "w3"};
+    read_view_camera(r, ctx, v);
     if (v.kind != ViewKind::plot && r.has("series")) r.error("series", "only a plot view has series");
     s.render.explain.views.push_back(std::move(v));
   }

@@ -92,6 +92,7 @@ void read_draw(TableReader& r, Scene& s) {
     d.overlay = r.boolean("overlay").value_or(d.overlay);
   }
   s.render.explain.labels = r.boolean("labels").value_or(false);
+  s.render.explain.key = r.boolean("key").value_or(true);
   d.legend = r.boolean("legend").value_or(d.legend);
 }
 
@@ -135,7 +136,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   }
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
-                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels"});
+                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key"});
     read_draw(r, scene);
   }
   if (auto t = root.subtable("compare")) {

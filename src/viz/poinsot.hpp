@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "viz/draw_list.hpp"
+#include "viz/sphere_camera.hpp"
 
 namespace tumble::viz {
 
@@ -37,22 +38,26 @@ struct PoinsotInput {
   std::vector<Eigen::Vector3d> omega_principal_history;  ///< ω in the principal frame, oldest first (polhode)
   std::vector<Eigen::Vector3d> omega_world_history;      ///< ω in the world, oldest first (herpolhode)
   std::string title;
-  int width_px = 640, height_px = 360;  ///< the viewport, for the names placed next to the curves
+  /// Azimuth (in the plane, from its first basis vector), elevation (above the
+  /// plane's far side) and distance (largest semi-axes) of the camera; follow is
+  /// unused. By default 40° above the plane, so the herpolhode opens up.
+  SphereCameraSettings camera = {16.4, 39.8, 4.69, false, 0, 0};
+  bool key = true;                          ///< the key of colours and meanings
+  float width_px = 640, height_px = 360;    ///< the viewport
+  int frame_h = 360;                        ///< the frame's height (text sizes)
 };
 
-/// Colours of the construction (the axes, L and ω use scene_view's).
-inline constexpr Color kEllipsoidColor{0.45f, 0.58f, 0.90f, 0.32f};   ///< translucent, shaded
-inline constexpr Color kPlaneColor{0.84f, 0.85f, 0.88f, 1.0f};        ///< opaque
-inline constexpr Color kPolhodeColor{0.80f, 0.10f, 0.55f, 1.0f};      ///< magenta: not L's orange
-inline constexpr Color kHerpolhodeColor{0.10f, 0.10f, 0.15f, 1.0f};
+/// The plane's surface: opaque and light, so the palette's curves show on it
+/// (its grid and key swatch use the palette's plane grey).
+inline constexpr Color kPlaneColor{0.84f, 0.85f, 0.88f, 1.0f};
 /// The herpolhode is drawn this far (scaled ω units) off the opaque plane,
 /// towards the ellipsoid, so the plane's depth does not hide it.
 inline constexpr double kHerpolhodeLift = 0.008;
 
 /// Fills `view` (camera included); ω-space scaled so the ellipsoid's largest semi-axis is 1.
-/// The ellipsoid is a shaded translucent surface resting on an opaque plane,
-/// seen from 40° above the plane so the herpolhode opens up; the polhode,
-/// herpolhode, plane, L and ω are named next to themselves.
-void build_poinsot(View& view, const PoinsotInput& in, float font_px);
+/// The ellipsoid is a shaded translucent surface resting on an opaque plane;
+/// the key (bottom-right) names the axes, L, ω, the curves and the plane.
+/// ω's tip is the point named "contact_point".
+void build_poinsot(View& view, const PoinsotInput& in);
 
 }  // namespace tumble::viz

@@ -66,7 +66,7 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
     in.omega_world_history.push_back(omega_world(b.model, s));
   }
   View v;
-  build_poinsot(v, in, 14.0f);
+  build_poinsot(v, in);
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
   const double scale = 1.0 / p.semi_axes.maxCoeff();
   // The dot sits on the contact point; the herpolhode (last polyline) lies in the plane.
@@ -94,7 +94,7 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   }
   in.width_px = 640, in.height_px = 360;
   View v;
-  build_poinsot(v, in, 14.0f);
+  build_poinsot(v, in);
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
   const double scale = 1.0 / p.semi_axes.maxCoeff();
   ASSERT_EQ(v.surfaces.size(), 2u);
@@ -112,7 +112,7 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   // The camera looks down on the plane from at least 30° above it.
   const glm::dvec3 eye = glm::normalize(v.camera.position - v.camera.target);
   EXPECT_GT(glm::dot(eye, -n), std::sin(30.0 * 3.14159265 / 180));
-  // The key's entries and the plane's name, inside the viewport.
+  // The key's entries (the plane's included), inside the viewport.
   for (const std::string name : {"L:", "ω:", "polhode:", "herpolhode:", "invariable plane"}) {
     bool found = false;
     for (const TextItem& t : v.texts)
@@ -134,7 +134,7 @@ TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
   for (const BodyState& s : b.run(80, 0.05)) {
     MomentumSphereInput in{I, momentum_body(s), {}, two_E, ""};
     View v;
-    build_momentum_sphere(v, in, 14.0f);
+    build_momentum_sphere(v, in);
     const glm::dvec3 d = v.points.back().position;  // in units of |L|
     const Eigen::Vector3d pi = L * Eigen::Vector3d(d.x, d.y, d.z);
     EXPECT_NEAR(pi.norm() / L, 1.0, 1e-9);
@@ -172,13 +172,17 @@ TEST(MomentumSphere, SeparatrixPassesThroughTheIntermediateAxis) {
     }
     EXPECT_TRUE(plus && minus);
   }
-  // The view draws it: a red polyline through +e2 (units of |L|).
+  // The view draws it: a polyline through +e2 (units of |L|) in the separatrix's colour, not e1's.
   View v;
-  build_momentum_sphere(v, {I, Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""}, 14.0f);
+  build_momentum_sphere(v, {I, Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""});
   int through = 0;
   for (const PolylineItem& p : v.polylines)
-    if (p.color.r > 0.8f && p.color.g < 0.2f)
-      for (const glm::dvec3& x : p.points) through += glm::length(x - glm::dvec3(0, 1, 0)) < 1e-12;
+    if (p.name == "separatrix")
+      for (const glm::dvec3& x : p.points) {
+        through += glm::length(x - glm::dvec3(0, 1, 0)) < 1e-12;
+        EXPECT_EQ(p.color, color_of(Meaning::separatrix, p.color.a));
+        EXPECT_NE(glm::vec3(p.color), glm::vec3(kAxisColors[0]));
+      }
   EXPECT_EQ(through, 2);
 }
 
@@ -219,16 +223,21 @@ TEST(Captions, FadeInHoldFadeOut) {
   EXPECT_GT(c.position_px.y, 600.0f);
 }
 
-TEST(Captions, SpeedBadgeSitsBelowTheCaptionInTheCorner) {
+TEST(Captions, SpeedBadgeSitsInTheCornerClearOfTheCaption) {
   EXPECT_FALSE(speed_badge("", true, 1280, 720));
   const auto b = speed_badge("×1/8", true, 1280, 720);
   ASSERT_TRUE(b);
   EXPECT_EQ(b->text, "×1/8 slow motion");
-  const TextItem c = caption_item("a caption", 1.0f, 1280, 720);
-  EXPECT_GE(b->position_px.y, c.position_px.y + 1.2f * c.size_px);  // below the caption's line
   EXPECT_LE(b->position_px.y + b->size_px, 720.0f);
   EXPECT_LE(b->position_px.x + approx_text_width(b->text, b->size_px), 1280.0f);
   EXPECT_GT(b->position_px.x, 640.0f);
+  // A long caption shown with it wraps narrower, its lines and backdrop left of the badge.
+  std::string text = "a long caption";
+  for (int i = 0; i < 40; ++i) text += " with words";
+  const std::vector<TextItem> lines = caption_items(text, 1.0f, 1280, 720, 1280.0f - b->position_px.x);
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_LT(lines.front().backdrop_px.z, b->position_px.x);
+  for (const TextItem& t : lines) EXPECT_LT(t.position_px.x + approx_text_width(t.text, t.size_px), b->position_px.x);
 }
 
 TEST(StripChart, SlowedStretchesAreShadedBandsWithTheirSpeed) {
