@@ -34,7 +34,7 @@ def test_every_shipped_scene_validates(tmp_path, cli):
     files.append(out / "dzhanibekov.gltf")  # the JSON form, buffer embedded
     cli("export", SCENES / "dzhanibekov.toml", "--gltf", files[-1], "--fps", "10")
     reports = validate(files, out / "validator-report.json")
-    assert len(reports) == 12
+    assert len(reports) == len(files)
     for r in reports:
         assert r["issues"]["numErrors"] == 0, r["uri"]
         assert r["info"]["animationCount"] == 1 and r["info"]["totalVertexCount"] > 0, r["uri"]
