@@ -15,24 +15,13 @@
 #include "render/fxaa.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
+#include "gl_test.hpp"
 #include "test_scenes.hpp"
 
 namespace tumble::render {
 namespace {
 
-class GpuPathsTest : public testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      context_ = create_gl_context(default_gl_backend());
-    } catch (const std::runtime_error& e) {
-      const char* req = std::getenv("TUMBLE_REQUIRE_GL");
-      if (req && std::string(req) == "1") FAIL() << "TUMBLE_REQUIRE_GL=1: " << e.what();
-      GTEST_SKIP() << "no GL: " << e.what();
-    }
-  }
-  std::unique_ptr<GlContext> context_;
-};
+class GpuPathsTest : public test::GlTest {};
 
 /// The showcase on a darker background for each `k`: frames that differ.
 viz::DrawList frame(int k) {
