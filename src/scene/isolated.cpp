@@ -33,8 +33,16 @@ void write_all(int fd, const std::string& s) {
   }
 }
 
+// The child dies by its own signal, not in a handler inherited from the host
+// (a fuzzer's or a crash reporter's would report the importer's crash as the host's).
+void default_crash_signals() {
+  for (const int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGTRAP, SIGXCPU, SIGXFSZ, SIGSYS})
+    ::signal(sig, SIG_DFL);
+}
+
 // In the child: limits, the work, one tagged reply ('O' result, 'E' message, 'M' memory), _exit.
 [[noreturn]] void child(int fd, const std::function<std::string()>& work, const IsolationLimits& limits) {
+  default_crash_signals();
   const auto cpu = static_cast<rlim_t>(std::ceil(limits.seconds)) + 1;
   const rlimit cpu_limit{cpu, cpu + 1};
   ::setrlimit(RLIMIT_CPU, &cpu_limit);

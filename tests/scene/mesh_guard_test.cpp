@@ -2,6 +2,9 @@
 // malformed OBJ, STL, PLY and OFF files with file:line messages, and assimp
 // runs in a guarded child whose crash, hang or runaway allocation becomes an
 // InputError instead of killing (or freezing) the process.
+#include <signal.h>
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -118,6 +121,22 @@ TEST(MeshGuard, AnAbortInTheImporterIsAnInputError) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("x.ply: the importer crashed on this file (signal 6"), std::string::npos) << e.what();
   }
+}
+
+// A host's crash handler (libFuzzer's, a crash reporter's) must not run in the
+// child: there it would turn the importer's abort into the host's crash report.
+TEST(MeshGuard, TheChildDiesByItsSignalWhateverTheHostsHandler) {
+  struct sigaction host{}, old{};
+  host.sa_handler = [](int) { ::_exit(42); };
+  ::sigaction(SIGABRT, &host, &old);
+  std::string what = "no error";
+  try {
+    (void)scene::run_isolated([]() -> std::string { std::abort(); }, {5.0, std::size_t{1} << 30}, "x.ply");
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  ::sigaction(SIGABRT, &old, nullptr);
+  EXPECT_NE(what.find("the importer crashed on this file (signal 6"), std::string::npos) << what;
 }
 
 TEST(MeshGuard, AHangIsStoppedAtTheTimeLimit) {
