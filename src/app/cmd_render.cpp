@@ -3,15 +3,13 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
-#include "io/atomic_file.hpp"
 #include "render/gl_context.hpp"
 #include "render/worker_threads.hpp"
-#include "render/layout_report.hpp"
+#include "run/layout_run.hpp"
 #include "run/render_folder.hpp"
 #include "run/render_job.hpp"
 #include "scene/scene.hpp"
@@ -97,19 +95,10 @@ RenderPlan plan_render(const RenderOptions& o) {
 
 // --layout FILE: the layout report of the asked frames, no pixels (no GL, no output folder).
 int run_layout(const RenderOptions& o) {
-  const scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
-  const scene::OutputConfig& out = s.render.output;
-  const long count = scene::frame_clock(s, out.fps).count();
-  const auto [first, last] =
-      o.frames.empty() ? std::pair<long, long>{0, count - 1} : run::parse_frame_range(o.frames, count);
-  const std::vector<run::Run> runs = run::simulate_runs(s, count, out.fps);
-  const run::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
-  std::ostringstream text;
-  for (long k = first; k <= last; ++k)
-    render::write_layout(text, k, render::layout_items(builder.build(k), out.width, out.height));
-  io::atomic_write_file(o.layout, text.str());
-  std::cout << "wrote the layout of frames " << first << ".." << last << " of " << count << " (" << out.width << "x"
-            << out.height << ") to " << o.layout << "\n";
+  const run::LayoutSummary r =
+      run::write_layout_report(load_scene_verbose(o.scene, scene_overrides(o)), o.frames, o.layout);
+  std::cout << "wrote the layout of frames " << r.first << ".." << r.last << " of " << r.count << " (" << r.width
+            << "x" << r.height << ") to " << o.layout << "\n";
   return kOk;
 }
 

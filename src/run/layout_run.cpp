@@ -1,0 +1,26 @@
+#include "run/layout_run.hpp"
+
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+#include "render/layout_report.hpp"
+#include "run/render_job.hpp"
+
+namespace tumble::run {
+
+LayoutSummary write_layout_report(const scene::Scene& s, const std::string& frames, const std::filesystem::path& path) {
+  const scene::OutputConfig& out = s.render.output;
+  const long count = scene::frame_clock(s, out.fps).count();
+  const auto [first, last] = frames.empty() ? std::pair<long, long>{0, count - 1} : parse_frame_range(frames, count);
+  const std::vector<Run> runs = simulate_runs(s, count, out.fps);
+  const FrameBuilder builder(s, runs, out.fps, out.width, out.height);
+  std::ostringstream text;
+  for (long k = first; k <= last; ++k)
+    render::write_layout(text, k, render::layout_items(builder.build(k), out.width, out.height));
+  io::atomic_write_file(path, text.str());
+  return {first, last, count, out.width, out.height};
+}
+
+}  // namespace tumble::run
