@@ -63,6 +63,8 @@ LatticeSpec lattice_for(const MeshReport& r, long long resolution) {
 }
 
 struct Request {
+  std::string file;    ///< as written, relative to the scene
+  double scale = 1.0;  ///< m per file unit
   std::string fill;
   std::optional<double> mass, density;  ///< kg; kg/m³ (volume) or kg/m² (surface)
   long long resolution = kDefaultResolution;
@@ -104,19 +106,26 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
   }
 }
 
-}  // namespace
+/// Where each stage reports: the shape's keys (errors), the load context, and
+/// the table and path that warnings point to.
+struct Stage {
+  TableReader& s;
+  LoadContext& ctx;
+  const toml::table& t;
+  const std::string& path;
+  void warn(const std::string& m) const { ctx.diag.warning(t.source(), path, m); }
+};
 
-void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext& ctx, const Eigen::Vector3d& offset,
-                     ParticleCloud& out) {
-  TableReader s(t, path, ctx.diag,
-                {"type", "file", "units", "mass", "density", "fill", "resolution", "inertia_tolerance"});
+/// The shape's keys, each checked against the others; nullopt after any error.
+std::optional<Request> read_request(TableReader& s, LoadContext& ctx) {
   const std::size_t errors = ctx.diag.error_count();
   if (!s.has("file")) s.error("file", "missing; a mesh needs file = \"...\" (OBJ, STL, PLY, ...; relative to the scene)");
-  const std::string file = s.string("file").value_or("");
+  Request q;
+  q.file = s.string("file").value_or("");
   const std::string units = s.string("units").value_or("m");
   const auto scale = unit_scale(units);
   if (!scale) s.error("units", "expected \"m\", \"cm\", \"mm\" or \"in\" (the file's length unit), found " + quote_token(units));
-  Request q;
+  q.scale = scale.value_or(1.0);
   q.fill = s.string("fill").value_or("volume");
   if (q.fill != "volume" && q.fill != "surface" && q.fill != "vertices")
     s.error("fill", "expected \"volume\", \"surface\" or \"vertices\", found " + quote_token(q.fill));
@@ -131,107 +140,160 @@ void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext&
   if (s.has("inertia_tolerance")) q.tolerance = s.number("inertia_tolerance", Range::closed(1e-8, 0.5));
   if (q.tolerance && q.fill == "vertices")
     s.error("inertia_tolerance", "fill = \"vertices\" uses the points as they are; it needs fill = \"volume\" or \"surface\"");
-  if (ctx.diag.error_count() != errors) return;
+  if (ctx.diag.error_count() != errors) return std::nullopt;
+  return q;
+}
 
+/// The file's triangles in metres, degenerate faces removed; a PLY read for
+/// its per-vertex masses (fill = "vertices") comes along.
+struct LoadedMesh {
+  TriangleMesh mesh;
+  std::optional<PlyVertices> ply;
+};
+
+/// Reads and scales the mesh and fills src's file, fill, units and report; nullopt after an error.
+std::optional<LoadedMesh> load_mesh(const Request& q, const Stage& st, MeshSource& src) {
   MeshFile mf;
-  std::optional<PlyVertices> ply;  // assimp drops a PLY's per-vertex mass: read the vertices ourselves
+  LoadedMesh m;  // assimp drops a PLY's per-vertex mass: read the vertices ourselves
   try {
-    if (q.fill == "vertices" && is_ply_file(file)) ply = read_ply_vertices(ctx.base_dir / file);
-    if (ply && ply->faces == 0) mf.mesh.vertices = ply->positions;  // a point cloud, which assimp refuses
-    else mf = read_mesh_file(ctx.base_dir / file);
+    if (q.fill == "vertices" && is_ply_file(q.file)) m.ply = read_ply_vertices(st.ctx.base_dir / q.file);
+    if (m.ply && m.ply->faces == 0) mf.mesh.vertices = m.ply->positions;  // a point cloud, which assimp refuses
+    else mf = read_mesh_file(st.ctx.base_dir / q.file);
   } catch (const InputError& e) {
-    s.error("file", e.what());
-    return;
+    st.s.error("file", e.what());
+    return std::nullopt;
   }
-  MeshSource src;
-  src.file = (ctx.base_dir / file).string();
+  src.file = (st.ctx.base_dir / q.file).string();
   src.fill = q.fill;
-  src.units = *scale;
-  TriangleMesh mesh = std::move(mf.mesh);
-  for (auto& v : mesh.vertices) v *= *scale;
-  const std::size_t degenerate = inspect_mesh(mesh).degenerate_faces;
-  remove_degenerate_triangles(mesh);  // zero-area faces bound nothing; they would spoil the edge check
-  src.report = inspect_mesh(mesh);
+  src.units = q.scale;
+  m.mesh = std::move(mf.mesh);
+  for (auto& v : m.mesh.vertices) v *= q.scale;
+  const std::size_t degenerate = inspect_mesh(m.mesh).degenerate_faces;
+  remove_degenerate_triangles(m.mesh);  // zero-area faces bound nothing; they would spoil the edge check
+  src.report = inspect_mesh(m.mesh);
   src.report.degenerate_faces = degenerate;
-  auto warn = [&](const std::string& m) { ctx.diag.warning(t.source(), path, src.file + ": " + m); };
+  return m;
+}
 
+/// fill = "vertices": the points as they are, each with the PLY's mass or all
+/// equal; nullopt after an error.
+std::optional<ParticleCloud> vertex_cloud(const Request& q, const LoadedMesh& m, MeshSource& src, const Stage& st) {
   ParticleCloud cloud;
-  if (q.fill == "vertices") {
-    if (ply && !ply->masses.empty()) {
-      // Every PLY vertex with its own mass (kg); a shape `mass` rescales them to that total.
-      for (const std::string& w : ply->warnings) ctx.diag.warning(t.source(), path, w);
-      for (double m : ply->masses) src.file_mass += m;
-      const double k = q.mass ? *q.mass / src.file_mass : 1.0;
-      for (std::size_t i = 0; i < ply->masses.size(); ++i) {
-        if (ply->masses[i] > 0) cloud.push_back({ply->positions[i] * *scale, ply->masses[i] * k});
-        else ++src.massless_vertices;  // adds nothing; the core wants every mass > 0
-      }
-      if (!reserve_particles(ctx, s, "file", static_cast<double>(cloud.size()))) return;
-    } else {
-      // The distinct points (STL and OBJ repeat corners per face), equal masses.
-      if (!reserve_particles(ctx, s, "file", static_cast<double>(mesh.vertices.size()))) return;
-      const double m = q.mass.value_or(1.0) / static_cast<double>(mesh.vertices.size());
-      for (const auto& p : mesh.vertices) cloud.push_back({p, m});
+  if (m.ply && !m.ply->masses.empty()) {
+    // Every PLY vertex with its own mass (kg); a shape `mass` rescales them to that total.
+    for (const std::string& w : m.ply->warnings) st.ctx.diag.warning(st.t.source(), st.path, w);
+    for (double w : m.ply->masses) src.file_mass += w;
+    const double k = q.mass ? *q.mass / src.file_mass : 1.0;
+    for (std::size_t i = 0; i < m.ply->masses.size(); ++i) {
+      if (m.ply->masses[i] > 0) cloud.push_back({m.ply->positions[i] * q.scale, m.ply->masses[i] * k});
+      else ++src.massless_vertices;  // adds nothing; the core wants every mass > 0
     }
-    measure_cloud(cloud, src);
+    if (!reserve_particles(st.ctx, st.s, "file", static_cast<double>(cloud.size()))) return std::nullopt;
   } else {
-    if (mesh.triangles.empty()) {
-      s.error("file", src.file + ": has no triangles (" + std::to_string(mesh.vertices.size()) +
-                          " points); fill = \"vertices\" uses the points as they are");
-      return;
-    }
-    const bool volume = q.fill == "volume";
-    if (volume && src.report.signed_volume < 0) {
-      flip_orientation(mesh);
-      src.flipped = true;
-      warn("the mesh is inside out (signed volume " + fmt(src.report.signed_volume) +
-           " m³); its faces were flipped");
-    }
-    if (volume && !src.report.watertight() && q.tolerance) {
-      s.error("inertia_tolerance", src.file + ": not watertight (" + holes(src.report) +
-                                       "), so there is no exact tensor to meet; give resolution instead");
-      return;
-    }
-    src.inside_test = !volume ? "" : src.report.watertight() ? "ray crossings per lattice row (exact on a closed mesh)"
-                                                              : "generalized winding number (Jacobson et al. 2013)";
-    // Exact reference first (for unit mass): the tolerance ladder compares with it.
-    const SolidProperties exact = volume ? solid_properties(mesh) : shell_properties(mesh);
-    src.has_exact = !volume || src.report.watertight();
-    if (src.has_exact) {
-      src.exact_com = exact.centroid + offset;
-      src.exact_inertia = exact.inertia_for_mass(1.0);
-    }
-    cloud = fill_mesh(mesh, q, src, s, ctx);
-    if (ctx.diag.error_count() != errors) return;
-    if (cloud.empty()) {
-      s.error("resolution", src.file + ": no lattice point falls inside the mesh; raise the resolution");
-      return;
-    }
-    if (volume && !src.report.watertight()) {
-      const double frac = static_cast<double>(src.ambiguous) / static_cast<double>(cloud.size());
-      const std::string what = "not watertight (" + holes(src.report) + "); the inside test is the generalized "
-                               "winding number, which is ambiguous (between 0.25 and 0.75) at " + fmt(100 * frac) +
-                               " % of the " + std::to_string(cloud.size()) + " particles";
-      if (frac > kMaxAmbiguous) {
-        s.error("fill", src.file + ": " + what + ": the holes are too large for it to tolerate (limit " +
-                            fmt(100 * kMaxAmbiguous) + " %); close the mesh or use fill = \"surface\"");
-        return;
-      }
-      warn(what + ", so it tolerates the holes; there is no exact tensor to compare with");
-    }
-    const double measure = src.has_exact ? std::abs(exact.volume)
-                                         : static_cast<double>(cloud.size()) * std::pow(src.spacing, 3);
-    const double mass = q.mass ? *q.mass : q.density ? *q.density * measure : 1.0;
-    for (Particle& p : cloud) p.mass *= mass;
-    src.cloud_inertia *= mass;
-    src.exact_inertia *= mass;
-    if (!reserve_particles(ctx, s, "resolution", static_cast<double>(cloud.size()))) return;
+    // The distinct points (STL and OBJ repeat corners per face), equal masses.
+    if (!reserve_particles(st.ctx, st.s, "file", static_cast<double>(m.mesh.vertices.size()))) return std::nullopt;
+    const double w = q.mass.value_or(1.0) / static_cast<double>(m.mesh.vertices.size());
+    for (const auto& p : m.mesh.vertices) cloud.push_back({p, w});
   }
-  for (const Particle& p : cloud) src.mass += p.mass;
+  measure_cloud(cloud, src);
+  return cloud;
+}
+
+/// Before a volume or surface fill: triangles present, an inside-out mesh
+/// flipped, a tolerance only where an exact tensor exists, and that exact
+/// tensor (unit mass) in src. The exact properties, or nullopt after an error.
+std::optional<SolidProperties> exact_reference(const Request& q, TriangleMesh& mesh, const Eigen::Vector3d& offset,
+                                               MeshSource& src, const Stage& st) {
+  if (mesh.triangles.empty()) {
+    st.s.error("file", src.file + ": has no triangles (" + std::to_string(mesh.vertices.size()) +
+                           " points); fill = \"vertices\" uses the points as they are");
+    return std::nullopt;
+  }
+  const bool volume = q.fill == "volume";
+  if (volume && src.report.signed_volume < 0) {
+    flip_orientation(mesh);
+    src.flipped = true;
+    st.warn(src.file + ": the mesh is inside out (signed volume " + fmt(src.report.signed_volume) +
+            " m³); its faces were flipped");
+  }
+  if (volume && !src.report.watertight() && q.tolerance) {
+    st.s.error("inertia_tolerance", src.file + ": not watertight (" + holes(src.report) +
+                                        "), so there is no exact tensor to meet; give resolution instead");
+    return std::nullopt;
+  }
+  src.inside_test = !volume ? "" : src.report.watertight() ? "ray crossings per lattice row (exact on a closed mesh)"
+                                                            : "generalized winding number (Jacobson et al. 2013)";
+  // Exact reference first (for unit mass): the tolerance ladder compares with it.
+  const SolidProperties exact = volume ? solid_properties(mesh) : shell_properties(mesh);
+  src.has_exact = !volume || src.report.watertight();
+  if (src.has_exact) {
+    src.exact_com = exact.centroid + offset;
+    src.exact_inertia = exact.inertia_for_mass(1.0);
+  }
+  return exact;
+}
+
+/// A volume fill of an open mesh: the winding number's ambiguous share of the
+/// cloud is tolerated with a warning up to kMaxAmbiguous, an error above.
+bool tolerate_holes(const Request& q, const ParticleCloud& cloud, const MeshSource& src, const Stage& st) {
+  if (q.fill != "volume" || src.report.watertight()) return true;
+  const double frac = static_cast<double>(src.ambiguous) / static_cast<double>(cloud.size());
+  const std::string what = "not watertight (" + holes(src.report) + "); the inside test is the generalized "
+                           "winding number, which is ambiguous (between 0.25 and 0.75) at " + fmt(100 * frac) +
+                           " % of the " + std::to_string(cloud.size()) + " particles";
+  if (frac > kMaxAmbiguous) {
+    st.s.error("fill", src.file + ": " + what + ": the holes are too large for it to tolerate (limit " +
+                           fmt(100 * kMaxAmbiguous) + " %); close the mesh or use fill = \"surface\"");
+    return false;
+  }
+  st.warn(src.file + ": " + what + ", so it tolerates the holes; there is no exact tensor to compare with");
+  return true;
+}
+
+/// fill = "volume" or "surface": the lattice cloud, weighed to the shape's
+/// mass or density; nullopt after an error.
+std::optional<ParticleCloud> filled_cloud(const Request& q, TriangleMesh& mesh, const Eigen::Vector3d& offset,
+                                          MeshSource& src, const Stage& st) {
+  const std::optional<SolidProperties> exact = exact_reference(q, mesh, offset, src, st);
+  if (!exact) return std::nullopt;
+  const std::size_t errors = st.ctx.diag.error_count();
+  ParticleCloud cloud = fill_mesh(mesh, q, src, st.s, st.ctx);
+  if (st.ctx.diag.error_count() != errors) return std::nullopt;
+  if (cloud.empty()) {
+    st.s.error("resolution", src.file + ": no lattice point falls inside the mesh; raise the resolution");
+    return std::nullopt;
+  }
+  if (!tolerate_holes(q, cloud, src, st)) return std::nullopt;
+  const double measure = src.has_exact ? std::abs(exact->volume)
+                                       : static_cast<double>(cloud.size()) * std::pow(src.spacing, 3);
+  const double mass = q.mass ? *q.mass : q.density ? *q.density * measure : 1.0;
+  for (Particle& p : cloud) p.mass *= mass;
+  src.cloud_inertia *= mass;
+  src.exact_inertia *= mass;
+  if (!reserve_particles(st.ctx, st.s, "resolution", static_cast<double>(cloud.size()))) return std::nullopt;
+  return cloud;
+}
+
+}  // namespace
+
+void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext& ctx, const Eigen::Vector3d& offset,
+                     ParticleCloud& out) {
+  TableReader s(t, path, ctx.diag,
+                {"type", "file", "units", "mass", "density", "fill", "resolution", "inertia_tolerance"});
+  const Stage st{s, ctx, t, path};
+  const std::optional<Request> q = read_request(s, ctx);
+  if (!q) return;
+  MeshSource src;
+  std::optional<LoadedMesh> m = load_mesh(*q, st, src);
+  if (!m) return;
+  const std::optional<ParticleCloud> cloud =
+      q->fill == "vertices" ? vertex_cloud(*q, *m, src, st) : filled_cloud(*q, m->mesh, offset, src, st);
+  if (!cloud) return;
+  for (const Particle& p : *cloud) src.mass += p.mass;
   src.cloud_com += offset;
-  for (auto& v : mesh.vertices) v += offset;
-  src.surface = std::move(mesh);
-  append_cloud(out, cloud, offset);
+  for (auto& v : m->mesh.vertices) v += offset;
+  src.surface = std::move(m->mesh);
+  append_cloud(out, *cloud, offset);
   if (ctx.meshes) ctx.meshes->push_back(std::move(src));
 }
 
