@@ -35,7 +35,24 @@ void write_holder(int fd, const std::string& holder, const std::string& key) {
   }
 }
 
+[[noreturn]] void throw_in_use(const std::filesystem::path& dir, const std::string& who, const std::string& why) {
+  throw InputError("output folder " + dir.string() + " is in use by " + who + why +
+                   "; wait for it to finish or stop it (a killed holder frees the folder at once)");
+}
+
 }  // namespace
+
+void FolderLock::refuse_if_held(const std::filesystem::path& dir) {
+  const int fd = ::open((dir / kLockFileName).c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0) return;  // no lock file: no holder
+  if (::flock(fd, LOCK_EX | LOCK_NB) == 0) {  // free: nobody holds it (ours is dropped on close)
+    ::close(fd);
+    return;
+  }
+  const std::string who = read_holder(fd, nullptr);
+  ::close(fd);
+  throw_in_use(dir, who, "");
+}
 
 FolderLock::FolderLock(const std::filesystem::path& dir, Mode mode, const std::string& holder, const std::string& key) {
   const std::filesystem::path path = dir / kLockFileName;
@@ -52,8 +69,7 @@ FolderLock::FolderLock(const std::filesystem::path& dir, Mode mode, const std::s
     const std::string who = read_holder(fd_, &other_key);
     ::close(fd_);
     fd_ = -1;
-    throw InputError("output folder " + dir.string() + " is in use by " + who + why +
-                     "; wait for it to finish or stop it (a killed holder frees the folder at once)");
+    throw_in_use(dir, who, why);
   };
   if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) {
     write_holder(fd_, holder, key);

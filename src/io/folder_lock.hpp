@@ -2,7 +2,9 @@
 // render, resume or assemble changes the folder. The kernel drops the lock when
 // its holder exits, however it exits, so a lock left by kill -9 is simply free
 // again. The file stays (removing a locked file races with the next locker)
-// and names its last holder, for the message of whoever is refused.
+// and names its last holder, for the message of whoever is refused. A folder
+// that will be refused (a foreign one) gets no lock file: its users check it
+// first, then lock (refuse_if_held), then check again under the lock.
 #pragma once
 
 #include <filesystem>
@@ -27,6 +29,10 @@ class FolderLock {
   FolderLock(const std::filesystem::path& dir, Mode mode, const std::string& holder, const std::string& key);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
+  /// For a folder about to be refused: throws the "in use by <holder>"
+  /// InputError when its lock is held now (a folder mid-way through another
+  /// render can look foreign). Creates and writes nothing.
+  static void refuse_if_held(const std::filesystem::path& dir);
   FolderLock& operator=(const FolderLock&) = delete;
 
  private:

@@ -65,13 +65,9 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
   return errors;
 }
 
-/// The parts in `dir` and the first readable one, which the others must agree with.
-std::pair<std::vector<Part>, std::size_t> whole_render_parts(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw io::IoError("'" + dir.string() + "' is not a folder");
-  // Alone in the folder (the caller holds it exclusively): every temp file is
-  // a killed run's leftover (a video half encoded, say).
-  for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
+/// The parts in `dir`, and the first readable one; a folder holding none that
+/// tumble wrote is not a shards folder. Only reads, so it runs before the lock.
+std::pair<std::vector<Part>, std::size_t> tumble_parts(const fs::path& dir) {
   std::vector<Part> parts = read_parts(dir);
   if (parts.empty())
     throw InputError("tumble assemble: " + dir.string() +
@@ -80,6 +76,15 @@ std::pair<std::vector<Part>, std::size_t> whole_render_parts(const fs::path& dir
   std::size_t ref = 0;
   while (ref < parts.size() && !parts[ref].ok) ++ref;
   if (ref == parts.size()) throw InputError("tumble assemble: no manifest part in " + dir.string() + " was written by tumble");
+  return {std::move(parts), ref};
+}
+
+/// The parts in `dir` and the first readable one, which the others must agree with.
+std::pair<std::vector<Part>, std::size_t> whole_render_parts(const fs::path& dir) {
+  // Alone in the folder (the caller holds it exclusively): every temp file is
+  // a killed run's leftover (a video half encoded, say).
+  for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
+  auto [parts, ref] = tumble_parts(dir);
   if (const std::vector<std::string> errors = check_parts(dir, parts, parts[ref]); !errors.empty()) {
     std::string msg = "tumble assemble: the shards in " + dir.string() + " do not make a whole render:";
     for (const std::string& e : errors) msg += "\n  " + e;
@@ -93,6 +98,12 @@ std::pair<std::vector<Part>, std::size_t> whole_render_parts(const fs::path& dir
 Outcome assemble(const fs::path& dir, std::optional<scene::VideoFormat> video, Listener& l) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw io::IoError("'" + dir.string() + "' is not a folder");
+  try {  // a foreign folder gets no lock file: check first (a read), then lock, then check all
+    (void)tumble_parts(dir);
+  } catch (const InputError&) {
+    io::FolderLock::refuse_if_held(dir);  // a first shard may still be writing its part
+    throw;
+  }
   const io::FolderLock lock(dir, io::FolderLock::Mode::exclusive, "tumble assemble", "");  // no shard may run meanwhile
   const auto [parts, ref_index] = whole_render_parts(dir);
   const Part& ref = parts[ref_index];

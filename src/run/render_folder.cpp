@@ -86,7 +86,6 @@ void open_folder(Job& j) {
   const scene::Scene& s = j.req.scene;
   const std::pair<long, long> asked =
       j.req.frames.empty() ? std::pair<long, long>{0, j.count - 1} : parse_frame_range(j.req.frames, j.count);
-  make_folder(j.req.dir);
   j.man.scene_path = s.path.string();
   j.man.scene_name = s.name;
   j.man.scene_hash = s.content_hash;
@@ -95,6 +94,16 @@ void open_folder(Job& j) {
   // part, so shards running at once never overwrite each other's manifest.
   j.shard = asked.first != 0 || asked.second != j.count - 1;
   j.own = j.shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
+  // Nothing is written into a folder that is refused (not even the lock file):
+  // check it first (a read), then lock, then check again under the lock.
+  std::error_code ec;
+  if (!j.req.force && fs::is_directory(j.req.dir, ec)) try {
+      (void)inspect_output(j.req.dir, j.man, j.own, false);
+    } catch (const InputError&) {
+      io::FolderLock::refuse_if_held(j.req.dir);  // foreign-looking because its writer is mid-way
+      throw;
+    }
+  make_folder(j.req.dir);
   // One writer per folder; the shards of one render (same scene and settings) together.
   j.lock = std::make_unique<io::FolderLock>(
       j.req.dir, j.shard ? io::FolderLock::Mode::shared : io::FolderLock::Mode::exclusive,

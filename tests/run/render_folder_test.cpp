@@ -2,14 +2,19 @@
 // (run::Outcome), never as an exit code, and every note goes through the Listener.
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
+#include "io/folder_lock.hpp"
 #include "io/json.hpp"
+#include "run/assemble.hpp"
 #include "run/render_folder.hpp"
 #include "scene/scene.hpp"
 
@@ -37,10 +42,17 @@ class RenderFolder : public ::testing::Test {
     fs::remove_all(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  tumble::run::Outcome render(Recorder& l) {
+  tumble::run::Outcome render(Recorder& l, const std::string& frames = "") {
     const tumble::scene::Scene s =
         tumble::scene::load_scene(fs::path(TUMBLE_SOURCE_DIR) / "tests/app/data/tiny_render.toml");
-    return tumble::run::render_scene({s, dir_, "", false, false, false, tumble::render::GlBackend::osmesa, "tiny.toml"}, l);
+    return tumble::run::render_scene({s, dir_, frames, false, false, false, tumble::render::GlBackend::osmesa, "tiny.toml"},
+                                     l);
+  }
+  std::vector<std::string> names() const {
+    std::vector<std::string> v;
+    for (const auto& e : fs::directory_iterator(dir_)) v.push_back(e.path().filename().string());
+    std::sort(v.begin(), v.end());
+    return v;
   }
   fs::path dir_;
 };
@@ -70,6 +82,49 @@ TEST_F(RenderFolder, AStopRequestIsAnInterruptedOutcomeNamingHowToResume) {
   const auto man = tumble::io::read_json_file(dir_ / "manifest.json");
   ASSERT_TRUE(man);
   EXPECT_EQ(man->value("complete", true), false);
+}
+
+// Issue 26: a folder that render or assemble refuses gets nothing written into
+// it, not even the lock file (.tumble.lock was left in such folders). No GL:
+// the folder is refused before any drawing.
+TEST_F(RenderFolder, ARefusedFolderGetsNoLockFile) {
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "manifest.json") << "{\"tool\": \"other\"}";  // not tumble's
+  std::ofstream(dir_ / "notes.txt") << "mine";
+  const std::vector<std::string> before = names();
+  Recorder l;
+  for (const std::string& frames : {std::string(), std::string("0:2")}) {
+    SCOPED_TRACE("--frames '" + frames + "'");
+    try {
+      render(l, frames);
+      ADD_FAILURE() << "a folder holding another tool's manifest.json was accepted";
+    } catch (const tumble::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("holds a manifest.json that tumble did not write"), std::string::npos)
+          << e.what();
+    }
+    EXPECT_EQ(names(), before);
+  }
+  EXPECT_THROW(tumble::run::assemble(dir_, std::nullopt, l), tumble::InputError);  // no manifest parts
+  EXPECT_EQ(names(), before);
+}
+
+// A folder that looks foreign while its writer is mid-way is refused as in use,
+// naming the holder, and still gets no lock file of ours.
+TEST_F(RenderFolder, AFolderRefusedWhileHeldNamesItsHolder) {
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "frame_000000.png") << "x";  // a frame, no manifest yet
+  const tumble::io::FolderLock held(dir_, tumble::io::FolderLock::Mode::exclusive, "tumble render other.toml", "k");
+  Recorder l;
+  for (int assemble = 0; assemble < 2; ++assemble) {
+    try {
+      if (assemble) tumble::run::assemble(dir_, std::nullopt, l); else render(l);
+      ADD_FAILURE() << "a held folder was accepted";
+    } catch (const tumble::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is in use by pid " + std::to_string(::getpid()) + ", tumble render other.toml"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace
