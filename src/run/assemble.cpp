@@ -34,7 +34,7 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
   long damaged = 0;
   for (const Part& p : parts) {
     if (!p.ok) {
-      errors.push_back(p.file + ": not a manifest part written by tumble (unreadable, or fields missing)");
+      errors.push_back(p.file + ": not a manifest part written by tumble (unreadable, fields missing or out of range)");
     } else if (describe(p) != describe(ref)) {
       errors.push_back(p.file + " (" + describe(p) + ") is not a shard of the same render as " + ref.file + " (" +
                        describe(ref) + "); render its frames again with the same scene and options, or remove it");

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "run/render_output.hpp"
+#include "scene/scene.hpp"
 
 namespace tumble::run {
 
@@ -39,6 +40,13 @@ Part read_part(const std::filesystem::path& path) {
   } catch (const io::Json::exception&) {
     return p;  // not ok: a field missing or of the wrong type
   }
+  // Numbers a disk or a hand could have changed stay within what a render
+  // writes (frames 0 … ⌊duration·fps⌋ under the scene's cap), so nothing sized
+  // by them (assemble's table of frames) can be absurd (issue 26).
+  const long cap = static_cast<long>(scene::kMaxFrames) + 1;
+  if (p.frame_count < 1 || p.frame_count > cap || p.first < 0 || p.first > p.last || p.last >= p.frame_count ||
+      p.written < 0 || p.written > p.last - p.first + 1)
+    return p;  // not ok: out of range
   p.json = *j;
   p.ok = true;
   return p;

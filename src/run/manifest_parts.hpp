@@ -19,7 +19,8 @@ std::string part_manifest_name(long first, long last);
 /// Whether `name` (no folder) is such a part.
 bool is_part_manifest(const std::string& name);
 
-/// One part as read back; `ok` false when it is not a manifest tumble wrote.
+/// One part as read back; `ok` false when it is not a manifest tumble wrote
+/// (unreadable, a field missing, or frames out of range).
 struct Part {
   std::string file;  ///< name in the folder
   bool ok = false, complete = false;

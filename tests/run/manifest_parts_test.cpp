@@ -1,7 +1,14 @@
 // The names of a render's shard manifests and the gaps between shards
 // (run/manifest_parts.hpp), which `tumble assemble` reports.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
+#include "run/assemble.hpp"
 #include "run/manifest_parts.hpp"
 
 namespace {
@@ -24,6 +31,45 @@ TEST(ManifestParts, MissingRangesNameEveryGap) {
   EXPECT_EQ(missing_ranges({}, 7), "0:6");
   EXPECT_EQ(missing_ranges({{0, 0}, {2, 2}}, 3), "1:1");
   EXPECT_EQ(missing_ranges({{1, 12}}, 5), "0:0");  // a range past the end covers no more
+}
+
+// Issue 26: a part whose numbers were changed on disk (an absurd or negative
+// frame_count, a range outside it) is not a part; assemble names it instead of
+// sizing a table by it ("internal error: std::bad_alloc" before).
+TEST(ManifestParts, APartWithAbsurdNumbersIsNotOk) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("tumble_parts_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path part = dir / part_manifest_name(0, 3);
+  auto write = [&](const std::string& count, const std::string& range, const std::string& written) {
+    std::ofstream(part, std::ios::trunc) << R"({"tool": "tumble", "scene_hash": "a", "settings_hash": "b", "frames": )"
+                                         << range << R"(, "frame_count": )" << count << R"(, "frames_written": )"
+                                         << written << R"(, "complete": true})";
+    return tumble::run::read_part(part).ok;
+  };
+  EXPECT_TRUE(write("7", "[0, 3]", "4"));
+  EXPECT_FALSE(write("4000000000000000000", "[0, 3]", "4"));
+  EXPECT_FALSE(write("-5", "[0, 3]", "4"));
+  EXPECT_FALSE(write("3", "[0, 3]", "4"));   // range past the end
+  EXPECT_FALSE(write("7", "[3, 0]", "4"));   // backwards
+  EXPECT_FALSE(write("7", "[0, 3]", "-1"));
+  EXPECT_FALSE(write("7", "[0, 3]", "5"));   // more written than the range holds
+  write("4000000000000000000", "[0, 3]", "4");
+  struct Quiet : tumble::run::Listener {
+    void note(const std::string&) override {}
+    void begin(long, const std::string&) override {}
+    void advance(long) override {}
+    void end() override {}
+    void arm_stop() override {}
+    int stop() const override { return 0; }
+  } l;
+  try {
+    tumble::run::assemble(dir, std::nullopt, l);
+    ADD_FAILURE() << "assembled a part of 4e18 frames";
+  } catch (const tumble::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no manifest part in " + dir.string() + " was written by tumble"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace
