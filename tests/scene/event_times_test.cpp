@@ -5,6 +5,7 @@
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
+#include "scene_error.hpp"
 
 namespace tumble::scene {
 namespace {
@@ -42,14 +43,7 @@ position = [1, 0, 0]
 omega_body = [0, 0, 3]
 )";
 
-std::string error_of(const std::string& extra) {
-  try {
-    load_scene_from_string(kBase + extra, "x.toml");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::string& extra) { return scene_error(kBase + extra, "x.toml"); }
 
 TEST(EventTimes, CaptionsAndSlowMotionResolveToTheBodysFlips) {
   const Scene s = load_scene_from_string(kBase + std::string(R"(

@@ -4,6 +4,7 @@
 
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
+#include "scene_error.hpp"
 
 namespace tumble::scene {
 namespace {
@@ -35,8 +36,7 @@ TEST(FrameClock, SlowMotionSegmentStretchesOnlyItsSpan) {
   for (long k = 1; k < c.count(); ++k) EXPECT_GT(c.time(k), c.time(k - 1));
 }
 
-Scene load(const std::string& extra) {
-  const std::string base = R"(
+const char* kBase = R"(
 name = "x"
 [simulation]
 duration = 2.0
@@ -46,17 +46,10 @@ name = "racket"
 shape = { type = "box", size = [3, 1, 0.4], resolution = 4, mass = 1 }
 omega_body = [0.01, 5, 0.01]
 )";
-  return load_scene_from_string(base + extra, "x.toml");
-}
 
-std::string error_of(const std::string& extra) {
-  try {
-    load(extra);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+Scene load(const std::string& extra) { return load_scene_from_string(kBase + extra, "x.toml"); }
+
+std::string error_of(const std::string& extra) { return scene_error(kBase + extra, "x.toml"); }
 
 TEST(ExplainConfig, ReadsViewsCaptionsTitleAndSlowMotion) {
   const Scene s = load(R"(

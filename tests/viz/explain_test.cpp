@@ -35,6 +35,16 @@ struct Tumbler {
   }
 };
 
+// The Poinsot view's input at the last state, with ω's history over `states`.
+PoinsotInput poinsot_input(const Tumbler& b, const std::vector<BodyState>& states) {
+  PoinsotInput in{states.back().q, b.model.inertia, states.back().L, {}, {}, ""};
+  for (const BodyState& s : states) {
+    in.omega_principal_history.push_back(omega_principal(b.model, s));
+    in.omega_world_history.push_back(omega_world(b.model, s));
+  }
+  return in;
+}
+
 double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
 TEST(Poinsot, EllipsoidTouchesTheInvariablePlaneAtOmegasTip) {
@@ -60,11 +70,7 @@ TEST(Poinsot, EllipsoidTouchesTheInvariablePlaneAtOmegasTip) {
 TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
   const Tumbler b;
   const auto states = b.run(40, 0.05);
-  PoinsotInput in{states.back().q, b.model.inertia, states.back().L, {}, {}, ""};
-  for (const BodyState& s : states) {
-    in.omega_principal_history.push_back(omega_principal(b.model, s));
-    in.omega_world_history.push_back(omega_world(b.model, s));
-  }
+  PoinsotInput in = poinsot_input(b, states);
   View v;
   build_poinsot(v, in);
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
@@ -87,11 +93,7 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
 TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   const Tumbler b;
   const auto states = b.run(40, 0.05);
-  PoinsotInput in{states.back().q, b.model.inertia, states.back().L, {}, {}, ""};
-  for (const BodyState& s : states) {
-    in.omega_principal_history.push_back(omega_principal(b.model, s));
-    in.omega_world_history.push_back(omega_world(b.model, s));
-  }
+  PoinsotInput in = poinsot_input(b, states);
   in.width_px = 640, in.height_px = 360;
   View v;
   build_poinsot(v, in);
