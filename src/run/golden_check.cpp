@@ -1,20 +1,52 @@
 #include "run/golden_check.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <optional>
 #include <set>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
 #include "io/png.hpp"
+#include "io/trajectory_csv.hpp"
 
 namespace tumble::run {
 
 namespace {
 
 namespace fs = std::filesystem;
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  for (std::string f; std::getline(in, f, ',');)
+    if (!f.empty()) out.push_back(f);
+  return out;
+}
+
+double parse_num(const std::string& what, const std::string& s) {
+  std::size_t used = 0;
+  double v = NAN;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !std::isfinite(v)) throw InputError(what + ": expected a number, found '" + s + "'");
+  return v;
+}
+
+/// A time in s: a decimal number or a simple fraction "a/b" (e.g. 1/30).
+double parse_time(const std::string& s) {
+  const auto slash = s.find('/');
+  if (slash == std::string::npos) return parse_num("--at", s);
+  const double den = parse_num("--at", s.substr(slash + 1));
+  if (den == 0) throw InputError("--at " + s + ": division by zero");
+  return parse_num("--at", s.substr(0, slash)) / den;
+}
 
 std::string slurp(const fs::path& p, bool& ok) {
   std::ifstream in(p, std::ios::binary);
@@ -32,6 +64,54 @@ std::string sidecar_field(const std::optional<io::Json>& j, const char* key) {
 }
 
 }  // namespace
+
+// Frame k = round(video_time(t) * fps) for a time t.
+std::vector<long> golden_frames(const std::string& at, const std::string& frames, const scene::FrameClock& clock) {
+  const double fps = clock.fps();
+  const long count = clock.count();
+  if (at.empty() == frames.empty())
+    throw InputError(at.empty() ? "give --at times or --frames numbers, e.g. --at 0.5,2 or --frames 15,60"
+                                : "--at and --frames: give one of them, not both");
+  const bool by_time = !at.empty();
+  const char* opt = by_time ? "--at" : "--frames";
+  const auto items = split_list(by_time ? at : frames);
+  if (items.empty()) throw InputError(std::string(opt) + ": expected a comma-separated list, e.g. " +
+                                      (by_time ? "--at 0.5,2" : "--frames 15,60"));
+  std::set<long> ks;
+  for (const std::string& item : items) {
+    double k = 0;
+    if (by_time) {
+      const double t = parse_time(item);
+      if (t < 0) throw InputError("--at " + item + ": expected a time >= 0 s");
+      k = std::round(clock.video_time(t) * fps);
+    } else {
+      k = parse_num("--frames", item);
+      if (k < 0 || k != std::floor(k)) throw InputError("--frames " + item + ": expected a frame number (integer >= 0)");
+    }
+    if (k >= static_cast<double>(count))
+      throw InputError(std::string(opt) + " " + item + ": past the end of the scene (last frame " +
+                       std::to_string(count - 1) + ", t = " + io::format_double(clock.time(count - 1)) + " s)");
+    ks.insert(static_cast<long>(k));
+  }
+  return {ks.begin(), ks.end()};
+}
+
+std::vector<scene::FrameSettings> golden_cases(const std::string& msaa, const std::string& aa,
+                                               const scene::FrameSettings& scene_frame) {
+  if (!msaa.empty() && !aa.empty()) throw InputError("--msaa and --aa: choose one (--aa msaa4 is --msaa 4)");
+  std::vector<scene::FrameSettings> cases;
+  if (msaa.empty() && aa.empty()) cases.push_back(scene_frame);
+  auto add = [&](const std::string& name, const std::string& what) {
+    scene::FrameSettings f = scene_frame;
+    if (!scene::parse_aa_case(name, f)) throw InputError(what);
+    cases.push_back(f);
+  };
+  for (const std::string& m : split_list(msaa))
+    add("msaa" + m, "--msaa: expected a list of 0, 2, 4, found '" + m + "'");
+  for (const std::string& a : split_list(aa))
+    add(a, "--aa: expected " + scene::aa_case_choices() + ", found '" + a + "'");
+  return cases;
+}
 
 void GoldenCheck::check_physics() {
   GoldenCheck& g = *this;

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "golden/compare.hpp"
@@ -12,9 +13,23 @@
 #include "golden/trajectory.hpp"
 #include "render/gl_context.hpp"
 #include "run/frame_renderer.hpp"
+#include "scene/frame_clock.hpp"
 #include "scene/frame_settings.hpp"
 
 namespace tumble::run {
+
+/// The golden frames: `at`, times in s (decimals or fractions "a/b"), each the
+/// nearest frame of `clock` (any time within half a frame of a frame time names
+/// that frame; time_scale and slow motion are the clock's), or `frames`, frame
+/// numbers; comma-separated, exactly one of the two given. Sorted, without
+/// repeats. Throws InputError naming --at or --frames.
+std::vector<long> golden_frames(const std::string& at, const std::string& frames, const scene::FrameClock& clock);
+
+/// The anti-aliasing cases to check, each at `scene_frame`'s size: `msaa`'s
+/// sample counts or `aa`'s case names (comma-separated; --msaa, --aa), else
+/// `scene_frame` itself. Throws InputError naming the option.
+std::vector<scene::FrameSettings> golden_cases(const std::string& msaa, const std::string& aa,
+                                               const scene::FrameSettings& scene_frame);
 
 struct GoldenCheck {
   const scene::Scene& s;
