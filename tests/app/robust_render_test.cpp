@@ -223,6 +223,13 @@ TEST_F(RobustRender, AnyLegalFolderNameWorksEndToEnd) {
   ASSERT_EQ(wait_exit(pid), 0) << slurp(dir_ / "spawn.err");
   EXPECT_GT(fs::file_size(out / "tiny_render.mp4"), 100u);
   EXPECT_NE(slurp(out / "manifest.json").find("\"complete\": true"), std::string::npos);
+  // The --resume a stopped render suggests works there too (it failed the same way).
+  fs::remove(out / "frame_000003.png");
+  fs::remove(out / "tiny_render.mp4");
+  const pid_t again = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4", "--resume"});
+  ASSERT_EQ(wait_exit(again), 0) << slurp(dir_ / "spawn.err");
+  EXPECT_TRUE(fs::exists(out / "frame_000003.png"));
+  EXPECT_GT(fs::file_size(out / "tiny_render.mp4"), 100u);
 }
 
 TEST_F(RobustRender, ATopDownCameraDrawsTheBodyNotABlankFrame) {
