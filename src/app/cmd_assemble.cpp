@@ -30,14 +30,12 @@ int run_assemble(const AssembleOptions& o) {
 }  // namespace
 
 void add_assemble_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<AssembleOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "assemble", "Check that the shards of a render (tumble render --frames A:B) cover every frame, then write "
-                  "manifest.json and the video");
+  const auto [cmd, o] = add_command(app, action, "assemble",
+                                    "Check that the shards of a render (tumble render --frames A:B) cover every "
+                                    "frame, then write manifest.json and the video", run_assemble);
   cmd->add_option("dir", o->dir, "The output folder the shards rendered into")->required();
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the video the shards were rendered for)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
-  cmd->callback([o, &action] { action = [o] { return run_assemble(*o); }; });
 }
 
 }  // namespace tumble::app

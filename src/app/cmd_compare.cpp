@@ -114,13 +114,13 @@ void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c) {
 void check_golden_tolerance(const golden::CompareOptions& c) { check_tolerance(c); }
 
 void add_compare_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<CompareCliOptions>();
-  CLI::App* cmd = app.add_subcommand("compare", "Compare two PNGs as golden images (exit 0 same, 1 different, 2 bad input)");
+  const auto [cmd, o] = add_command(app, action, "compare",
+                                    "Compare two PNGs as golden images (exit 0 same, "
+                                    "1 different, 2 bad input)", run_compare);
   cmd->add_option("actual", o->a, "PNG (e.g. a new render)")->required();
   cmd->add_option("expected", o->b, "PNG (e.g. the golden)")->required();
   cmd->add_option("--diff", o->diff, "Write |actual - expected| x16 as a PNG");
   add_golden_tolerance_options(cmd, o->cmp);
-  cmd->callback([o, &action] { action = [o] { return run_compare(*o); }; });
 }
 
 }  // namespace tumble::app

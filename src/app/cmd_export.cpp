@@ -38,12 +38,11 @@ int run_export(const ExportOptions& o) {
 }  // namespace
 
 void add_export_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<ExportOptions>();
-  CLI::App* cmd = app.add_subcommand("export", "Simulate a scene and write it as glTF 2.0 (bodies, keyframes, principal axes)");
-  cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  const auto [cmd, o] = add_command(app, action, "export",
+                                    "Simulate a scene and write it as glTF 2.0 "
+                                    "(bodies, keyframes, principal axes)", run_export);
   cmd->add_option("--gltf", o->gltf, "Output file: .glb (binary) or .gltf (JSON, buffer embedded)")->required();
   o->fps_opt = cmd->add_option("--fps", o->fps, "Keyframes per second (default: the scene's output fps)");
-  cmd->callback([o, &action] { action = [o] { return run_export(*o); }; });
 }
 
 }  // namespace tumble::app

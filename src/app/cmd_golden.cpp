@@ -80,10 +80,9 @@ int run_golden(const GoldenOptions& o) {
 }  // namespace
 
 void add_golden_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<GoldenOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "golden", "Check (or --update) golden images and a golden trajectory of a scene at chosen times");
-  cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  const auto [cmd, o] = add_command(app, action, "golden",
+                                    "Check (or --update) golden images and a golden trajectory of a scene at "
+                                    "chosen times", run_golden);
   cmd->add_option("--at", o->at,
                   "Times in s, comma-separated (decimals or fractions such as 1/30); each picks the nearest frame");
   cmd->add_option("--frames", o->frames, "Frame numbers instead of --at, comma-separated (frame k shows t = k/fps)");
@@ -101,7 +100,6 @@ void add_golden_command(CLI::App& app, Action& action) {
   cmd->add_flag("--physics-only", o->physics_only, "Check only the trajectory (no GL needed)");
   cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
   add_golden_tolerance_options(cmd, o->cmp);
-  cmd->callback([o, &action] { action = [o] { return run_golden(*o); }; });
 }
 
 }  // namespace tumble::app

@@ -164,11 +164,9 @@ int run_info(const InfoOptions& o) {
 }  // namespace
 
 void add_info_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<InfoOptions>();
-  CLI::App* cmd = app.add_subcommand("info", "Print each body's mass properties (world frame, t = 0)");
-  cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  const auto [cmd, o] = add_command(app, action, "info",
+                                    "Print each body's mass properties (world frame, t = 0)", run_info);
   cmd->add_flag("--json", o->json, "Machine-readable output");
-  cmd->callback([o, &action] { action = [o] { return run_info(*o); }; });
 }
 
 }  // namespace tumble::app

@@ -122,9 +122,8 @@ int run_render(const RenderOptions& o) {
 }  // namespace
 
 void add_render_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene headless to PNG frames, a manifest and a video");
-  cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  const auto [cmd, o] = add_command(app, action, "render",
+                                    "Render a scene headless to PNG frames, a manifest and a video", run_render);
   cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)");
   cmd->add_option("--width", o->width, "Frame width, px");
   cmd->add_option("--height", o->height, "Frame height, px");
@@ -157,7 +156,6 @@ void add_render_command(CLI::App& app, Action& action) {
                 "Continue an interrupted render in the output folder: frames already on disk are kept");
   cmd->add_flag("--force", o->force,
                 "Replace another render (other scene or settings) in the output folder, removing its frames");
-  cmd->callback([o, &action] { action = [o] { return run_render(*o); }; });
 }
 
 }  // namespace tumble::app

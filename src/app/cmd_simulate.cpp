@@ -160,15 +160,13 @@ int run_simulate(const SimulateOptions& o) {
 }  // namespace
 
 void add_simulate_command(CLI::App& app, Action& action) {
-  auto o = std::make_shared<SimulateOptions>();
-  CLI::App* cmd = app.add_subcommand("simulate", "Integrate a scene and write a CSV of the states");
-  cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  const auto [cmd, o] = add_command(app, action, "simulate",
+                                    "Integrate a scene and write a CSV of the states", run_simulate);
   cmd->add_option("--csv", o->csv, "Output CSV file (written atomically)")->required();
   o->method_opt = cmd->add_option("--method", o->method, "auto or " + method_list());
   o->dt_opt = cmd->add_option("--dt", o->dt, "Step size, s (overrides the scene)");
   o->duration_opt = cmd->add_option("--duration", o->duration, "Run length, s (overrides the scene)");
   o->every_opt = cmd->add_option("--every", o->every, "Sample every N steps instead of at k/fps");
-  cmd->callback([o, &action] { action = [o] { return run_simulate(*o); }; });
 }
 
 }  // namespace tumble::app

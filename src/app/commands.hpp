@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
+#include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -20,6 +23,19 @@ namespace tumble::app {
 enum ExitCode : int { kOk = 0, kRuntimeError = 1, kInputError = 2, kDiverged = 3 };
 
 using Action = std::function<int()>;
+
+/// Registers subcommand `name`: its options in an `Options` shared with the
+/// action, which runs `run` on them once the command line is parsed. A command
+/// on a scene (one with Options::scene) takes the scene file first.
+template <class Options>
+std::pair<CLI::App*, std::shared_ptr<Options>> add_command(CLI::App& app, Action& action, const std::string& name,
+                                                          const std::string& help, int (*run)(const Options&)) {
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(name, help);
+  if constexpr (requires { o->scene; }) cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  cmd->callback([o, run, &action] { action = [o, run] { return run(*o); }; });
+  return {cmd, o};
+}
 
 void add_simulate_command(CLI::App& app, Action& action);
 void add_info_command(CLI::App& app, Action& action);
