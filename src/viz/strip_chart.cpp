@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/format.hpp"
+
 namespace tumble::viz {
 
 ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float font_px)
@@ -24,16 +26,6 @@ glm::dvec3 ChartMap::at(double t, double v) const {
 glm::vec2 ChartMap::pixel(const glm::dvec3& p) const {
   return {static_cast<float>((p.x / aspect_ * 0.5 + 0.5) * w_), static_cast<float>((0.5 - p.y * 0.5) * h_)};
 }
-
-namespace {
-
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
-
-}  // namespace
 
 void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px) {
   const ChartMap m(in, width_px, height_px, font_px);
@@ -63,11 +55,11 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
   auto text = [&](const std::string& s, glm::vec2 p, Color c) { view.texts.push_back({s, p, f, c}); };
   const glm::vec2 top_left = m.pixel(m.at(in.t0, in.hi)), bottom_left = m.pixel(m.at(in.t0, in.lo));
   const glm::vec2 bottom_right = m.pixel(m.at(in.t1, in.lo));
-  text(num(in.hi), {4.0f, top_left.y - 0.5f * f}, ink);
-  text(num(in.lo), {4.0f, bottom_left.y - 0.5f * f}, ink);
+  text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
+  text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
   if (in.lo < 0 && in.hi > 0) text("0", {4.0f, m.pixel(m.at(in.t0, 0)).y - 0.5f * f}, ink);
-  text(num(in.t0) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
-  text(num(in.t1) + " s", {bottom_right.x - 3.0f * f, bottom_left.y + 0.3f * f}, ink);
+  text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
+  text(format_number(in.t1, 3) + " s", {bottom_right.x - 3.0f * f, bottom_left.y + 0.3f * f}, ink);
   float x = top_left.x;
   if (!in.title.empty()) {
     text(in.title, {x, 0.3f * f}, ink);
