@@ -45,7 +45,7 @@ BodyInfo world_info(const scene::Body& b) {
 
 /// [x, y, z] as text, for the table of to_text.
 std::string vec_text(const Eigen::Vector3d& v) {
-  return "[" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) + "]";
+  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) + "]";
 }
 
 io::Json vec_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
@@ -83,7 +83,7 @@ std::string to_text(const scene::Scene& s) {
   for (const scene::Body& b : s.bodies) {
     const BodyInfo i = world_info(b);
     o << "\nbody " << i.name << " (" << i.particles << " particles)\n"
-      << "  mass              " << format_double(i.mass) << " kg\n"
+      << "  mass              " << format_number(i.mass) << " kg\n"
       << "  centre of mass    " << row(i.com) << " m\n"
       << "  inertia about c   " << row(i.inertia.row(0).transpose()) << " kg m^2 (world, t = 0)\n"
       << "                    " << row(i.inertia.row(1).transpose()) << "\n"
@@ -102,8 +102,8 @@ std::string to_text(const scene::Scene& s) {
       char line[200];
       if (e.usable)
         std::snprintf(line, sizeof line, "    %-18s %-9s %-10.3g %10.0f steps  error %.1e rad  ~%.3g ms%s\n",
-                      std::string(method_name(e.method)).c_str(), e.method == Method::rk45 ? "rtol" : "dt (s)",
-                      e.method == Method::rk45 ? e.config.rtol : e.config.dt, e.steps, e.error, e.cost_s * 1e3,
+                      std::string(method_name(e.method)).c_str(), method_info(e.method).adaptive ? "rtol" : "dt (s)",
+                      method_info(e.method).adaptive ? e.config.rtol : e.config.dt, e.steps, e.error, e.cost_s * 1e3,
                       e.method == plan.config.method ? "  <- picked" : "");
       else
         std::snprintf(line, sizeof line, "    %-18s not usable: %s\n", std::string(method_name(e.method)).c_str(),

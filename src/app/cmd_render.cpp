@@ -131,9 +131,9 @@ int run_render(const RenderOptions& o) {
     else
       for (const scene::Body& b : s.bodies) {
         // auto with a tolerance: the pick follows from the scene bytes (hashed) and the tolerance.
-        const std::string n = !s.simulation.method && s.simulation.tolerance
-                                  ? "auto@" + format_double(*s.simulation.tolerance)
-                                  : std::string(method_name(scene::resolve_method(s.simulation.method, b.model)));
+        const std::string n = s.simulation.automatic && s.simulation.tolerance
+                                  ? "auto@" + format_number(*s.simulation.tolerance)
+                                  : std::string(method_name(scene::step_config(s.simulation, b.model).method));
         if (std::find(labels.begin(), labels.end(), n) == labels.end()) labels.push_back(n);
       }
     std::string key;
@@ -178,7 +178,7 @@ int run_render(const RenderOptions& o) {
 
   for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
   for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
-  man.dt = s.simulation.dt;
+  man.dt = s.simulation.step.dt;
   man.fps = fps;
   man.width = out.width;
   man.height = out.height;

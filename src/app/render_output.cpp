@@ -64,7 +64,7 @@ void remove_file(const fs::path& p) {
 std::string settings_hash(const scene::Scene& s, const std::string& method) {
   const scene::OutputConfig& out = s.render.output;
   std::ostringstream k;
-  k << s.content_hash << '|' << method << '|' << format_double(s.simulation.dt) << '|' << format_double(out.fps)
+  k << s.content_hash << '|' << method << '|' << format_number(s.simulation.step.dt) << '|' << format_number(out.fps)
     << '|' << out.width << 'x' << out.height << '|' << aa_setting(out).samples();
   if (out.aa == scene::Antialias::fxaa) k << "|fxaa";  // MSAA and none hash as before `aa` existed
   return scene::fnv1a_hex(k.str());

@@ -62,8 +62,9 @@ std::vector<AutoRow> auto_study(const Settings& st, std::ostream& log) {
     AutoRow row;
     row.tolerance = tol;
     row.method = std::string(method_name(c.config.method));
-    row.param_name = c.config.method == Method::rk45 ? "rtol" : "dt";
-    row.param = c.config.method == Method::rk45 ? c.config.rtol : c.config.dt;
+    const bool adaptive = method_info(c.config.method).adaptive;
+    row.param_name = adaptive ? "rtol" : "dt";
+    row.param = adaptive ? c.config.rtol : c.config.dt;
     row.predicted_error = c.error;
     row.predicted_cpu_s = c.cost_s;
     row.pilot_cpu_s = pilot;

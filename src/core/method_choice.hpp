@@ -51,7 +51,16 @@ double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodySt
 /// choice does not depend on the load of the machine it runs on.
 double step_cost_ns(Method method, bool forced);
 
-/// Torque-free bodies get `exact` (the closed form, error at round-off). Other
+/// `method = "auto"`'s first rule, the one place it is decided: a torque-free
+/// body needs no measurement, as the closed form (`exact`) is exact for it.
+bool auto_takes_closed_form(const RigidBodyModel& m);
+
+/// `method = "auto"` without a tolerance: `exact` for a torque-free body, else
+/// `asked` as it is (dt, rtol, atol, and StepConfig's default method unless the
+/// caller set another), with the one-line reason. No candidates are measured.
+MethodChoice auto_without_tolerance(const RigidBodyModel& m, const StepConfig& asked);
+
+/// Torque-free bodies get `exact` (auto_takes_closed_form). Other
 /// bodies: each candidate runs the whole duration at N, 2N, 4N, … steps; the
 /// differences of successive end states give its error (Richardson: e(h) ≈
 /// d/(2^p - 1) once two successive ratios match the order p), which fixes the

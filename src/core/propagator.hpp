@@ -15,12 +15,19 @@
 
 namespace tumble {
 
+/// How a body is stepped: the one config of the core, the scenes' [simulation]
+/// and the CLI. Its default method is the scenes' default: `splitting` keeps
+/// |L| exactly and the energy without drift at any dt, forces or not.
 struct StepConfig {
-  Method method = Method::rk4;
-  double dt = 1e-3;         ///< s, fixed step (rk45: its largest step)
-  double rtol = 1e-9;       ///< rk45 only
-  double atol = 1e-12;      ///< rk45 only
+  Method method = Method::splitting;
+  double dt = 1e-3;         ///< s, fixed step (adaptive methods: their largest step)
+  double rtol = 1e-9;       ///< adaptive methods only (MethodInfo::adaptive)
+  double atol = 1e-12;      ///< adaptive methods only
 };
+
+/// Most steps one run may take (duration / dt): scenes reject more, and
+/// `method = "auto"` never picks more.
+inline constexpr double kMaxRunSteps = 1e9;
 
 /// A warning when dt is too coarse for the method to follow the body's initial
 /// rotation: dt·(|ω| + damping rates) above MethodInfo::max_turn_per_step.
