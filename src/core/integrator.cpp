@@ -23,22 +23,45 @@ struct Cost {
 // alias a turn of π or more per step.
 constexpr double kFollowRk = 0.5, kFollowFirstOrder = 0.1, kFollowGeometric = 3.0;
 
-//  method, name, order, step, coords_step, ordered_step, adaptive, closed form if free, auto candidate, splits, turn, cost
+//  method, name, description, order, step, coords_step, ordered_step, adaptive, closed form if free, auto candidate, splits, turn, cost
 constexpr MethodInfo kTable[] = {
-    {Method::euler, "euler", 1, euler_step, nullptr, nullptr, false, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
-    {Method::semi_implicit_euler, "semi_implicit_euler", 1, semi_implicit_euler_step, nullptr, nullptr, false, false, false, false,
+    {Method::euler, "euler",
+     "explicit Euler on (c, q, P, L), q renormalised",
+     1, euler_step, nullptr, nullptr, false, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
+    {Method::semi_implicit_euler, "semi_implicit_euler",
+     "momenta first, then positions with the new velocities; orientation by the exponential map",
+     1, semi_implicit_euler_step, nullptr, nullptr, false, false, false, false,
      kFollowFirstOrder, kCostSemiImplicitEuler.free, kCostSemiImplicitEuler.forced},
-    {Method::rk4, "rk4", 4, rk4_body_step, rk4_coords_step, nullptr, false, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
-    {Method::rk4_seed, "rk4_seed", 4, rk4_step, nullptr, nullptr, false, false, false, false, kFollowRk, kCostRk4Seed.free,
+    {Method::rk4, "rk4",
+     "classical Runge–Kutta with the rotation in Euler's coordinates: Π = Rᵀ L (principal frame), Π' = Π "
+     "× ω_body + Rᵀτ, q' = ½ q ⊗ ω_body; state and CSV stay (c, q, P, L)",
+     4, rk4_body_step, rk4_coords_step, nullptr, false, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
+    {Method::rk4_seed, "rk4_seed",
+     "the same RK4 on the seed's coordinates (q, L_world), Butcher tableau as data: kept to show what the "
+     "coordinates cost",
+     4, rk4_step, nullptr, nullptr, false, false, false, false, kFollowRk, kCostRk4Seed.free,
      kCostRk4Seed.forced},
-    {Method::rk45, "rk45", 5, rk45_fixed_step, nullptr, nullptr, true, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
-    {Method::implicit_midpoint, "implicit_midpoint", 2, implicit_midpoint_step, nullptr, nullptr, false, false, true, false,
+    {Method::rk45, "rk45",
+     "adaptive Dormand–Prince in Euler's coordinates, with rtol/atol and dense output at sample times",
+     5, rk45_fixed_step, nullptr, nullptr, true, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
+    {Method::implicit_midpoint, "implicit_midpoint",
+     "midpoint rule on Euler's equations (keeps energy and |L| to round-off, GNI IV.2.1), Cayley "
+     "orientation update keeps world L",
+     2, implicit_midpoint_step, nullptr, nullptr, false, false, true, false,
      kFollowGeometric, kCostImplicitMidpoint.free, kCostImplicitMidpoint.forced},
-    {Method::splitting, "splitting", 2, splitting_step, nullptr, splitting_step_ordered, false, false, true, true, kFollowGeometric,
+    {Method::splitting, "splitting",
+     "symplectic, time-reversible NO_SQUISH / Dullweber–Leimkuhler–McLachlan splitting with exact planar "
+     "sub-rotations; forces as Strang half kicks",
+     2, splitting_step, nullptr, splitting_step_ordered, false, false, true, true, kFollowGeometric,
      kCostSplitting.free, kCostSplitting.forced},
-    {Method::splitting4, "splitting4", 4, splitting4_step, nullptr, nullptr, false, false, true, true, kFollowGeometric,
+    {Method::splitting4, "splitting4",
+     "Yoshida triple-jump composition of `splitting`",
+     4, splitting4_step, nullptr, nullptr, false, false, true, true, kFollowGeometric,
      kCostSplitting4.free, kCostSplitting4.forced},
-    {Method::exact, "exact", 0, exact_step, nullptr, nullptr, false, true, true, false, kFollowGeometric, kCostExact.free,
+    {Method::exact, "exact",
+     "closed-form torque-free rotation (Jacobi elliptic functions, elliptic integral of the third kind "
+     "via Carlson's R_J); with forces, Strang-composed with exact half kicks",
+     0, exact_step, nullptr, nullptr, false, true, true, false, kFollowGeometric, kCostExact.free,
      kCostExact.forced},
 };
 static_assert(std::size(kTable) == kAllMethods.size());

@@ -42,6 +42,10 @@ using OrderedStepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s,
 struct MethodInfo {
   Method method;
   std::string_view name;
+  /// One line for people (markdown: `code`, no '|' escaping): what the method
+  /// is and what it integrates in. The README's method table is generated from
+  /// it (`tumble methods --readme README.md`).
+  std::string_view description;
   int order;                 ///< global order (rk45: of its 5th-order solution; exact: 0 = exact when torque-free)
   StepFn step;               ///< one fixed step (rk45: one uncontrolled Dormand–Prince step)
   CoordsStepFn coords_step;  ///< the same step in Euler's coordinates, or nullptr (steps on the seed's state)
