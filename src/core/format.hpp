@@ -10,8 +10,8 @@ namespace tumble {
 /// Significant digits that read back to the same double (CSV, hashes, messages
 /// quoting a value the user wrote).
 inline constexpr int kRoundTripDigits = 17;
-/// The fewest digits that read back to the same double, in fixed or exponent
-/// form, whichever is shorter (std::to_chars): for help texts.
+/// The fewest digits that read back to the same double (std::to_chars,
+/// chars_format::general): for help texts.
 inline constexpr int kShortestDigits = -1;
 
 /// `v` as printf("%.{digits}{conversion}") with conversion 'g', 'e' or 'f'

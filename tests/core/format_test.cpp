@@ -28,7 +28,8 @@ TEST(FormatNumber, PrintfConversions) {
 TEST(FormatNumber, ShortestForHelpTexts) {
   EXPECT_EQ(format_number(0.1, kShortestDigits), "0.1");
   EXPECT_EQ(format_number(5e-4, kShortestDigits), "0.0005");
-  EXPECT_EQ(format_number(1e5, kShortestDigits), "1e+05");
+  EXPECT_EQ(format_number(1e5, kShortestDigits), "100000");
+  EXPECT_EQ(format_number(2.5e-7, kShortestDigits), "2.5e-07");
 }
 
 TEST(FormatNumber, RejectsWhatPrintfCannotMean) {
