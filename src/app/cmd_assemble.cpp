@@ -1,136 +1,30 @@
 // `tumble assemble DIR`: the shards of a render (`tumble render --frames A:B`,
 // each with its manifest part) checked to add up, then one manifest.json and
 // the video, as a single run would have made them.
-#include <cmath>
-#include <filesystem>
-#include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/commands.hpp"
-#include "app/manifest_parts.hpp"
 #include "app/progress.hpp"
-#include "app/render_output.hpp"
-#include "app/stop_signals.hpp"
-#include "app/video.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/frame_files.hpp"
+#include "run/assemble.hpp"
 
 namespace tumble::app {
 
 namespace {
 
-namespace fs = std::filesystem;
-
 struct AssembleOptions {
   std::string dir, video, progress = "auto";
 };
 
-std::string describe(const Part& p) {
-  return "scene hash " + p.scene_hash + ", settings hash " + p.settings_hash + ", " +
-         std::to_string(p.frame_count) + " frames, video " + p.video_format + " at CRF " + std::to_string(p.crf);
-}
-
-/// Every reason the parts do not make one whole render (empty when they do):
-/// a part of another render (hashes, frame count, video settings differ from
-/// `ref`), an incomplete part, frames that no complete part covers or whose
-/// file is gone. Overlaps of agreeing parts are fine: same settings, same pixels.
-std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part>& parts, const Part& ref) {
-  std::vector<std::string> errors;
-  std::vector<char> have(static_cast<std::size_t>(ref.frame_count), 0);
-  for (const Part& p : parts) {
-    if (!p.ok) {
-      errors.push_back(p.file + ": not a manifest part written by tumble (unreadable, or fields missing)");
-    } else if (describe(p) != describe(ref)) {
-      errors.push_back(p.file + " (" + describe(p) + ") is not a shard of the same render as " + ref.file + " (" +
-                       describe(ref) + "); render its frames again with the same scene and options, or remove it");
-    } else if (!p.complete) {
-      errors.push_back(p.file + ": incomplete (" + std::to_string(p.written) + " of " +
-                       std::to_string(p.last - p.first + 1) + " frames written); finish it with tumble render " +
-                       p.json.value("scene", "SCENE") + " -o " + dir.string() + " --frames " + std::to_string(p.first) +
-                       ":" + std::to_string(p.last) + " --resume");
-    } else {
-      std::error_code ec;
-      for (long k = std::max(0L, p.first); k <= p.last && k < ref.frame_count; ++k)
-        have[static_cast<std::size_t>(k)] = fs::exists(io::frame_path(dir, k), ec) ? 1 : 0;
-    }
-  }
-  std::vector<std::pair<long, long>> covered;
-  for (long k = 0; k < ref.frame_count; ++k)
-    if (have[static_cast<std::size_t>(k)]) covered.emplace_back(k, k);
-  if (const std::string gaps = missing_ranges(covered, ref.frame_count); !gaps.empty())
-    errors.push_back("frames " + gaps + " of 0:" + std::to_string(ref.frame_count - 1) +
-                     " are missing (no complete part covers them, or their files are gone); render them with "
-                     "--frames A:B");
-  return errors;
-}
-
 int run_assemble(const AssembleOptions& o) {
   if (o.progress != "auto" && o.progress != "none")
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
-  if (!o.video.empty() && o.video != "mp4" && o.video != "gif" && o.video != "none")
-    throw InputError("--video: expected mp4, gif or none, found '" + o.video + "'");
-  const fs::path dir = o.dir;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw io::IoError("'" + dir.string() + "' is not a folder");
-  const std::vector<Part> parts = read_parts(dir);
-  if (parts.empty())
-    throw InputError("tumble assemble: " + dir.string() +
-                     " holds no manifest.part-*.json; render the shards first with tumble render SCENE -o " +
-                     dir.string() + " --frames A:B");
-  const Part* ref = nullptr;
-  for (const Part& p : parts)
-    if (p.ok && !ref) ref = &p;
-  if (!ref) throw InputError("tumble assemble: no manifest part in " + dir.string() + " was written by tumble");
-  if (const std::vector<std::string> errors = check_parts(dir, parts, *ref); !errors.empty()) {
-    std::string msg = "tumble assemble: the shards in " + dir.string() + " do not make a whole render:";
-    for (const std::string& e : errors) msg += "\n  " + e;
-    throw InputError(msg);
-  }
-  const long count = ref->frame_count;
-  // An earlier, longer render's frames past the end are not part of this one.
-  for (const fs::path& f : list_dir(dir, io::is_frame_file))
-    if (std::atol(f.filename().string().c_str() + 6) >= count) remove_file(f);
-
-  io::Json man = ref->json;
-  man["frames"] = {0, count - 1};
-  man["frames_written"] = count;
-  man["video"] = nullptr;
-  man["video_error"] = nullptr;
-  man["replacing"] = false;
-  man["complete"] = false;
-  man["assembled_from"] = io::Json::array();
-  for (const Part& p : parts) man["assembled_from"].push_back(p.file);
-  const std::string format = o.video.empty() ? ref->video_format : o.video;
-  man["video_format"] = format;
-  const fs::path mpath = dir / "manifest.json";
-  const StopSignals stop;
-  std::string video_name;
-  if (format != "none") {
-    const VideoFormat f = format == "mp4" ? VideoFormat::mp4 : VideoFormat::gif;
-    video_name = video_file_name(man.value("scene_name", std::string()), f);
-    io::write_json_atomic(mpath, man);  // "complete": false until the video exists
-    Progress encoding(count, o.progress != "none");
-    const VideoResult v =
-        encode_video(dir, static_cast<int>(std::lround(man.value("fps", 30.0))), f, ref->crf, dir / video_name,
-                     [&] { return stop.received(); }, [&](long n) { encoding.update(std::min(n, count)); });
-    encoding.finish();
-    if (!v.ok()) {
-      man["video_error"] = v.message;
-      io::write_json_atomic(mpath, man);
-      std::cerr << "tumble: " << v.message << "\ntumble: the parts are kept; run tumble assemble " << dir.string()
-                << " again\n";
-      return v.status == VideoResult::interrupted ? 128 + v.signal : kRuntimeError;
-    }
-    man["video"] = video_name;
-  }
-  man["complete"] = true;
-  io::write_json_atomic(mpath, man);
-  // manifest.json now records the whole render (and lists the parts it came from).
-  for (const Part& p : parts) remove_file(dir / p.file);
-  std::cout << "assembled frames 0.." << count - 1 << " from " << parts.size() << " parts in " << dir.string()
-            << (video_name.empty() ? "" : " (video " + video_name + ")") << "\n";
-  return kOk;
+  const std::optional<scene::VideoFormat> video = scene::parse_video_format(o.video);
+  if (!o.video.empty() && !video)
+    throw InputError("--video: expected " + scene::video_format_choices() + ", found '" + o.video + "'");
+  ConsoleListener listener(o.progress != "none");
+  return exit_code(run::assemble(o.dir, video, listener));
 }
 
 }  // namespace

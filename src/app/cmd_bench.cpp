@@ -15,7 +15,7 @@
 #include "bench/bench.hpp"
 #include "io/atomic_file.hpp"
 #ifdef TUMBLE_HAVE_RENDER
-#include "app/render_bench.hpp"
+#include "run/render_bench.hpp"
 #include "render/resource_dir.hpp"
 #endif
 
@@ -115,7 +115,7 @@ void add_bench_command(CLI::App& app, Action& action) {
       const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
       if (!o->scene.empty() && !o->readme.empty()) throw InputError("--render --readme-table measures the demo; drop --scene");
       if (!o->scene.empty()) {
-        run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout);
+        run::run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout);
         return kOk;
       }
       // Anti-aliasing quality also on a comparison grid and on an explained
@@ -127,11 +127,11 @@ void add_bench_command(CLI::App& app, Action& action) {
         read_markers(o->readme, "bench:render-dense");  // both blocks there before minutes of measuring
         text = read_markers(o->readme, "bench:render");
       }
-      const RenderBenchResult r =
-          run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout, quality);
+      const run::RenderBenchResult r =
+          run::run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout, quality);
       // Then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
-      const RenderBenchResult d =
-          run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout);
+      const run::RenderBenchResult d =
+          run::run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout);
       if (!o->readme.empty()) {
         text = bench::replace_between_markers(text, "bench:render", r.markdown);
         io::atomic_write_file(o->readme, bench::replace_between_markers(text, "bench:render-dense", d.markdown));

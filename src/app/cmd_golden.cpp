@@ -6,21 +6,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <set>
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "app/frame_renderer.hpp"
+#include "run/golden_check.hpp"
+#include "scene/frame_settings.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "golden/compare.hpp"
 #include "golden/report.hpp"
 #include "golden/trajectory.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json.hpp"
-#include "io/png.hpp"
 #include "render/gl_context.hpp"
 
 namespace tumble::app {
@@ -106,165 +104,61 @@ std::vector<long> golden_frames(const std::string& at, const std::string& frames
   return {ks.begin(), ks.end()};
 }
 
-std::string slurp(const fs::path& p, bool& ok) {
-  std::ifstream in(p, std::ios::binary);
-  ok = static_cast<bool>(in);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// A string field of a sidecar, or "?".
-std::string sidecar_field(const std::optional<io::Json>& j, const char* key) {
-  if (!j) return "?";
-  const auto it = j->find(key);
-  return it != j->end() && it->is_string() ? it->get<std::string>() : "?";
+/// The anti-aliasing cases to check, each at the command's size: --msaa's
+/// or --aa's list, else the scene's own.
+std::vector<scene::FrameSettings> golden_cases(const GoldenOptions& o, const scene::Scene& s) {
+  if (!o.msaa.empty() && !o.aa.empty()) throw InputError("--msaa and --aa: choose one (--aa msaa4 is --msaa 4)");
+  std::vector<scene::FrameSettings> cases;
+  if (o.msaa.empty() && o.aa.empty()) cases.push_back(s.render.output);
+  auto add = [&](const std::string& name, const std::string& what) {
+    scene::FrameSettings f = s.render.output;
+    if (!scene::parse_aa_case(name, f)) throw InputError(what);
+    cases.push_back(f);
+  };
+  for (const std::string& m : split_list(o.msaa))
+    add("msaa" + m, "--msaa: expected a list of 0, 2, 4, found '" + m + "'");
+  for (const std::string& a : split_list(o.aa))
+    add(a, "--aa: expected " + scene::aa_case_choices() + ", found '" + a + "'");
+  return cases;
 }
 
 int run_golden(const GoldenOptions& o) {
   check_golden_tolerance(o.cmp);
   if (!(o.tol.rtol >= 0) || !(o.tol.atol >= 0)) throw InputError("--rtol/--atol: expected numbers >= 0");
   if (o.every < 1) throw InputError("--every: expected an integer >= 1");
-  for (int v : {o.width, o.height})
-    if (v < 16 || v > 16384) throw InputError("--width/--height: expected 16..16384 px, found " + std::to_string(v));
   // GL is set up like an option, before any file is written: an unknown
   // backend or a machine without GL must not leave a half-updated golden set.
   const render::GlBackend backend = o.physics_only ? render::GlBackend::osmesa : parse_backend_option(o.gl);
   const std::unique_ptr<render::GlContext> ctx = o.physics_only ? nullptr : render::create_gl_context(backend);
-  const scene::Scene s = load_scene_verbose(o.scene);
-  std::vector<AaSetting> aas;
-  if (!o.msaa.empty() && !o.aa.empty()) throw InputError("--msaa and --aa: choose one (--aa msaa4 is --msaa 4)");
-  if (o.msaa.empty() && o.aa.empty()) aas.push_back(aa_setting(s.render.output));
-  for (const std::string& m : split_list(o.msaa)) {
-    if (m != "0" && m != "2" && m != "4") throw InputError("--msaa: expected a list of 0, 2, 4, found '" + m + "'");
-    aas.push_back(parse_aa_setting("msaa" + m, "--msaa"));
-  }
-  for (const std::string& a : split_list(o.aa)) aas.push_back(parse_aa_setting(a, "--aa"));
-  const double fps = s.render.output.fps;
-  const scene::FrameClock clock = scene::frame_clock(s, fps);
-  const std::vector<long> ks = golden_frames(o.at, o.frames, clock);
-  const fs::path dir = o.dir;
+  // The size goes through the scene reader, which checks it as it checks a scene's.
+  const scene::Scene s = load_scene_verbose(
+      o.scene, {{"--width", "output.width", static_cast<long long>(o.width)},
+                {"--height", "output.height", static_cast<long long>(o.height)}});
+  const std::vector<scene::FrameSettings> cases = golden_cases(o, s);
+  const std::vector<long> ks = golden_frames(o.at, o.frames, scene::frame_clock(s, s.render.output.fps));
   const fs::path report_dir = o.report.empty() ? fs::path("golden-report") / s.name : fs::path(o.report);
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw io::IoError("cannot create " + dir.string() + ": " + ec.message());
+  fs::create_directories(o.dir, ec);
+  if (ec) throw io::IoError("cannot create " + o.dir + ": " + ec.message());
 
-  const SceneFrames frames(s, ks.back());
+  const run::SceneFrames frames(s, ks.back());
   golden::Report report(report_dir, "tumble golden: " + s.name + " (" + s.path.string() + ")");
-  int failed = 0, cases = 0, written = 0;
-  auto line = [&](bool pass, const std::string& status, const std::string& what, const std::string& figures) {
-    ++cases;
-    failed += !pass;
-    std::cout << status << "  " << what << ": " << figures << "\n";
-  };
-
-  // Golden physics: every `every`-th frame up to the last golden time, plus the golden frames.
-  {
-    std::set<long> rows(ks.begin(), ks.end());
-    for (long k = 0; k <= ks.back(); k += o.every) rows.insert(k);
-    const std::string actual = frames.trajectory_csv({rows.begin(), rows.end()});
-    const fs::path path = dir / (s.name + ".trajectory.csv");
-    bool ok = false;
-    const std::string expected = slurp(path, ok);
-    const std::string what = "physics " + path.filename().string();
-    if (o.update) {
-      if (!ok || expected != actual) {
-        io::atomic_write_file(path, actual);
-        ++written;
-        std::cout << (ok ? "updated  " : "created  ") << path.string()
-                  << (ok ? "  (was: " + golden::compare_trajectories(actual, expected, o.tol).summary + ")" : "") << "\n";
-      }
-    } else if (!ok) {
-      const std::string msg = "no golden " + path.string() + "; run with --update (or TUMBLE_UPDATE_GOLDENS=1 ctest -L golden) to create it";
-      line(false, "MISSING", what, msg);
-      report.add_text(what, false, "MISSING", msg);
-    } else {
-      const golden::TrajectoryComparison c = golden::compare_trajectories(actual, expected, o.tol);
-      line(c.pass, c.pass ? "PASS   " : "PHYSICS", what, c.summary);
-      report.add_text(what, c.pass, c.pass ? "pass" : "PHYSICS CHANGED", c.summary);
-    }
-  }
-
-  if (ctx) {
-    const std::string gl_renderer = ctx->renderer(), gl_version = ctx->version();
-    for (const AaSetting& aa : aas) {
-      int samples = 0;
-      const std::vector<io::Image> images = frames.render(*ctx, ks, o.width, o.height, aa, &samples);
-      for (std::size_t i = 0; i < ks.size(); ++i) {
-        const long k = ks[i];
-        char base[160];
-        std::snprintf(base, sizeof base, "%s_f%06ld_%s", s.name.c_str(), k, aa.name().c_str());
-        const fs::path png = dir / (std::string(base) + ".png"), side = dir / (std::string(base) + ".json");
-        char what[200];
-        std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) %s %dx%d", s.name.c_str(), clock.time(k), k,
-                      aa.name().c_str(), o.width, o.height);
-        const io::Image& actual = images[i];
-        std::optional<io::Image> expected;
-        std::string read_error;
-        if (fs::exists(png)) {
-          try {
-            expected = io::read_png(png);
-          } catch (const std::exception& e) {
-            read_error = e.what();
-          }
-        }
-        if (o.update) {
-          io::Json j{{"scene", s.path.filename().string()}, {"t", clock.time(k)},
-                           {"frame", k}, {"fps", fps}, {"width", o.width}, {"height", o.height}, {"msaa", aa.samples()},
-                           {"samples", samples}, {"gl_backend", render::to_string(backend)},
-                           {"gl_renderer", gl_renderer}, {"gl_version", gl_version},
-                           {"tumble_version", TUMBLE_VERSION}};
-          if (aa.fxaa()) j["aa"] = "fxaa";  // msaa goldens keep their sidecars as they were
-          const bool same = expected && expected->width == actual.width && expected->height == actual.height &&
-                            expected->rgb == actual.rgb;
-          const std::optional<io::Json> old_side = io::read_json_file(side);
-          const bool side_same = old_side && *old_side == j;  // by value: 30 and 30.0 are one fps
-          if (!same) {
-            io::write_png_atomic(png, actual);
-            std::cout << (expected ? "updated  " : "created  ") << png.string()
-                      << (expected ? "  (was: " + golden::compare_images(actual, *expected, o.cmp).summary + ")" : "")
-                      << "\n";
-          }
-          if (!same || !side_same) {
-            io::write_json_atomic(side, j);
-            ++written;
-          }
-          continue;
-        }
-        const std::optional<io::Json> sidecar = io::read_json_file(side);
-        const std::string note = "expected made with " +
-                                 (sidecar ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
-                                          : std::string("? (no sidecar ") + side.filename().string() + ")") +
-                                 "; actual with " + gl_renderer + ", " + gl_version;
-        if (!fs::exists(png)) {
-          const std::string msg = "no golden " + png.string() + "; run with --update (or TUMBLE_UPDATE_GOLDENS=1 ctest -L golden) to create it";
-          line(false, "MISSING", what, msg);
-          report.add_image(base, what, actual, nullptr, nullptr, o.cmp, false, "MISSING", msg);
-          continue;
-        }
-        if (!expected) {
-          line(false, "UNREADABLE", what, read_error);
-          report.add_image(base, what, actual, nullptr, nullptr, o.cmp, false, "UNREADABLE", read_error);
-          continue;
-        }
-        const golden::Comparison c = golden::compare_images(actual, *expected, o.cmp);
-        line(c.pass, c.pass ? "PASS   " : "FAIL   ", what, c.summary);
-        report.add_image(base, what, actual, &*expected, &c, o.cmp, c.pass, c.pass ? "pass" : "FAIL", note);
-      }
-    }
-  }
+  run::GoldenCheck g{s, frames, ks, o.dir, report, std::cout, o.update, o.every, o.cmp, o.tol};
+  g.check_physics();
+  if (ctx)
+    for (const scene::FrameSettings& f : cases) g.check_images(f, *ctx, backend);
   if (o.update) {
-    std::cout << "golden: " << written << " file(s) written in " << dir.string()
+    std::cout << "golden: " << g.written << " file(s) written in " << g.dir.string()
               << " (the rest were already identical); review them and commit\n";
     return kOk;
   }
-  if (failed) {
+  if (g.failed) {
     const fs::path index = report.write();
-    std::cout << "golden: " << failed << " of " << cases << " cases FAILED; report: " << fs::absolute(index).string()
-              << "\n";
+    std::cout << "golden: " << g.failed << " of " << g.cases << " cases FAILED; report: "
+              << fs::absolute(index).string() << "\n";
     return kGoldenFailed;
   }
-  std::cout << "golden: all " << cases << " cases pass\n";
+  std::cout << "golden: all " << g.cases << " cases pass\n";
   return kOk;
 }
 

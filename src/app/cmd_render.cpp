@@ -1,30 +1,13 @@
 // `tumble render SCENE`: frames (PNG, atomic), manifest.json and a video.
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <csignal>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
+#include <stdexcept>
 
-#include "io/atomic_file.hpp"
-#include "io/frame_files.hpp"
 #include "app/commands.hpp"
-#include "app/frame_renderer.hpp"
 #include "app/progress.hpp"
-#include "app/render_output.hpp"
-#include "app/manifest_parts.hpp"
-#include "app/render_job.hpp"
-#include "app/render_stream.hpp"
-#include "app/stop_signals.hpp"
-#include "app/video.hpp"
-#include "render/frame_encoder.hpp"
 #include "render/gl_context.hpp"
-#include "render/renderer.hpp"
+#include "run/render_folder.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {
@@ -40,19 +23,18 @@ struct RenderOptions {
   bool resume = false, force = false;
 };
 
-/// What --quality caps (unless --aa or --msaa say otherwise): MSAA samples
-/// (0: no anti-aliasing at all) and the video's CRF. FXAA costs about as
-/// much as no anti-aliasing, so medium and high keep a scene's fxaa.
-struct Quality {
-  int msaa, crf;
-};
+}  // namespace
 
-Quality parse_quality(const std::string& q) {
-  if (q == "low") return {0, 28};
-  if (q == "medium") return {2, 23};
-  if (q == "high") return {4, 18};
-  throw InputError("--quality: expected low, medium or high, found '" + q + "'");
+render::GlBackend parse_backend_option(const std::string& gl) {
+  const std::string where = gl.empty() ? "TUMBLE_GL" : "--gl";
+  try {
+    return gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(gl);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where + ": " + e.what());
+  }
 }
+
+namespace {
 
 /// The options that are scene keys go into the scene before it is validated,
 /// so the loader's checks (sizes, frame cap, names) cover them too.
@@ -69,16 +51,15 @@ std::vector<scene::Override> scene_overrides(const RenderOptions& o) {
   return v;
 }
 
-/// The run configuration, every option checked before any work.
+/// The scene with the options applied, every option checked before any work.
 struct RenderPlan {
   scene::Scene scene;
-  Quality quality;
   render::GlBackend backend;
-  long count;
 };
 
 RenderPlan plan_render(const RenderOptions& o) {
-  const Quality q = parse_quality(o.quality);
+  const std::optional<scene::Quality> q = scene::parse_quality(o.quality);
+  if (!q) throw InputError("--quality: expected " + scene::quality_choices() + ", found '" + o.quality + "'");
   if (o.progress != "auto" && o.progress != "none")
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
   if (o.frames_out != "png" && o.frames_out != "none")
@@ -91,207 +72,22 @@ RenderPlan plan_render(const RenderOptions& o) {
                      "choose --video mp4 or gif");
   if (o.frames_out == "none" && !o.frames.empty())
     throw InputError("--frames-out none streams the whole video; --frames needs PNG frames (--frames-out png)");
-  if (!o.msaa && o.aa.empty()) {
-    if (q.msaa == 0) out.aa = scene::Antialias::none;
-    out.msaa = std::min(out.msaa, q.msaa);
-  }
-  const long count = scene::frame_clock(s, out.fps).count();
-  return {std::move(s), q, backend, count};
-}
-
-std::string quote_arg(const std::string& a) {
-  if (a.find_first_of(" '\"\\$`") == std::string::npos) return a;
-  std::string q = "'";
-  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+  out.apply_quality(*q, o.msaa || !o.aa.empty());
+  return {std::move(s), backend};
 }
 
 int run_render(const RenderOptions& o) {
-  RenderPlan plan = plan_render(o);
-  const scene::Scene& s = plan.scene;
-  const scene::OutputConfig& out = s.render.output;
-  const double fps = out.fps;
-  const long count = plan.count;
-  const std::pair<long, long> asked =
-      o.frames.empty() ? std::pair<long, long>{0, count - 1} : parse_frame_range(o.frames, count);
-  const fs::path dir = o.out_dir.empty() ? fs::path("out") / s.name : fs::path(o.out_dir);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw io::IoError("cannot create output folder '" + dir.string() + "': " + ec.message());
-  if (!fs::is_directory(dir, ec)) throw io::IoError("output path '" + dir.string() + "' is not a folder");
-
-  Manifest man;
-  man.scene_path = s.path.string();
-  man.scene_name = s.name;
-  man.scene_hash = s.content_hash;
-  {
-    std::vector<std::string> labels;
-    if (!s.render.compare_methods.empty())
-      for (Method m : s.render.compare_methods) labels.emplace_back(method_name(m));
-    else
-      for (const scene::Body& b : s.bodies) {
-        // auto with a tolerance: the pick follows from the scene bytes (hashed) and the tolerance.
-        const std::string n = s.simulation.automatic && s.simulation.tolerance
-                                  ? "auto@" + format_number(*s.simulation.tolerance)
-                                  : std::string(method_name(scene::step_config(s.simulation, b.model).method));
-        if (std::find(labels.begin(), labels.end(), n) == labels.end()) labels.push_back(n);
-      }
-    std::string key;
-    for (const auto& l : labels) key += l + ",";
-    man.settings_hash = settings_hash(s, key);
-  }
-  // A shard (a range short of the whole render) records itself in its own
-  // part, so shards running at once never overwrite each other's manifest.
-  const bool shard = asked.first != 0 || asked.second != count - 1;
-  const std::string own = shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
-  const fs::path man_path = dir / own;
-  const Existing existing = inspect_output(dir, man, own, o.force);
-  std::pair<long, long> range = asked;
-  if (o.frames.empty() && o.resume && existing.resumable && existing.first >= 0 && existing.last < count &&
-      existing.first <= existing.last)
-    range = {existing.first, existing.last};  // continue the range that was being rendered
-  const auto [first, last] = range;
-  const bool resume = o.resume && existing.resumable;
-  man.replacing = existing.replacing;
-  if (existing.replacing)
-    std::cerr << "tumble: replacing the earlier render of " << s.name << " in " << dir.string()
-              << " (scene or settings changed): frames are overwritten one by one, the rest removed at the end\n";
-  // A process killed mid-write leaves its temp files; they are never valid output.
-  // A shard removes only its own: the others' in-flight temp files look the same.
-  for (const fs::path& t : list_dir(dir, is_stale_temp)) {
-    const std::string target(io::temp_target_name(t.filename().string()));
-    const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
-    if (!shard || target == own || (k >= first && k <= last)) remove_file(t);
-  }
-
-  const std::vector<Run> runs = simulate_runs(s, count, fps);
-  for (const Run& r : runs)
-    for (const std::string& note : r.auto_notes) std::cerr << "tumble: " << note << "\n";
-  const FrameBuilder builder(s, runs, fps, out.width, out.height);
-  long good = count;  // frames every run could reach (single run: stop at divergence)
-  if (runs.size() == 1) good = static_cast<long>(runs[0].frames.size());
-
-  const render::GlBackend backend = plan.backend;
-  auto ctx = render::create_gl_context(backend);
-  const AaSetting aa = aa_setting(out);
-  render::Renderer renderer(*ctx, out.width, out.height, aa.samples(), aa.fxaa());
-
-  for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
-  for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
-  man.dt = s.simulation.step.dt;
-  man.fps = fps;
-  man.width = out.width;
-  man.height = out.height;
-  man.aa = std::string(scene::antialias_name(out.aa));
-  man.msaa = renderer.samples();
-  man.frame_count = count;
-  man.first = first;
-  man.last = last;
-  man.gl_version = ctx->version();
-  man.gl_renderer = ctx->renderer();
-  man.backend = std::string(render::to_string(backend));
-  man.frames_out = o.frames_out;
-  man.video_format = out.video == scene::VideoFormat::none ? "none" : out.video == scene::VideoFormat::mp4 ? "mp4" : "gif";
-  man.crf = plan.quality.crf;
-
-  // From here on, files change: Ctrl-C / SIGTERM stop between frames instead
-  // of killing the process, so the manifest tells what is on disk.
-  const StopSignals stop;
-  if (o.frames_out == "none") {
-    io::atomic_write_file(man_path, man.json());
-    std::string rerun = "tumble render " + quote_arg(o.scene) + " -o " + quote_arg(dir.string()) + " --frames-out none";
-    return stream_render({dir, s, builder, renderer, man, existing, good, o.progress != "none",
-                          [&] { return stop.received(); }, rerun, runs[0].diverged.value_or("stopped early")});
-  }
-  long drawn = 0;  // frames this run submitted (whole on disk once the encoder is flushed)
-  auto on_disk = [&] {
-    if (man.replacing) return drawn;  // the earlier render's frames are not ours
-    long n = 0;
-    for (long k = first; k <= last; ++k) n += fs::exists(io::frame_path(dir, k), ec) ? 1 : 0;
-    return n;
-  };
-  if (resume) man.written = on_disk();
-  io::atomic_write_file(man_path, man.json());
-
-  Progress progress(last - first + 1, o.progress != "none");
-  long skipped = 0;
-  int signal = 0;
-  try {
-    render::FrameEncoder encoder(2, 4);
-    for (long k = first; k <= last && k < good; ++k) {
-      if ((signal = stop.received()) != 0) break;
-      if (resume && fs::exists(io::frame_path(dir, k), ec)) {
-        ++skipped;  // written whole by an earlier run (rename is atomic)
-      } else {
-        // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
-        // page faults. The encoder's threads finish it (FXAA) while we draw on.
-        render::RawFrame raw = encoder.recycle_raw();
-        renderer.render(builder.build(k), raw);
-        encoder.submit(io::frame_path(dir, k), std::move(raw));
-        ++drawn;
-      }
-      progress.update(k - first + 1);
-    }
-    encoder.flush();  // the frames in flight are finished, not dropped
-  } catch (const std::runtime_error& e) {  // a frame could not be written: disk full, permissions
-    man.written = on_disk();
-    try {
-      io::atomic_write_file(man_path, man.json());
-    } catch (const std::exception&) {  // the disk that failed the frame may fail this too
-    }
-    throw io::IoError(e.what());
-  }
-  progress.finish();
-  if (signal == 0) signal = stop.received();  // arrived during the last frames: they are whole anyway
-  man.written = on_disk();
-  man.complete = man.written == last - first + 1;
-  if (!man.complete || signal != 0) {
-    man.complete = false;
-    io::atomic_write_file(man_path, man.json());
-    if (signal != 0) {
-      std::cerr << "tumble: interrupted (" << (signal == SIGINT ? "SIGINT" : "SIGTERM") << "): kept " << man.written
-                << " of " << last - first + 1 << " frames in " << dir.string() << "\n"
-                << "tumble: continue with: tumble render " << quote_arg(o.scene) << " -o " << quote_arg(dir.string())
-                << (shard ? " --frames " + o.frames : std::string()) << " --resume\n";
-      return 128 + signal;
-    }
-    std::cerr << "tumble: " << runs[0].diverged.value_or("stopped early") << "\n"
-              << "tumble: kept " << man.written << " frames in " << dir.string() << "\n";
-    return kDiverged;
-  }
-  // Every new frame exists: the earlier render's other frames can go (before
-  // the encode, which would read a stale frame past the last as one of ours).
-  // A shard makes no video, so the earlier render's (same name or not) goes too.
-  remove_stale(dir, existing, man.settings_hash, own, first, last,
-               shard || out.video == scene::VideoFormat::none ? std::string() : video_file_name(s, out.video));
-  man.replacing = false;
-  const bool full = !shard;  // a shard's video is made by `tumble assemble`
-  if (full && out.video != scene::VideoFormat::none) {
-    // The video is part of a complete render: until it exists the manifest says
-    // "complete": false, and --resume (every frame already on disk) makes it.
-    const fs::path video = dir / video_file_name(s, out.video);
-    if (o.progress != "none") std::cerr << "tumble: encoding " << video.filename().string() << " from " << count << " frames\n";
-    Progress encoding(count, o.progress != "none");
-    const VideoResult v = encode_video(
-        dir, static_cast<int>(std::lround(fps)), out.video, plan.quality.crf, video, [&] { return stop.received(); },
-        [&](long n) { encoding.update(std::min(n, count)); });
-    encoding.finish();
-    if (!v.ok()) {
-      man.complete = false;
-      man.video_error = v.message;
-      io::atomic_write_file(man_path, man.json());
-      std::cerr << "tumble: " << v.message << "\n"
-                << "tumble: all " << count << " frames are in " << dir.string() << "; make the video with: tumble render "
-                << quote_arg(o.scene) << " -o " << quote_arg(dir.string()) << " --resume\n";
-      return v.status == VideoResult::interrupted ? 128 + v.signal : kRuntimeError;
-    }
-    man.video = video.filename().string();
-  }
-  io::atomic_write_file(man_path, man.json());
-  std::cout << "rendered frames " << first << ".." << last << " of " << count << " into " << dir.string()
-            << (skipped ? " (" + std::to_string(skipped) + " already on disk)" : std::string())
-            << (man.video.empty() ? "" : " (video " + man.video + ")") << "\n";
-  return kOk;
+  const RenderPlan plan = plan_render(o);
+  const run::RenderRequest req{plan.scene,
+                               o.out_dir.empty() ? fs::path("out") / plan.scene.name : fs::path(o.out_dir),
+                               o.frames,
+                               o.resume,
+                               o.force,
+                               o.frames_out == "none",
+                               plan.backend,
+                               o.scene};
+  ConsoleListener listener(o.progress != "none");
+  return exit_code(run::render_scene(req, listener));
 }
 
 }  // namespace

@@ -11,6 +11,10 @@
 #include "io/trajectory_csv.hpp"
 #include "scene/scene.hpp"
 
+namespace tumble::render {
+enum class GlBackend;
+}
+
 namespace tumble::app {
 
 /// Exit codes (documented in scenes/README.md and the README).
@@ -30,6 +34,10 @@ void add_methods_command(CLI::App& app, Action& action);
 /// The README's "Integration methods" table (markdown), one row per row of
 /// core's method table: name, order, description.
 std::string methods_markdown();
+
+/// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
+/// naming the option for an unknown name, so it fails before any work.
+render::GlBackend parse_backend_option(const std::string& gl);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);

@@ -2,6 +2,11 @@
 
 #include <unistd.h>
 
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "app/stop_signals.hpp"
+
 namespace tumble::app {
 
 Progress::Progress(long total, bool enabled, bool only_tty)
@@ -27,6 +32,45 @@ void Progress::update(long done) {
 
 void Progress::finish() {
   if (on_) std::fprintf(stderr, "\n");
+}
+
+}  // namespace tumble::app
+
+namespace tumble::app {
+
+ConsoleListener::ConsoleListener(bool progress) : progress_(progress) {}
+ConsoleListener::~ConsoleListener() = default;
+
+void ConsoleListener::note(const std::string& line) { std::cerr << "tumble: " << line << "\n"; }
+
+void ConsoleListener::begin(long total, const std::string& what) {
+  if (progress_ && !what.empty()) note(what);
+  bar_.emplace(total, progress_);
+}
+
+void ConsoleListener::advance(long done) {
+  if (bar_) bar_->update(done);
+}
+
+void ConsoleListener::end() {
+  if (bar_) bar_->finish();
+  bar_.reset();
+}
+
+void ConsoleListener::arm_stop() {
+  if (!stop_) stop_ = std::make_unique<StopSignals>();
+}
+
+int ConsoleListener::stop() const { return stop_ ? stop_->received() : 0; }
+
+int exit_code(const run::Outcome& o) {
+  switch (o.kind) {
+    case run::Outcome::done: std::cout << o.summary << "\n"; return kOk;
+    case run::Outcome::failed: return kRuntimeError;
+    case run::Outcome::diverged: return kDiverged;
+    case run::Outcome::interrupted: return 128 + o.signal;
+  }
+  return kRuntimeError;
 }
 
 }  // namespace tumble::app

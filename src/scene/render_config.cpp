@@ -10,20 +10,18 @@ namespace {
 void read_output(TableReader& r, Scene& s) {
   OutputConfig& o = s.render.output;
   o.fps = s.simulation.fps;
-  o.width = static_cast<int>(r.integer("width", 16, 16384).value_or(o.width));
-  o.height = static_cast<int>(r.integer("height", 16, 16384).value_or(o.height));
+  o.width = static_cast<int>(r.integer("width", kMinFramePx, kMaxFramePx).value_or(o.width));
+  o.height = static_cast<int>(r.integer("height", kMinFramePx, kMaxFramePx).value_or(o.height));
   Range fps = Range::closed(1e-3, 1000);
   o.fps = r.number("fps", fps).value_or(o.fps);
   const std::optional<long long> m = r.integer("msaa", 0, 4);
   if (m) {
-    if (*m == 0 || *m == 2 || *m == 4) o.msaa = static_cast<int>(*m);
+    if (valid_msaa_samples(*m)) o.msaa = static_cast<int>(*m);
     else r.error("msaa", "expected 0, 2 or 4, found " + std::to_string(*m));
   }
   if (auto a = r.string("aa")) {
-    if (*a == "fxaa") o.aa = Antialias::fxaa;
-    else if (*a == "msaa") o.aa = Antialias::msaa;
-    else if (*a == "none") o.aa = Antialias::none;
-    else r.error("aa", "expected \"fxaa\", \"msaa\" or \"none\", found \"" + *a + "\"");
+    if (const std::optional<Antialias> aa = parse_antialias(*a)) o.aa = *aa;
+    else r.error("aa", "expected " + antialias_choices('"') + ", found \"" + *a + "\"");
     if (o.aa == Antialias::msaa && m && *m == 0) r.error("msaa", "aa = \"msaa\" needs msaa = 2 or 4, found 0");
   } else if (m) {
     // Scenes written before `aa` existed: msaa = N meant N samples, 0 none.
@@ -32,10 +30,8 @@ void read_output(TableReader& r, Scene& s) {
   o.background = r.vec3("background", Range::closed(0, 1)).value_or(o.background);
   s.render.explain.time_scale = r.number("time_scale", Range::closed(1e-4, 1e4)).value_or(1.0);
   if (auto v = r.string("video")) {
-    if (*v == "mp4") o.video = VideoFormat::mp4;
-    else if (*v == "gif") o.video = VideoFormat::gif;
-    else if (*v == "none") o.video = VideoFormat::none;
-    else r.error("video", "expected \"mp4\", \"gif\" or \"none\", found \"" + *v + "\"");
+    if (const std::optional<VideoFormat> f = parse_video_format(*v)) o.video = *f;
+    else r.error("video", "expected " + video_format_choices('"') + ", found \"" + *v + "\"");
   }
   if (o.fps * s.simulation.duration / s.render.explain.time_scale > kMaxFrames)
     r.error("fps", "duration × fps exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
@@ -143,16 +139,3 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
 }
 
 }  // namespace tumble::scene::detail
-
-namespace tumble::scene {
-
-std::string_view antialias_name(Antialias a) {
-  switch (a) {
-    case Antialias::fxaa: return "fxaa";
-    case Antialias::msaa: return "msaa";
-    case Antialias::none: return "none";
-  }
-  return "none";
-}
-
-}  // namespace tumble::scene

@@ -20,6 +20,7 @@
 #include "core/particle_cloud.hpp"
 #include "core/propagator.hpp"
 #include "scene/explain.hpp"
+#include "scene/frame_settings.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace tumble::scene {
@@ -62,21 +63,10 @@ MethodPlan plan_method(const SimulationConfig& sim, const Body& body);
 /// or "closed form" (`exact` on a torque-free body ignores dt).
 std::string step_label(const StepConfig& c, const RigidBodyModel& m);
 
-enum class VideoFormat { mp4, gif, none };
-
-/// How frame edges are anti-aliased: FXAA (a post pass, one sample a pixel,
-/// smooth lines), MSAA with `OutputConfig::msaa` samples, or not at all.
-enum class Antialias { fxaa, msaa, none };
-std::string_view antialias_name(Antialias a);  ///< "fxaa", "msaa", "none"
-
-struct OutputConfig {
-  int width = 1280, height = 720;               ///< px
+/// [output]: the frame settings (size, anti-aliasing, video) plus what only a scene sets.
+struct OutputConfig : FrameSettings {
   double fps = 30;                              ///< frames per second (default: simulation.fps)
-  /// Scene key `aa`; without it, a scene's `msaa` key picks msaa (2, 4) or none (0).
-  Antialias aa = Antialias::fxaa;
-  int msaa = 4;                                 ///< 0, 2 or 4 samples (used when aa = msaa)
   Eigen::Vector3d background{0.97, 0.97, 0.98}; ///< linear RGB in [0, 1]
-  VideoFormat video = VideoFormat::mp4;
 };
 
 struct CameraConfig {

@@ -3,29 +3,7 @@
 // run byte for byte; parts that do not add up are refused, naming the gap.
 #include "render_fixture.hpp"
 
-#include "app/manifest_parts.hpp"
-
 namespace {
-
-using tumble::app::is_part_manifest;
-using tumble::app::missing_ranges;
-using tumble::app::part_manifest_name;
-
-TEST(ManifestParts, NamesSortByFrameAndReadBack) {
-  EXPECT_EQ(part_manifest_name(120, 239), "manifest.part-000120-000239.json");
-  EXPECT_TRUE(is_part_manifest(part_manifest_name(0, 6)));
-  EXPECT_FALSE(is_part_manifest("manifest.part-1-2.json"));
-  EXPECT_FALSE(is_part_manifest("manifest.json"));
-  EXPECT_FALSE(is_part_manifest("manifest.part-000000-000006.json.tmp-12"));
-}
-
-TEST(ManifestParts, MissingRangesNameEveryGap) {
-  EXPECT_EQ(missing_ranges({{0, 1}, {4, 6}}, 10), "2:3, 7:9");
-  EXPECT_EQ(missing_ranges({{3, 9}, {0, 5}}, 10), "");  // overlapping, unsorted
-  EXPECT_EQ(missing_ranges({}, 7), "0:6");
-  EXPECT_EQ(missing_ranges({{0, 0}, {2, 2}}, 3), "1:1");
-  EXPECT_EQ(missing_ranges({{1, 12}}, 5), "0:0");  // a range past the end covers no more
-}
 
 class Assemble : public RobustRender {
  protected:

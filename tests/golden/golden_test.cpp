@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/frame_renderer.hpp"
-#include "app/render_job.hpp"
+#include "run/frame_renderer.hpp"
+#include "run/render_job.hpp"
 #include "cli_fixture.hpp"
 #include "golden/compare.hpp"
 #include "golden/trajectory.hpp"
@@ -69,8 +69,8 @@ INSTANTIATE_TEST_SUITE_P(Golden, Scenes, testing::ValuesIn(kScenes),
 TEST(Overlay, EnergyErrorOnlyWhereEnergyIsConserved) {
   auto overlay = [](const char* name) {
     const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes" / (std::string(name) + ".toml"));
-    const std::vector<tumble::app::Run> runs = tumble::app::simulate_runs(s, 3, 30);
-    const tumble::viz::DrawList dl = tumble::app::FrameBuilder(s, runs, 30, 320, 240).build(2);
+    const std::vector<tumble::run::Run> runs = tumble::run::simulate_runs(s, 3, 30);
+    const tumble::viz::DrawList dl = tumble::run::FrameBuilder(s, runs, 30, 320, 240).build(2);
     std::string all;
     for (const auto& v : dl.views)
       for (const auto& t : v.texts) all += t.text + "\n";
@@ -86,13 +86,16 @@ TEST(Overlay, EnergyErrorOnlyWhereEnergyIsConserved) {
 
 TEST(Determinism, SameFrameRenderedTwiceInOneProcess) {
   const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes/stable_spin.toml");
-  const tumble::app::SceneFrames frames(s, 150);
+  const tumble::run::SceneFrames frames(s, 150);
   auto ctx = tumble::render::create_gl_context(tumble::render::default_gl_backend());
   for (const char* name : {"msaa4", "none", "fxaa"}) {
-    const tumble::app::AaSetting aa = tumble::app::parse_aa_setting(name, "test");
+    tumble::scene::FrameSettings aa;
+    aa.width = 320;
+    aa.height = 240;
+    ASSERT_TRUE(tumble::scene::parse_aa_case(name, aa)) << name;
     // Frame 150, another frame, frame 150 again (renderer state reused), then a fresh renderer.
-    const auto a = frames.render(*ctx, {150, 30, 150}, 320, 240, aa);
-    const auto b = frames.render(*ctx, {150}, 320, 240, aa);
+    const auto a = frames.render(*ctx, {150, 30, 150}, aa);
+    const auto b = frames.render(*ctx, {150}, aa);
     EXPECT_TRUE(a[0].rgb == a[2].rgb) << name;
     EXPECT_TRUE(a[0].rgb == b[0].rgb) << name;
     EXPECT_FALSE(a[0].rgb == a[1].rgb) << "frames 150 and 30 should differ";

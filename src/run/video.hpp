@@ -9,7 +9,7 @@
 
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 using scene::VideoFormat;
 
@@ -46,4 +46,4 @@ VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
                          const std::filesystem::path& output, const StopPoll& stop = {},
                          const EncodeProgress& progress = {});
 
-}  // namespace tumble::app
+}  // namespace tumble::run

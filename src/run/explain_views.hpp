@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "app/render_job.hpp"
+#include "run/render_job.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 class ExplainViews {
  public:
@@ -35,4 +35,4 @@ class ExplainViews {
 /// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).
 double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0);
 
-}  // namespace tumble::app
+}  // namespace tumble::run

@@ -1,4 +1,4 @@
-#include "app/explain_views.hpp"
+#include "run/explain_views.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "viz/poinsot.hpp"
 #include "viz/strip_chart.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 namespace {
 
@@ -159,4 +159,4 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   }
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

@@ -1,11 +1,11 @@
-#include "app/manifest_parts.hpp"
+#include "run/manifest_parts.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "app/render_output.hpp"
+#include "run/render_output.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 std::string part_manifest_name(long first, long last) {
   char name[64];
@@ -65,4 +65,4 @@ std::string missing_ranges(std::vector<std::pair<long, long>> covered, long coun
   return out;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

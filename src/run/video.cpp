@@ -1,4 +1,4 @@
-#include "app/video.hpp"
+#include "run/video.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -14,7 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 bool ffmpeg_available() {
   const char* path = std::getenv("PATH");
@@ -131,4 +131,4 @@ VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
   return {VideoResult::made, 0, {}};
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

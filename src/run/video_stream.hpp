@@ -7,10 +7,10 @@
 #include <csignal>
 #include <filesystem>
 
-#include "app/video.hpp"
+#include "run/video.hpp"
 #include "io/image.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 /// One ffmpeg process fed frame by frame. Its output goes to a temp name and
 /// is renamed by finish(); abort(), a failure or the destructor kill ffmpeg
@@ -49,4 +49,4 @@ class VideoStream {
   VideoResult status_;
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::run

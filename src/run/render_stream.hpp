@@ -6,12 +6,13 @@
 #include <filesystem>
 #include <string>
 
-#include "app/render_job.hpp"
-#include "app/render_output.hpp"
-#include "app/video.hpp"
 #include "render/renderer.hpp"
+#include "run/listener.hpp"
+#include "run/render_job.hpp"
+#include "run/render_output.hpp"
+#include "run/video.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 struct StreamJob {
   const std::filesystem::path& dir;
@@ -21,14 +22,13 @@ struct StreamJob {
   Manifest& manifest;         ///< filled in; written at every outcome
   const Existing& existing;   ///< a replaced render's frames go once the video exists
   long good;                  ///< frames the simulation reached (count, unless it diverged)
-  bool progress;
-  StopPoll stop;
+  Listener& listener;         ///< notes, progress, stop requests
   std::string rerun;          ///< the command that runs it again, for messages
   std::string diverged;       ///< why the simulation stopped early (when good < count)
 };
 
-/// Draws frames 0..count-1 into the video. Returns the exit code: 0, 1 (ffmpeg
-/// missing or failed), 3 (diverged: the video holds the frames before), 130/143.
-int stream_render(const StreamJob& job);
+/// Draws frames 0..count-1 into the video: done, failed (ffmpeg missing or
+/// failed), diverged (the video holds the frames before) or interrupted.
+Outcome stream_render(const StreamJob& job);
 
-}  // namespace tumble::app
+}  // namespace tumble::run

@@ -9,7 +9,7 @@
 
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 /// manifest.json: what was rendered, how, and whether it finished.
 struct Manifest {
@@ -17,11 +17,9 @@ struct Manifest {
   std::string video;        ///< file name in the folder; empty = none made ("video": null)
   std::string video_error;  ///< why a wanted video is missing (ffmpeg missing, failed, interrupted)
   std::string frames_out = "png";  ///< "png", or "none": frames streamed into the video only
-  std::string video_format = "none";  ///< "mp4", "gif" or "none": what a complete render includes
-  int crf = 18;             ///< the video's H.264 CRF (from --quality)
+  scene::FrameSettings frame;  ///< size, aa, video format, CRF (from the quality)
   double dt = 0, fps = 0;  // dt: the scene's; `step` says what each run really used
-  std::string aa = "fxaa";  ///< "fxaa", "msaa" or "none"
-  int width = 0, height = 0, msaa = 0;  ///< msaa: samples used (0 unless aa is msaa)
+  int samples = 0;         ///< MSAA samples the renderer used (0 unless aa is msaa)
   long frame_count = 0, first = 0, last = -1, written = 0;
   bool complete = false;
   /// Replacing an earlier render of this scene (edited): until the last frame
@@ -66,4 +64,4 @@ void remove_stale(const std::filesystem::path& dir, const Existing& ex, const st
 std::string video_file_name(const std::string& scene_name, scene::VideoFormat f);
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f);
 
-}  // namespace tumble::app
+}  // namespace tumble::run

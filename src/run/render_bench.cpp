@@ -1,4 +1,4 @@
-#include "app/render_bench.hpp"
+#include "run/render_bench.hpp"
 
 #include <sys/resource.h>
 
@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/frame_renderer.hpp"
-#include "app/render_job.hpp"
-#include "app/video.hpp"
-#include "app/video_stream.hpp"
+#include "run/frame_renderer.hpp"
+#include "run/render_job.hpp"
+#include "run/video.hpp"
+#include "run/video_stream.hpp"
 #include "golden/compare.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
@@ -17,7 +17,7 @@
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 namespace {
 using Clock = std::chrono::steady_clock;
@@ -71,9 +71,17 @@ AaQuality measure_quality(render::GlContext& ctx, const std::filesystem::path& p
   const long count = scene::frame_clock(s, s.render.output.fps).count();
   const std::vector<long> ks = {count / 4, count / 2, 3 * count / 4};
   const SceneFrames frames(s, ks.back());
-  const auto reference = frames.render(ctx, ks, kW, kH, {scene::Antialias::msaa, 4});
-  const auto fxaa = frames.render(ctx, ks, kW, kH, {scene::Antialias::fxaa, 0});
-  const auto none = frames.render(ctx, ks, kW, kH, {scene::Antialias::none, 0});
+  auto at = [&](scene::Antialias aa) {
+    scene::FrameSettings f;
+    f.width = kW;
+    f.height = kH;
+    f.aa = aa;
+    f.msaa = 4;
+    return frames.render(ctx, ks, f);
+  };
+  const auto reference = at(scene::Antialias::msaa);
+  const auto fxaa = at(scene::Antialias::fxaa);
+  const auto none = at(scene::Antialias::none);
   AaQuality q;
   q.scene = path.filename().string();
   q.frames = static_cast<int>(ks.size());
@@ -202,4 +210,4 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   return r;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

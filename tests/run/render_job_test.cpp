@@ -5,8 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/frame_renderer.hpp"
-#include "app/render_job.hpp"
+#include "run/render_job.hpp"
 #include "core/error.hpp"
 #include "core/dynamics.hpp"
 #include "scene/scene.hpp"
@@ -14,8 +13,8 @@
 
 namespace {
 
-using AppRun = tumble::app::Run;  // not gtest's Test::Run
-using tumble::app::simulate_runs;
+using AppRun = tumble::run::Run;  // not gtest's Test::Run
+using tumble::run::simulate_runs;
 
 // A fast Dzhanibekov spin (|omega| ≈ 10 rad/s at 30 fps turns 0.33 rad a frame).
 std::string scene_text(double trails, const std::string& method) {
@@ -52,7 +51,7 @@ TEST(SmoothCurves, NoBodyTurnsMoreThanTheLimitBetweenPathSamples) {
     ASSERT_LT(r.path_t[j - 1], r.path_t[j]);
     // The rotation between consecutive samples, from the quaternions: 2·acos|q_a·q_b|.
     const double turn = 2 * std::acos(std::min(1.0, std::abs(r.path[j - 1][0].q.dot(r.path[j][0].q))));
-    EXPECT_LE(turn, tumble::app::kMaxTurnPerSample * 1.01) << "between t = " << r.path_t[j - 1] << " and " << r.path_t[j];
+    EXPECT_LE(turn, tumble::run::kMaxTurnPerSample * 1.01) << "between t = " << r.path_t[j - 1] << " and " << r.path_t[j];
   }
   for (std::size_t k = 0; k < r.frames.size(); ++k) EXPECT_EQ(r.path[r.path_of_frame[k]][0].q.coeffs(), r.frames[k][0].q.coeffs());
 }
@@ -76,11 +75,11 @@ TEST(SmoothCurves, SubSamplesFollowTheTurnPerFrame) {
   tumble::BodyState s;
   s.L = Eigen::Vector3d(0, 2 * 10, 0);  // |omega| = 10 rad/s about the intermediate axis
   const std::vector<const tumble::RigidBodyModel*> models{&m};
-  EXPECT_EQ(tumble::app::sub_samples(models, {s}, 1.0 / 30), 7);   // 0.333 rad / 0.05 rad → 7
-  EXPECT_EQ(tumble::app::sub_samples(models, {s}, 1e-4), 1);       // already fine
-  EXPECT_EQ(tumble::app::sub_samples(models, {s}, 10.0), tumble::app::kMaxSubSamples);
+  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 1.0 / 30), 7);   // 0.333 rad / 0.05 rad → 7
+  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 1e-4), 1);       // already fine
+  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 10.0), tumble::run::kMaxSubSamples);
   s.L.setZero();
-  EXPECT_EQ(tumble::app::sub_samples(models, {s}, 1.0), 1);        // at rest: frames only
+  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 1.0), 1);        // at rest: frames only
 }
 
 }  // namespace
@@ -95,7 +94,7 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
   const double fps = s.render.output.fps;
   const long k = 420;
   const auto runs = simulate_runs(s, k + 1, fps);
-  const tumble::app::FrameBuilder fb(s, runs, fps, 320, 240);
+  const tumble::run::FrameBuilder fb(s, runs, fps, 320, 240);
   const tumble::viz::DrawList dl = fb.build(k);
   int overlays = 0;
   for (const tumble::viz::View& v : dl.views) {
@@ -116,32 +115,3 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
 }
 
 }  // namespace
-
-// The anti-aliasing cases of `tumble golden --aa` and their file names.
-TEST(AaSetting, ParsesAndNamesEveryCase) {
-  using tumble::app::parse_aa_setting;
-  using tumble::scene::Antialias;
-  const auto fx = parse_aa_setting("fxaa", "--aa");
-  EXPECT_TRUE(fx.fxaa());
-  EXPECT_EQ(fx.samples(), 0);
-  EXPECT_EQ(fx.name(), "fxaa");
-  const auto m4 = parse_aa_setting("msaa4", "--aa");
-  EXPECT_EQ(m4.mode, Antialias::msaa);
-  EXPECT_EQ(m4.samples(), 4);
-  EXPECT_EQ(m4.name(), "msaa4");
-  EXPECT_EQ(parse_aa_setting("msaa2", "--aa").samples(), 2);
-  // none is the old msaa0: its goldens keep their names.
-  EXPECT_EQ(parse_aa_setting("none", "--aa").name(), "msaa0");
-  EXPECT_EQ(parse_aa_setting("msaa0", "--aa").mode, Antialias::none);
-  // A scene's msaa count does not leak into fxaa or none.
-  EXPECT_EQ((tumble::app::AaSetting{Antialias::fxaa, 4}.samples()), 0);
-  EXPECT_EQ((tumble::app::AaSetting{Antialias::none, 4}.name()), "msaa0");
-  for (const char* bad : {"msaa3", "smaa", "", "FXAA", "msaa"}) {
-    try {
-      parse_aa_setting(bad, "--aa");
-      ADD_FAILURE() << "accepted '" << bad << "'";
-    } catch (const tumble::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("--aa: expected fxaa, none, msaa0, msaa2 or msaa4"), std::string::npos);
-    }
-  }
-}

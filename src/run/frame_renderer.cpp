@@ -1,36 +1,12 @@
-#include "app/frame_renderer.hpp"
+#include "run/frame_renderer.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "core/error.hpp"
 #include "io/trajectory_csv.hpp"
 #include "render/renderer.hpp"
 
-namespace tumble::app {
-
-std::string AaSetting::name() const {
-  if (mode == scene::Antialias::fxaa) return "fxaa";
-  return "msaa" + std::to_string(samples());
-}
-
-AaSetting aa_setting(const scene::OutputConfig& out) { return {out.aa, out.msaa}; }
-
-AaSetting parse_aa_setting(const std::string& text, const std::string& option) {
-  if (text == "fxaa") return {scene::Antialias::fxaa, 0};
-  if (text == "none" || text == "msaa0") return {scene::Antialias::none, 0};
-  if (text == "msaa2" || text == "msaa4") return {scene::Antialias::msaa, text.back() - '0'};
-  throw InputError(option + ": expected fxaa, none, msaa0, msaa2 or msaa4, found '" + text + "'");
-}
-
-render::GlBackend parse_backend_option(const std::string& gl) {
-  const std::string where = gl.empty() ? "TUMBLE_GL" : "--gl";
-  try {
-    return gl.empty() ? render::default_gl_backend() : render::parse_gl_backend(gl);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(where + ": " + e.what());
-  }
-}
+namespace tumble::run {
 
 SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
     : scene_(s), fps_(s.render.output.fps), count_(scene::frame_clock(s, s.render.output.fps).count()) {
@@ -42,10 +18,10 @@ SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
   runs_ = simulate_runs(s, frames, fps_);
 }
 
-std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks, int width,
-                                           int height, AaSetting aa, int* samples_used) const {
-  const FrameBuilder builder(scene_, runs_, fps_, width, height);
-  render::Renderer renderer(ctx, width, height, aa.samples(), aa.fxaa());
+std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks,
+                                           const scene::FrameSettings& f, int* samples_used) const {
+  const FrameBuilder builder(scene_, runs_, fps_, f.width, f.height);
+  render::Renderer renderer(ctx, f.width, f.height, f.samples(), f.fxaa());
   if (samples_used) *samples_used = renderer.samples();
   std::vector<io::Image> out;
   for (long k : ks) {
@@ -75,4 +51,4 @@ std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
   return out;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

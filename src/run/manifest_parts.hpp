@@ -12,7 +12,7 @@
 
 #include "io/json.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 /// "manifest.part-000120-000239.json" (six digits, like the frames, so they sort).
 std::string part_manifest_name(long first, long last);
@@ -36,4 +36,4 @@ std::vector<Part> read_parts(const std::filesystem::path& dir);
 /// ", " (a single frame is "A:A"); empty when every frame is covered.
 std::string missing_ranges(std::vector<std::pair<long, long>> covered, long count);
 
-}  // namespace tumble::app
+}  // namespace tumble::run

@@ -13,7 +13,7 @@
 #include "viz/draw_list.hpp"
 #include "viz/scene_view.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 /// One simulated run of all bodies with one method (several in a comparison),
 /// stored at every frame time t_k (k/fps, or the scene's FrameClock).
@@ -81,10 +81,7 @@ class FrameBuilder {
   std::vector<viz::BodyLook> looks_;        // per body: surfaces, visible particles
 };
 
-/// Number of frames of a run: t_k = k/fps for k = 0 … ⌊duration·fps⌋.
-long frame_count(double duration, double fps);
-
 /// Parses "A:B" (inclusive, either end may be empty) against `count` frames.
 std::pair<long, long> parse_frame_range(const std::string& spec, long count);
 
-}  // namespace tumble::app
+}  // namespace tumble::run

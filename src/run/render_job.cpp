@@ -1,4 +1,4 @@
-#include "app/render_job.hpp"
+#include "run/render_job.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,15 +8,11 @@
 #include "core/dynamics.hpp"
 #include "core/error.hpp"
 #include "core/propagator.hpp"
-#include "app/explain_views.hpp"
+#include "run/explain_views.hpp"
 #include "viz/captions.hpp"
 #include "viz/particle_set.hpp"
 
-namespace tumble::app {
-
-long frame_count(double duration, double fps) {
-  return static_cast<long>(std::floor(duration * fps * (1 + 1e-12))) + 1;
-}
+namespace tumble::run {
 
 std::pair<long, long> parse_frame_range(const std::string& spec, long count) {
   const auto colon = spec.find(':');
@@ -309,4 +305,4 @@ viz::DrawList FrameBuilder::build(long k) const {
   return dl;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

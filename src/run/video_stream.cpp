@@ -1,4 +1,4 @@
-#include "app/video_stream.hpp"
+#include "run/video_stream.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -10,7 +10,7 @@
 
 #include "io/atomic_file.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output)
     : output_(std::move(output)), tmp_(io::temp_path_for(output_)) {
@@ -120,4 +120,4 @@ VideoResult VideoStream::abort(int signal) {
                     "interrupted while streaming " + output_.filename().string() + "; no video kept"};
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

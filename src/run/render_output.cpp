@@ -1,18 +1,18 @@
-#include "app/render_output.hpp"
+#include "run/render_output.hpp"
 
 #include <algorithm>
 #include <iostream>
 #include <sstream>
 
-#include "app/commands.hpp"
-#include "app/frame_renderer.hpp"
-#include "app/manifest_parts.hpp"
+#include "run/manifest_parts.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
 #include "io/json.hpp"
+#include "io/trajectory_csv.hpp"
 
-namespace tumble::app {
+namespace tumble::run {
 
 namespace fs = std::filesystem;
 
@@ -21,10 +21,12 @@ std::string Manifest::json() const {
   return io::json_text(io::Json{
       {"tool", "tumble"}, {"version", TUMBLE_VERSION}, {"scene", scene_path}, {"scene_name", scene_name},
       {"scene_hash", scene_hash}, {"settings_hash", settings_hash}, {"method", method}, {"step", step}, {"dt", dt},
-      {"fps", fps}, {"width", width}, {"height", height}, {"aa", aa}, {"msaa", msaa}, {"frame_count", frame_count},
+      {"fps", fps}, {"width", frame.width}, {"height", frame.height}, {"aa", scene::antialias_name(frame.aa)},
+      {"msaa", samples}, {"frame_count", frame_count},
       {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
       {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", or_null(video)},
-      {"video_error", or_null(video_error)}, {"video_format", video_format}, {"crf", crf},
+      {"video_error", or_null(video_error)}, {"video_format", scene::video_format_name(frame.video)},
+      {"crf", frame.crf()},
       {"frames_out", frames_out}, {"replacing", replacing}, {"complete", complete}});
 }
 
@@ -65,7 +67,7 @@ std::string settings_hash(const scene::Scene& s, const std::string& method) {
   const scene::OutputConfig& out = s.render.output;
   std::ostringstream k;
   k << s.content_hash << '|' << method << '|' << format_number(s.simulation.step.dt) << '|' << format_number(out.fps)
-    << '|' << out.width << 'x' << out.height << '|' << aa_setting(out).samples();
+    << '|' << out.width << 'x' << out.height << '|' << out.samples();
   if (out.aa == scene::Antialias::fxaa) k << "|fxaa";  // MSAA and none hash as before `aa` existed
   return scene::fnv1a_hex(k.str());
 }
@@ -185,9 +187,9 @@ std::string video_file_name(const std::string& scene_name, scene::VideoFormat f)
   // The loader restricts names to [A-Za-z0-9_.-]; still, never leave the folder.
   std::string base = scene_name;
   if (base.empty() || fs::path(base).filename() != base || base == "." || base == "..") base = "video";
-  return base + (f == scene::VideoFormat::mp4 ? ".mp4" : ".gif");
+  return base + "." + std::string(scene::video_format_name(f));
 }
 
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) { return video_file_name(s.name, f); }
 
-}  // namespace tumble::app
+}  // namespace tumble::run

@@ -1,0 +1,159 @@
+#include "run/golden_check.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+#include "io/json.hpp"
+#include "io/png.hpp"
+
+namespace tumble::run {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p, bool& ok) {
+  std::ifstream in(p, std::ios::binary);
+  ok = static_cast<bool>(in);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A string field of a sidecar, or "?".
+std::string sidecar_field(const std::optional<io::Json>& j, const char* key) {
+  if (!j) return "?";
+  const auto it = j->find(key);
+  return it != j->end() && it->is_string() ? it->get<std::string>() : "?";
+}
+
+}  // namespace
+
+void GoldenCheck::check_physics() {
+  GoldenCheck& g = *this;
+  std::set<long> rows(g.ks.begin(), g.ks.end());
+  for (long k = 0; k <= g.ks.back(); k += g.every) rows.insert(k);
+  const std::string actual = g.frames.trajectory_csv({rows.begin(), rows.end()});
+  const fs::path path = g.dir / (g.s.name + ".trajectory.csv");
+  bool ok = false;
+  const std::string expected = slurp(path, ok);
+  const std::string what = "physics " + path.filename().string();
+  if (g.update) {
+    if (!ok || expected != actual) {
+      io::atomic_write_file(path, actual);
+      ++g.written;
+      g.out << (ok ? "updated  " : "created  ") << path.string()
+                << (ok ? "  (was: " + golden::compare_trajectories(actual, expected, g.tol).summary + ")" : "") << "\n";
+    }
+  } else if (!ok) {
+    g.line(false, "MISSING", what, g.missing(path));
+    g.report.add_text(what, false, "MISSING", g.missing(path));
+  } else {
+    const golden::TrajectoryComparison c = golden::compare_trajectories(actual, expected, g.tol);
+    g.line(c.pass, c.pass ? "PASS   " : "PHYSICS", what, c.summary);
+    g.report.add_text(what, c.pass, c.pass ? "pass" : "PHYSICS CHANGED", c.summary);
+  }
+}
+
+namespace {
+
+/// One golden image and its sidecar, as this run would write them.
+struct GoldenImage {
+  std::string base, what;
+  fs::path png, side;
+  const io::Image& actual;
+  std::optional<io::Image> expected;
+  std::string read_error;
+};
+
+/// --update: writes the image and the sidecar `j` where they differ from the files.
+void update_image(GoldenCheck& g, const GoldenImage& im, const io::Json& j) {
+  const std::optional<io::Image>& expected = im.expected;
+  const bool same = expected && expected->width == im.actual.width && expected->height == im.actual.height &&
+                    expected->rgb == im.actual.rgb;
+  const std::optional<io::Json> old_side = io::read_json_file(im.side);
+  const bool side_same = old_side && *old_side == j;  // by value: 30 and 30.0 are one fps
+  if (!same) {
+    io::write_png_atomic(im.png, im.actual);
+    g.out << (expected ? "updated  " : "created  ") << im.png.string()
+              << (expected ? "  (was: " + golden::compare_images(im.actual, *expected, g.cmp).summary + ")" : "")
+              << "\n";
+  }
+  if (!same || !side_same) {
+    io::write_json_atomic(im.side, j);
+    ++g.written;
+  }
+}
+
+void check_image(GoldenCheck& g, const GoldenImage& im, const render::GlContext& ctx) {
+  const std::optional<io::Json> sidecar = io::read_json_file(im.side);
+  const std::string note = "expected made with " +
+                           (sidecar ? sidecar_field(sidecar, "gl_renderer") + ", " + sidecar_field(sidecar, "gl_version")
+                                    : std::string("? (no sidecar ") + im.side.filename().string() + ")") +
+                           "; actual with " + ctx.renderer() + ", " + ctx.version();
+  if (!fs::exists(im.png)) {
+    g.line(false, "MISSING", im.what, g.missing(im.png));
+    g.report.add_image(im.base, im.what, im.actual, nullptr, nullptr, g.cmp, false, "MISSING", g.missing(im.png));
+  } else if (!im.expected) {
+    g.line(false, "UNREADABLE", im.what, im.read_error);
+    g.report.add_image(im.base, im.what, im.actual, nullptr, nullptr, g.cmp, false, "UNREADABLE", im.read_error);
+  } else {
+    const golden::Comparison c = golden::compare_images(im.actual, *im.expected, g.cmp);
+    g.line(c.pass, c.pass ? "PASS   " : "FAIL   ", im.what, c.summary);
+    g.report.add_image(im.base, im.what, im.actual, &*im.expected, &c, g.cmp, c.pass, c.pass ? "pass" : "FAIL", note);
+  }
+}
+
+}  // namespace
+
+/// Every golden frame in anti-aliasing case `f`: checked, or written with --update.
+void GoldenCheck::check_images(const scene::FrameSettings& f, render::GlContext& ctx, render::GlBackend backend) {
+  GoldenCheck& g = *this;
+  const scene::FrameClock clock = scene::frame_clock(g.s, g.s.render.output.fps);
+  int samples = 0;
+  const std::vector<io::Image> images = g.frames.render(ctx, g.ks, f, &samples);
+  const std::string aa = f.aa_case();
+  for (std::size_t i = 0; i < g.ks.size(); ++i) {
+    const long k = g.ks[i];
+    char base[160];
+    std::snprintf(base, sizeof base, "%s_f%06ld_%s", g.s.name.c_str(), k, aa.c_str());
+    char what[200];
+    std::snprintf(what, sizeof what, "%s t=%.6g s (frame %ld) %s %dx%d", g.s.name.c_str(), clock.time(k), k,
+                  aa.c_str(), f.width, f.height);
+    GoldenImage im{base, what, g.dir / (std::string(base) + ".png"), g.dir / (std::string(base) + ".json"),
+                   images[i], std::nullopt, {}};
+    if (fs::exists(im.png)) {
+      try {
+        im.expected = io::read_png(im.png);
+      } catch (const std::exception& e) {
+        im.read_error = e.what();
+      }
+    }
+    if (!g.update) {
+      check_image(g, im, ctx);
+      continue;
+    }
+    io::Json j{{"scene", g.s.path.filename().string()}, {"t", clock.time(k)}, {"frame", k},
+               {"fps", g.s.render.output.fps}, {"width", f.width}, {"height", f.height}, {"msaa", f.samples()},
+               {"samples", samples}, {"gl_backend", render::to_string(backend)}, {"gl_renderer", ctx.renderer()},
+               {"gl_version", ctx.version()}, {"tumble_version", TUMBLE_VERSION}};
+    if (f.fxaa()) j["aa"] = std::string(scene::antialias_name(f.aa));  // msaa goldens keep their sidecars as they were
+    update_image(g, im, j);
+  }
+}
+
+void GoldenCheck::line(bool pass, const std::string& status, const std::string& what, const std::string& figures) {
+  ++cases;
+  failed += !pass;
+  out << status << "  " << what << ": " << figures << "\n";
+}
+
+std::string GoldenCheck::missing(const fs::path& path) const {
+  return "no golden " + path.string() + "; run with --update (or TUMBLE_UPDATE_GOLDENS=1 ctest -L golden) to create it";
+}
+
+}  // namespace tumble::run

@@ -1,0 +1,276 @@
+#include "run/render_folder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+
+#include "core/error.hpp"
+#include "core/format.hpp"
+#include "io/atomic_file.hpp"
+#include "io/frame_files.hpp"
+#include "io/trajectory_csv.hpp"
+#include "render/frame_encoder.hpp"
+#include "render/renderer.hpp"
+#include "run/manifest_parts.hpp"
+#include "run/render_job.hpp"
+#include "run/render_output.hpp"
+#include "run/render_stream.hpp"
+#include "run/video.hpp"
+
+namespace tumble::run {
+
+namespace fs = std::filesystem;
+
+std::string quote_arg(const std::string& a) {
+  if (a.find_first_of(" '\"\\$`") == std::string::npos) return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+namespace {
+
+void make_folder(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw io::IoError("cannot create output folder '" + dir.string() + "': " + ec.message());
+  if (!fs::is_directory(dir, ec)) throw io::IoError("output path '" + dir.string() + "' is not a folder");
+}
+
+/// The methods that change the pixels, for the settings hash: [compare]'s, or
+/// each body's pick (auto with a tolerance: the pick follows from the scene
+/// bytes, hashed, and the tolerance).
+std::string method_key(const scene::Scene& s) {
+  std::vector<std::string> labels;
+  if (!s.render.compare_methods.empty())
+    for (Method m : s.render.compare_methods) labels.emplace_back(method_name(m));
+  else
+    for (const scene::Body& b : s.bodies) {
+      const std::string n = s.simulation.automatic && s.simulation.tolerance
+                                ? "auto@" + format_number(*s.simulation.tolerance)
+                                : std::string(method_name(scene::step_config(s.simulation, b.model).method));
+      if (std::find(labels.begin(), labels.end(), n) == labels.end()) labels.push_back(n);
+    }
+  std::string key;
+  for (const auto& l : labels) key += l + ",";
+  return key;
+}
+
+/// One render's folder, range and manifest, shared by the steps below.
+struct Job {
+  const RenderRequest& req;
+  Listener& l;
+  long count = 0, first = 0, last = -1;
+  bool shard = false, resume = false;
+  std::string own;  ///< manifest.json, or this shard's part
+  Existing existing;
+  Manifest man;
+  fs::path man_path() const { return req.dir / own; }
+  void save() const { io::atomic_write_file(man_path(), man.json()); }
+  /// "tumble render SCENE -o DIR" + `tail`: how to run this again.
+  std::string rerun(const std::string& tail) const {
+    return "tumble render " + quote_arg(req.scene_arg) + " -o " + quote_arg(req.dir.string()) + tail;
+  }
+};
+
+/// The folder checked against the render it holds (inspect_output), the range
+/// chosen (a resumed render continues its own), dead temp files removed.
+void open_folder(Job& j) {
+  const scene::Scene& s = j.req.scene;
+  const std::pair<long, long> asked =
+      j.req.frames.empty() ? std::pair<long, long>{0, j.count - 1} : parse_frame_range(j.req.frames, j.count);
+  make_folder(j.req.dir);
+  j.man.scene_path = s.path.string();
+  j.man.scene_name = s.name;
+  j.man.scene_hash = s.content_hash;
+  j.man.settings_hash = settings_hash(s, method_key(s));
+  // A shard (a range short of the whole render) records itself in its own
+  // part, so shards running at once never overwrite each other's manifest.
+  j.shard = asked.first != 0 || asked.second != j.count - 1;
+  j.own = j.shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
+  j.existing = inspect_output(j.req.dir, j.man, j.own, j.req.force);
+  const Existing& ex = j.existing;
+  std::tie(j.first, j.last) = asked;
+  if (j.req.frames.empty() && j.req.resume && ex.resumable && ex.first >= 0 && ex.last < j.count && ex.first <= ex.last)
+    std::tie(j.first, j.last) = std::pair{ex.first, ex.last};  // continue the range that was being rendered
+  j.resume = j.req.resume && ex.resumable;
+  j.man.replacing = ex.replacing;
+  if (ex.replacing)
+    j.l.note("replacing the earlier render of " + s.name + " in " + j.req.dir.string() +
+             " (scene or settings changed): frames are overwritten one by one, the rest removed at the end");
+  // A process killed mid-write leaves its temp files; they are never valid output.
+  // A shard removes only its own: the others' in-flight temp files look the same.
+  for (const fs::path& t : list_dir(j.req.dir, is_stale_temp)) {
+    const std::string target(io::temp_target_name(t.filename().string()));
+    const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
+    if (!j.shard || target == j.own || (k >= j.first && k <= j.last)) remove_file(t);
+  }
+}
+
+/// What the manifest records of the runs, the GL context and the frames.
+void describe(Job& j, const std::vector<Run>& runs, const render::GlContext& ctx, int samples) {
+  const scene::Scene& s = j.req.scene;
+  Manifest& man = j.man;
+  for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
+  for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
+  man.dt = s.simulation.step.dt;
+  man.fps = s.render.output.fps;
+  man.frame = s.render.output;
+  man.samples = samples;
+  man.frame_count = j.count;
+  man.first = j.first;
+  man.last = j.last;
+  man.gl_version = ctx.version();
+  man.gl_renderer = ctx.renderer();
+  man.backend = std::string(render::to_string(j.req.backend));
+  man.frames_out = j.req.stream ? "none" : "png";
+}
+
+/// Frames of this run's range now on disk (a replacing render counts only its own).
+long on_disk(const Job& j, long drawn) {
+  if (j.man.replacing) return drawn;  // the earlier render's frames are not ours
+  std::error_code ec;
+  long n = 0;
+  for (long k = j.first; k <= j.last; ++k) n += fs::exists(io::frame_path(j.req.dir, k), ec) ? 1 : 0;
+  return n;
+}
+
+struct Drawn {
+  long drawn = 0, skipped = 0;
+  int signal = 0;
+};
+
+/// Draws first..last (up to `good`, where the simulation stopped) into PNG
+/// files, skipping those a resumed render already has. A frame that cannot be
+/// written (disk full) records what is on disk and throws io::IoError.
+Drawn draw_frames(Job& j, const FrameBuilder& builder, render::Renderer& renderer, long good) {
+  Drawn d;
+  std::error_code ec;
+  j.l.begin(j.last - j.first + 1);
+  try {
+    render::FrameEncoder encoder(2, 4);
+    for (long k = j.first; k <= j.last && k < good; ++k) {
+      if ((d.signal = j.l.stop()) != 0) break;
+      if (j.resume && fs::exists(io::frame_path(j.req.dir, k), ec)) {
+        ++d.skipped;  // written whole by an earlier run (rename is atomic)
+      } else {
+        // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
+        // page faults. The encoder's threads finish it (FXAA) while we draw on.
+        render::RawFrame raw = encoder.recycle_raw();
+        renderer.render(builder.build(k), raw);
+        encoder.submit(io::frame_path(j.req.dir, k), std::move(raw));
+        ++d.drawn;
+      }
+      j.l.advance(k - j.first + 1);
+    }
+    encoder.flush();  // the frames in flight are finished, not dropped
+  } catch (const std::runtime_error& e) {  // a frame could not be written: disk full, permissions
+    j.man.written = on_disk(j, d.drawn);
+    try {
+      j.save();
+    } catch (const std::exception&) {  // the disk that failed the frame may fail this too
+    }
+    throw io::IoError(e.what());
+  }
+  j.l.end();
+  if (d.signal == 0) d.signal = j.l.stop();  // arrived during the last frames: they are whole anyway
+  return d;
+}
+
+/// A range cut short by a stop request or a divergence: the manifest says
+/// what is on disk and "complete": false.
+Outcome stopped_early(Job& j, int signal, const std::string& diverged) {
+  j.man.complete = false;
+  j.save();
+  if (signal != 0) {
+    j.l.note(std::string("interrupted (") + (signal == SIGINT ? "SIGINT" : "SIGTERM") + "): kept " +
+             std::to_string(j.man.written) + " of " + std::to_string(j.last - j.first + 1) + " frames in " +
+             j.req.dir.string());
+    j.l.note("continue with: " + j.rerun((j.shard ? " --frames " + j.req.frames : std::string()) + " --resume"));
+    return {Outcome::interrupted, signal, {}};
+  }
+  j.l.note(diverged);
+  j.l.note("kept " + std::to_string(j.man.written) + " frames in " + j.req.dir.string());
+  return {Outcome::diverged, 0, {}};
+}
+
+/// The video from the frames on disk, part of a complete render: until it
+/// exists the manifest says "complete": false, and --resume makes it.
+Outcome encode_frames(Job& j) {
+  const scene::OutputConfig& out = j.req.scene.render.output;
+  const fs::path video = j.req.dir / video_file_name(j.req.scene, out.video);
+  j.l.begin(j.count, "encoding " + video.filename().string() + " from " + std::to_string(j.count) + " frames");
+  const VideoResult v = encode_video(
+      j.req.dir, static_cast<int>(std::lround(out.fps)), out.video, out.crf(), video, [&] { return j.l.stop(); },
+      [&](long n) { j.l.advance(std::min(n, j.count)); });
+  j.l.end();
+  if (!v.ok()) {
+    j.man.complete = false;
+    j.man.video_error = v.message;
+    j.save();
+    j.l.note(v.message);
+    j.l.note("all " + std::to_string(j.count) + " frames are in " + j.req.dir.string() +
+             "; make the video with: " + j.rerun(" --resume"));
+    return v.status == VideoResult::interrupted ? Outcome{Outcome::interrupted, v.signal, {}}
+                                                : Outcome{Outcome::failed, 0, {}};
+  }
+  j.man.video = video.filename().string();
+  return {};
+}
+
+/// After the frames: the earlier render's leftovers removed, the video made
+/// (a shard's is made by `tumble assemble`), the manifest completed.
+Outcome finish(Job& j, const Drawn& d) {
+  const scene::OutputConfig& out = j.req.scene.render.output;
+  // Every new frame exists: the earlier render's other frames can go (before
+  // the encode, which would read a stale frame past the last as one of ours).
+  // A shard makes no video, so the earlier render's (same name or not) goes too.
+  const bool video = !j.shard && out.video != scene::VideoFormat::none;
+  remove_stale(j.req.dir, j.existing, j.man.settings_hash, j.own, j.first, j.last,
+               video ? video_file_name(j.req.scene, out.video) : std::string());
+  j.man.replacing = false;
+  if (video)
+    if (Outcome o = encode_frames(j); o.kind != Outcome::done) return o;
+  j.save();
+  return {Outcome::done, 0,
+          "rendered frames " + std::to_string(j.first) + ".." + std::to_string(j.last) + " of " +
+              std::to_string(j.count) + " into " + j.req.dir.string() +
+              (d.skipped ? " (" + std::to_string(d.skipped) + " already on disk)" : std::string()) +
+              (j.man.video.empty() ? "" : " (video " + j.man.video + ")")};
+}
+
+}  // namespace
+
+Outcome render_scene(const RenderRequest& r, Listener& l) {
+  const scene::Scene& s = r.scene;
+  const scene::OutputConfig& out = s.render.output;
+  Job j{r, l};
+  j.count = scene::frame_clock(s, out.fps).count();
+  open_folder(j);
+  const std::vector<Run> runs = simulate_runs(s, j.count, out.fps);
+  for (const Run& run : runs)
+    for (const std::string& note : run.auto_notes) l.note(note);
+  const FrameBuilder builder(s, runs, out.fps, out.width, out.height);
+  // Frames every run could reach (a single run stops at its divergence).
+  const long good = runs.size() == 1 ? static_cast<long>(runs[0].frames.size()) : j.count;
+  const std::string diverged = runs[0].diverged.value_or("stopped early");
+  auto ctx = render::create_gl_context(r.backend);
+  render::Renderer renderer(*ctx, out.width, out.height, out.samples(), out.fxaa());
+  describe(j, runs, *ctx, renderer.samples());
+  l.arm_stop();
+  if (r.stream) {
+    j.save();
+    return stream_render({r.dir, s, builder, renderer, j.man, j.existing, good, l,
+                          j.rerun(" --frames-out none"), diverged});
+  }
+  if (j.resume) j.man.written = on_disk(j, 0);
+  j.save();
+  const Drawn d = draw_frames(j, builder, renderer, good);
+  j.man.written = on_disk(j, d.drawn);
+  j.man.complete = j.man.written == j.last - j.first + 1;
+  if (!j.man.complete || d.signal != 0) return stopped_early(j, d.signal, diverged);
+  return finish(j, d);
+}
+
+}  // namespace tumble::run

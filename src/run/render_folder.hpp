@@ -1,0 +1,29 @@
+// `tumble render`'s pipeline: a scene simulated, drawn frame by frame into an
+// output folder (PNG files written atomically, a manifest, resume, shards)
+// and encoded into a video, or streamed straight into ffmpeg.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "render/gl_context.hpp"
+#include "run/listener.hpp"
+#include "scene/scene.hpp"
+
+namespace tumble::run {
+
+struct RenderRequest {
+  const scene::Scene& scene;  ///< its [output] FrameSettings already hold the command's options
+  std::filesystem::path dir;  ///< the output folder (made when missing)
+  std::string frames;         ///< "A:B" (a shard), empty for every frame
+  bool resume = false, force = false;
+  bool stream = false;        ///< frames piped into ffmpeg only, no PNG (--frames-out none)
+  render::GlBackend backend = render::GlBackend::osmesa;
+  std::string scene_arg;      ///< the scene as the user named it, for "run it again" hints
+};
+
+/// Renders `r`. Throws InputError (bad range, a folder holding another render
+/// without `force`) or io::IoError (disk); else says how it ended.
+Outcome render_scene(const RenderRequest& r, Listener& l);
+
+}  // namespace tumble::run
