@@ -44,7 +44,7 @@ void BM_Propagate(benchmark::State& st) {
   const bench::Problem p = bench::t_handle_problem();
   const long n = 10000;
   double err = 0;
-  long steps = 0;  // rk45: accepted steps of its own size; exact: one evaluation
+  long steps = 0;  // adaptive pairs: accepted steps of their own size; exact: one evaluation
   for (auto _ : st) {
     Propagator prop(p.model, p.s0, StepConfig{method, 1e-3});
     benchmark::DoNotOptimize(prop.advance_steps(n));

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Regenerates the README's frames of the explanatory scenes (docs/explained_*.png,
-# docs/poinsot_*.png): a few frames of scenes/dzhanibekov_explained.toml and
-# scenes/poinsot.toml rendered at 640x360.
+# docs/poinsot_*.png, docs/tennis_racket_flip.png): a few frames of the
+# explanatory scenes rendered at 640x360 (`tumble info` lists what each frame shows).
 set -eu
 cd "$(dirname "$0")/.."
 tumble=${TUMBLE:-build/release/src/app/tumble}
@@ -10,10 +10,12 @@ if [ ! -x "$tumble" ]; then
   echo "explain_frames: $tumble not found; build first: cmake --build --preset release --target tumble" >&2
   exit 1
 fi
-# scene frame docs-name: frame 30 = title and first caption (t = 0.5 s);
-# 204 = mid-flip (t = 1.9 s, in the 1/8-speed segment); 420 = t = 4 s.
-for spec in "dzhanibekov_explained 30 explained_start" "dzhanibekov_explained 204 explained_flip" \
-            "dzhanibekov_explained 420 explained_after" "poinsot 180 poinsot_3s"; do
+# scene frame docs-name: frame 40 = the title card; 273 = the first flip
+# (t = 1.80 s, in the 1/8-speed segment); 495 = t = 4 s; tennis_racket 188 =
+# the middle racket's first flip (t = 0.98 s).
+for spec in "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 273 explained_flip" \
+            "dzhanibekov_explained 495 explained_after" "poinsot 180 poinsot_3s" \
+            "tennis_racket 188 tennis_racket_flip"; do
   set -- $spec
   "$tumble" render "scenes/$1.toml" --frames "$2:$2" --width 640 --height 360 --video none --progress none \
     --force -o "$out/$1" >/dev/null

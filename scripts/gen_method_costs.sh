@@ -50,7 +50,7 @@ rows = ["<!-- BEGIN microbench:speed-table -->",
 for method, c in cost.items():
     ns, err, steps = run.get(method, (float("nan"), float("nan"), 0))
     ns = ("closed form, evaluated once" if method == "exact" else
-          f"{ns:.0f} ({steps:.0f} steps)" if method == "rk45" else f"{ns:.0f}")
+          f"{ns:.0f} ({steps:.0f} steps)" if method in ("rk45", "dop853") else f"{ns:.0f}")
     stp = f"{stepping[method]:.0f}" if method in stepping else "—"
     rows.append(f"| {method} | {c['torque-free']:.0f} | {c['forced']:.0f} | {stp} | {ns} | {err:.3g} |")
 rows.append("<!-- END microbench:speed-table -->")

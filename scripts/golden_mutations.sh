@@ -9,8 +9,9 @@ set -eu
 T=$(realpath "${1:-build/release/src/app/tumble}")
 O=$(realpath -m "${2:-out/golden-mutations}")
 scenes="dzhanibekov:0.5,4,12 methods_compare:0.5,6,15 reference:0.5,3,9 stable_spin:0.5,5,11 symmetric_top:0.5,4,9 thrown_box:0.2,0.9,1.6"
-# The explanatory scene's goldens are at frames (its clock has slow motion).
-explained="dzhanibekov_explained:30,204,420"
+# The explanatory scenes' goldens are at frames (their clocks have a title
+# card and slow motion anchored to flips).
+explained="dzhanibekov_explained:40,273,495 tennis_racket:40,188,400"
 rm -rf "$O"
 mkdir -p "$O"
 check() { # label, binary, [scene folder instead of scenes/]
@@ -18,7 +19,7 @@ check() { # label, binary, [scene folder instead of scenes/]
   for sc in $scenes $explained; do
     name=${sc%%:*}; at=${sc#*:}
     [ -f "$sdir/$name.toml" ] || continue
-    sel="--at"; [ "$name" = "${explained%%:*}" ] && sel="--frames"
+    sel="--at"; case " $explained " in *" $sc "*) sel="--frames" ;; esac
     "$bin" golden "$sdir/$name.toml" "$sel" "$at" --dir "tests/golden/$name" --msaa 4,0 \
       --report "$O/report/$label/$name" || true
   done | awk -v label="$label" '
@@ -63,4 +64,11 @@ scene_mutant "explained: plot view removed" '/^\[\[views\]\]$/{N;/kind = "plot"/
 scene_mutant "explained: sphere view moved 1%" 's/^viewport = \[0.5, 0.0, 0.5, 0.6\]/viewport = [0.51, 0.0, 0.49, 0.6]/'
 scene_mutant "explained: captions' text edited" '/^text = "/s/ the / a /'
 scene_mutant "explained: time_scale 0.5 -> 0.55" 's/^time_scale = 0.5 /time_scale = 0.55 /'
+# Issue 22: captions anchored to flips found from the simulation.
+scene_mutant "explained: flip caption 0.3 s late" 's/^start = "flip 1 - 0.1"/start = "flip 1 + 0.2"/'
+scene_mutant "explained: flip caption on flip 2" '/^start = "flip 1 - 0.1"/{s//start = "flip 2 - 0.1"/;n;s/^end = "flip 1 + 0.5"/end = "flip 2 + 0.2"/}'
+scene_mutant "explained: title hold 2.5 -> 2.4 s" 's/^hold = 2.5 /hold = 2.4 /'
 
+# Issue 22: the keys turned off, and the momentum sphere's camera fixed instead of following Π.
+scene_mutant "explained: keys off" '/^\[draw\]$/a key = false'
+scene_mutant "explained: sphere camera fixed" '/^viewport = \[0.5, 0.0, 0.5, 0.6\]$/a camera = { follow = false, azimuth = 132, elevation = 34 }'

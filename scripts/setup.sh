@@ -24,6 +24,9 @@ TEST_PACKAGES=(
   parallel                                       # tests: shards rendered by GNU Parallel, then assembled
   libbullet-dev libode-dev                       # optional peers for `tumble bench`
   clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)
+  python3-dev pybind11-dev python3-numpy         # the Python module (python/)
+  python3-pytest python3-nbclient python3-ipykernel python3-matplotlib  # its tests, the notebook
+  libtinygltf-dev                                # `tumble export --gltf`
 )
 
 case "${1:-test}" in
@@ -42,4 +45,20 @@ if ((${#missing[@]})); then
   [ "$(id -u)" -eq 0 ] || SUDO="sudo"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The Khronos glTF validator (npm gltf-validator, pinned in tools/npm) for the
+# glTF export test: node and npm from Debian when missing, then a local install.
+if [ "${1:-test}" = test ]; then
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    echo "setup: installing nodejs npm"
+    SUDO=""
+    [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nodejs npm
+  fi
+  if [ ! -f tools/npm/node_modules/gltf-validator/package.json ]; then
+    echo "setup: npm install (tools/npm: gltf-validator)"
+    npm ci --prefix tools/npm --no-audit --no-fund --loglevel=error
+  fi
 fi

@@ -35,6 +35,7 @@ struct BenchCliOptions {
   bench::BenchOptions studies;
   bool render = false;
   long frames = 240;
+  int jobs = 0;  // --render: frame encoder threads; 0 = TUMBLE_JOBS, else the usable cores
   std::string scene, body, readme;
 };
 
@@ -91,8 +92,11 @@ void add_bench_command(CLI::App& app, Action& action) {
                                "Measure frames/s of the demo render (1280x720, FXAA and 4x MSAA), FXAA's pixels "
                                "against 4x MSAA, and frames/s of a 198k-particle solid instead");
   cmd->add_option("--frames", o->frames, "With --render: how many frames")->capture_default_str();
+  cmd->add_option("--jobs", o->jobs,
+                  "With --render: frame encoder threads (default: env TUMBLE_JOBS, else the cores this process may use)")
+      ->check(CLI::Range(1, 1024));
   cmd->add_option("--scene", o->scene,
-                  "Work-precision study (every method x a dt sweep, rk45 x rtol, peers when torque-free) on this "
+                  "Work-precision study (every method x a dt sweep, the adaptive pairs x rtol, the peers that take the body) on this "
                   "scene's bodies against a tight reference; with --render: the scene to render (default "
                   "scenes/dzhanibekov.toml)");
   cmd->add_option("--body", o->body, "With --scene: study only this body")->excludes(render);
@@ -115,7 +119,7 @@ void add_bench_command(CLI::App& app, Action& action) {
       const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
       if (!o->scene.empty() && !o->readme.empty()) throw InputError("--render --readme-table measures the demo; drop --scene");
       if (!o->scene.empty()) {
-        run::run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout);
+        run::run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout, {}, o->jobs);
         return kOk;
       }
       // Anti-aliasing quality also on a comparison grid and on an explained
@@ -128,10 +132,10 @@ void add_bench_command(CLI::App& app, Action& action) {
         text = read_markers(o->readme, "bench:render");
       }
       const run::RenderBenchResult r =
-          run::run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout, quality);
+          run::run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout, quality, o->jobs);
       // Then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
       const run::RenderBenchResult d =
-          run::run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout);
+          run::run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout, {}, o->jobs);
       if (!o->readme.empty()) {
         text = bench::replace_between_markers(text, "bench:render", r.markdown);
         io::atomic_write_file(o->readme, bench::replace_between_markers(text, "bench:render-dense", d.markdown));

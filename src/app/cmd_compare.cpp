@@ -1,7 +1,13 @@
 // `tumble compare A.png B.png`: the golden-image comparison on two files.
 // Exit 0 same (within the tolerance), 1 different (including different
 // sizes), 2 bad input (unreadable file, bad option).
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -35,8 +41,28 @@ std::string box_text(const golden::Box& b) {
          std::to_string(b.y1) + ") " + std::to_string(b.x1 - b.x0 + 1) + "x" + std::to_string(b.y1 - b.y0 + 1);
 }
 
+// --diff must not overwrite an input (the expected golden, say) and must be
+// writable: both checked before any work, exit 2 (issue 26).
+void check_diff_path(const CompareCliOptions& o) {
+  namespace fs = std::filesystem;
+  const fs::path d = o.diff;
+  std::error_code ec;
+  for (const std::string& in : {o.a, o.b})
+    if (fs::equivalent(d, in, ec) || fs::weakly_canonical(d, ec) == fs::weakly_canonical(in, ec))
+      throw InputError("--diff " + o.diff + ": is the input " + in + "; writing it would destroy that image; choose another path");
+  if (fs::exists(d, ec) && !fs::is_regular_file(d, ec))
+    throw InputError("--diff " + o.diff + ": exists and is not a regular file");
+  const fs::path dir = d.parent_path().empty() ? fs::path(".") : d.parent_path();
+  const fs::path probe = dir / (".tumble-diff-probe-" + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) throw InputError("--diff " + o.diff + ": cannot write there: " + std::strerror(errno));
+  ::close(fd);
+  ::unlink(probe.c_str());
+}
+
 int run_compare(const CompareCliOptions& o) {
   check_tolerance(o.cmp);
+  if (!o.diff.empty()) check_diff_path(o);
   io::Image a, b;
   try {
     a = io::read_png(o.a);

@@ -6,7 +6,10 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_info.hpp"
+#include "core/format.hpp"
 #include "io/json.hpp"
+#include "scene/events.hpp"
+#include "scene/frame_clock.hpp"
 
 namespace tumble::app {
 
@@ -54,6 +57,38 @@ io::Json mat_json(const Eigen::Matrix3d& m) {  // rows
   return {vec_json(m.row(0).transpose()), vec_json(m.row(1).transpose()), vec_json(m.row(2).transpose())};
 }
 
+// "  flips (e2 ⊥ L)     1.7999, 5.0887 s in 6 s": the events "flip N" counts.
+std::string flips_text(const scene::Scene& s, std::size_t body) {
+  const std::vector<double> flips = scene::body_flip_times(s, body);
+  std::string out = "  flips (e2 ⊥ L)     ";
+  char t[32];
+  for (std::size_t i = 0; i < flips.size(); ++i) {
+    std::snprintf(t, sizeof t, "%s%.4f", i ? ", " : "", flips[i]);
+    out += t;
+  }
+  return out + (flips.empty() ? "none" : " s") + " in " + format_number(s.simulation.duration) + " s\n";
+}
+
+// The frames and the simulated time each shows: one line per stretch of one speed.
+std::string frames_text(const scene::Scene& s) {
+  const scene::FrameClock c = scene::frame_clock(s, s.render.output.fps);
+  std::ostringstream o;
+  o << "\nframes " << c.count() << " at " << format_number(c.fps()) << " fps (video "
+    << format_number(static_cast<double>(c.count() - 1) / c.fps()) << " s; frame k at video k/fps s)\n";
+  char line[200];
+  for (const scene::ClockSpan& sp : scene::clock_spans(c)) {
+    const double v0 = static_cast<double>(sp.first) / c.fps(), v1 = static_cast<double>(sp.last) / c.fps();
+    if (sp.rate == 0)
+      std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  title card, t = 0 s\n", sp.first, sp.last,
+                    v0, v1);
+    else
+      std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  t = %.4f-%.4f s  %s\n", sp.first, sp.last,
+                    v0, v1, c.time(sp.first), c.time(sp.last), (sp.rate == 1 ? "real time" : scene::speed_text(sp.rate)).c_str());
+    o << line;
+  }
+  return o.str();
+}
+
 std::string to_json(const scene::Scene& s) {
   io::Json bodies = io::Json::array();
   for (const scene::Body& b : s.bodies) {
@@ -71,9 +106,14 @@ std::string to_json(const scene::Scene& s) {
       for (const scene::MeshSource& ms : b.meshes) meshes.push_back(mesh_json(ms));
       j["meshes"] = std::move(meshes);
     }
+    j["flip_times"] = scene::body_flip_times(s, static_cast<std::size_t>(&b - s.bodies.data()));
     bodies.push_back(std::move(j));
   }
-  return io::json_text(io::Json{{"bodies", std::move(bodies)}});
+  const scene::FrameClock clock = scene::frame_clock(s, s.render.output.fps);
+  io::Json times = io::Json::array();
+  for (long k = 0; k < clock.count(); ++k) times.push_back(clock.time(k));
+  io::Json frames{{"count", clock.count()}, {"fps", clock.fps()}, {"hold", clock.hold()}, {"times", std::move(times)}};
+  return io::json_text(io::Json{{"bodies", std::move(bodies)}, {"frames", std::move(frames)}});
 }
 
 std::string to_text(const scene::Scene& s) {
@@ -110,7 +150,9 @@ std::string to_text(const scene::Scene& s) {
                       e.note.c_str());
       o << line;
     }
+    o << flips_text(s, static_cast<std::size_t>(&b - s.bodies.data()));
   }
+  o << frames_text(s);
   return o.str();
 }
 

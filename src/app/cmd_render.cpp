@@ -1,13 +1,19 @@
 // `tumble render SCENE`: frames (PNG, atomic), manifest.json and a video.
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
+#include "io/atomic_file.hpp"
 #include "render/gl_context.hpp"
+#include "render/worker_threads.hpp"
+#include "render/layout_report.hpp"
 #include "run/render_folder.hpp"
+#include "run/render_job.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {
@@ -17,9 +23,10 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderOptions {
-  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png", aa;
-  std::optional<int> width, height, msaa;
+  std::string scene, out_dir, frames, video, quality = "high", progress = "auto", gl, frames_out = "png", aa, layout;
+  std::optional<int> width, height, msaa, gpu;
   std::optional<double> fps;
+  int jobs = 0;  // 0: TUMBLE_JOBS, else the cores this process may use
   bool resume = false, force = false;
 };
 
@@ -55,6 +62,8 @@ std::vector<scene::Override> scene_overrides(const RenderOptions& o) {
 struct RenderPlan {
   scene::Scene scene;
   render::GlBackend backend;
+  std::optional<int> gpu;  // EGL device: --gpu, else TUMBLE_EGL_DEVICE
+  int jobs;                // frame encoder threads
 };
 
 RenderPlan plan_render(const RenderOptions& o) {
@@ -64,7 +73,17 @@ RenderPlan plan_render(const RenderOptions& o) {
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
   if (o.frames_out != "png" && o.frames_out != "none")
     throw InputError("--frames-out: expected png or none, found '" + o.frames_out + "'");
-  const render::GlBackend backend = parse_backend_option(o.gl);
+  // --gpu N means an EGL device: a user picking a GPU wants it drawing.
+  if (o.gpu && o.gl == "osmesa") throw InputError("--gpu chooses an EGL device; it needs --gl egl, not osmesa");
+  const render::GlBackend backend = o.gpu ? render::GlBackend::egl : parse_backend_option(o.gl);
+  int jobs = 0;
+  std::optional<int> gpu = o.gpu;
+  try {  // the environment's values are checked before any work, as the options are
+    jobs = render::worker_threads(o.jobs);
+    if (!gpu && backend == render::GlBackend::egl) gpu = render::default_egl_device();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
   scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
   scene::OutputConfig& out = s.render.output;
   if (o.frames_out == "none" && out.video == scene::VideoFormat::none)
@@ -73,10 +92,29 @@ RenderPlan plan_render(const RenderOptions& o) {
   if (o.frames_out == "none" && !o.frames.empty())
     throw InputError("--frames-out none streams the whole video; --frames needs PNG frames (--frames-out png)");
   out.apply_quality(*q, o.msaa || !o.aa.empty());
-  return {std::move(s), backend};
+  return {std::move(s), backend, gpu, jobs};
+}
+
+// --layout FILE: the layout report of the asked frames, no pixels (no GL, no output folder).
+int run_layout(const RenderOptions& o) {
+  const scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  const scene::OutputConfig& out = s.render.output;
+  const long count = scene::frame_clock(s, out.fps).count();
+  const auto [first, last] =
+      o.frames.empty() ? std::pair<long, long>{0, count - 1} : run::parse_frame_range(o.frames, count);
+  const std::vector<run::Run> runs = run::simulate_runs(s, count, out.fps);
+  const run::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
+  std::ostringstream text;
+  for (long k = first; k <= last; ++k)
+    render::write_layout(text, k, render::layout_items(builder.build(k), out.width, out.height));
+  io::atomic_write_file(o.layout, text.str());
+  std::cout << "wrote the layout of frames " << first << ".." << last << " of " << count << " (" << out.width << "x"
+            << out.height << ") to " << o.layout << "\n";
+  return kOk;
 }
 
 int run_render(const RenderOptions& o) {
+  if (!o.layout.empty()) return run_layout(o);
   const RenderPlan plan = plan_render(o);
   const run::RenderRequest req{plan.scene,
                                o.out_dir.empty() ? fs::path("out") / plan.scene.name : fs::path(o.out_dir),
@@ -85,7 +123,9 @@ int run_render(const RenderOptions& o) {
                                o.force,
                                o.frames_out == "none",
                                plan.backend,
-                               o.scene};
+                               o.scene,
+                               plan.gpu,
+                               plan.jobs};
   ConsoleListener listener(o.progress != "none");
   return exit_code(run::render_scene(req, listener));
 }
@@ -112,7 +152,18 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--msaa", o->msaa,
                   "MSAA samples 0, 2 or 4 (overrides --quality; alone it also sets aa: msaa, or none for 0)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
+  cmd->add_option("--layout", o->layout,
+                  "Write only the layout report, JSON Lines (frame, view, name, kind, box, visible per drawn item), "
+                  "to this file: no pixels, no output folder");
   cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
+  cmd->add_option("--gpu", o->gpu,
+                  "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "
+                  "Mesa's surfaceless display or device 0)")
+      ->check(CLI::Range(0, 1023));
+  cmd->add_option("--jobs", o->jobs,
+                  "Frame encoder threads (default: env TUMBLE_JOBS, else the cores this process may use: "
+                  "affinity mask and cgroup CPU quota); the frames' bytes do not depend on it")
+      ->check(CLI::Range(1, 1024));
   cmd->add_flag("--resume", o->resume,
                 "Continue an interrupted render in the output folder: frames already on disk are kept");
   cmd->add_flag("--force", o->force,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/stop_signals.hpp"
 #include "core/dynamics.hpp"
 #include "core/propagator.hpp"
 #include "io/atomic_file.hpp"
@@ -96,6 +97,13 @@ int run_simulate(const SimulateOptions& o) {
     props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
   }
 
+  // Ctrl-C / SIGTERM: stop at the next row, write nothing (the temp file goes
+  // with `out`), and leave an existing CSV as it was.
+  const StopSignals stop;
+  struct Stopped {};
+  auto check_stop = [&] {
+    if (stop.received()) throw Stopped{};
+  };
   io::AtomicFile out(o.csv);
   std::string buf = std::string(io::kTrajectoryHeader) + kExtraColumns + "\n";
   auto flush = [&] {
@@ -116,6 +124,7 @@ int run_simulate(const SimulateOptions& o) {
           append_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
         }
         if (buf.size() > (1u << 20)) flush();
+        check_stop();
         if (last) break;
       }
     } else {
@@ -123,8 +132,14 @@ int run_simulate(const SimulateOptions& o) {
       for (std::size_t k = 1; k < times.size(); ++k) {
         for (auto& p : props) append_row(buf, times[k], p->model(), p->advance_to(times[k]));
         if (buf.size() > (1u << 20)) flush();
+        check_stop();
       }
     }
+  } catch (const Stopped&) {
+    const int sig = stop.received();
+    std::cerr << "tumble: interrupted (" << (sig == SIGINT ? "SIGINT" : "SIGTERM") << "): no CSV written; "
+              << o.csv << " is as it was before the run\n";
+    return 128 + sig;
   } catch (const Diverged& e) {
     // Keep what was computed: the rows up to the failure are valid.
     flush();

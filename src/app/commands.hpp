@@ -30,6 +30,7 @@ void add_compare_command(CLI::App& app, Action& action);
 void add_golden_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);
+void add_export_command(CLI::App& app, Action& action);
 
 /// The README's "Integration methods" table (markdown), one row per row of
 /// core's method table: name, order, description.

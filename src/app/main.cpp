@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
 #endif
   tumble::app::add_bench_command(app, action);
   tumble::app::add_methods_command(app, action);
+  tumble::app::add_export_command(app, action);
   if (argc < 2) {  // no command: say what there is
     std::cout << app.help();
     return tumble::app::kOk;

@@ -1,10 +1,10 @@
 // Bullet peer: the body as a btRigidBody in a btDiscreteDynamicsWorld.
+#include "bench/peer.hpp"
+
 #if TUMBLE_HAVE_BULLET
 #include <btBulletDynamicsCommon.h>
 
 #include <memory>
-
-#include "bench/peers.hpp"
 
 namespace tumble::bench {
 
@@ -62,6 +62,7 @@ class BulletStepper final : public Stepper {
 
 }  // namespace
 
+namespace {
 std::vector<PeerConfig> bullet_configs() {
   const std::pair<const char*, int> flags[] = {
       {"bullet_none", 0},
@@ -77,6 +78,26 @@ std::vector<PeerConfig> bullet_configs() {
   }
   return out;
 }
+}  // namespace
 
 }  // namespace tumble::bench
 #endif
+
+namespace tumble::bench {
+
+PeerEngine bullet_engine() {
+#if TUMBLE_HAVE_BULLET
+  return {"Bullet " TUMBLE_BULLET_VERSION " (double precision, libbullet-dev)",
+          "- Bullet: one btRigidBody (mass, local inertia = principal moments, btSphereShape 0.1 m, no damping, "
+          "deactivation disabled) in a btDiscreteDynamicsWorld (dbvt broadphase, sequential-impulse solver), gravity 0, "
+          "stepSimulation(dt, 0) (one internal step of exactly dt). Rigid-body flags: `bullet_none` 0 (no gyroscopic "
+          "term: ω constant), `bullet_explicit` BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT (the world's default "
+          "max gyroscopic force clamp), `bullet_implicit_body` BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY "
+          "(Bullet's default), `bullet_implicit_world` BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD.\n",
+          bullet_configs()};
+#else
+  return {"", "- Bullet: not found (install libbullet-dev and re-run CMake)\n", {}};
+#endif
+}
+
+}  // namespace tumble::bench

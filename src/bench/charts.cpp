@@ -234,3 +234,25 @@ std::vector<std::filesystem::path> chart_flips(const std::filesystem::path& dir,
 }
 
 }  // namespace tumble::bench
+
+namespace tumble::bench {
+
+std::vector<std::filesystem::path> chart_tolerance(const std::filesystem::path& dir, const std::vector<WpRow>& rows,
+                                                   std::ostream& log) {
+  Blocks b;
+  for (const WpRow& r : rows)
+    if (r.param_name == "rtol" && std::isfinite(r.angle))
+      b.add(r.problem + " " + r.method, num(r.param) + " " + num(floor_log(r.angle)));
+  if (b.names.empty()) return {};
+  const std::string name = "tolerance";
+  std::string gp = std::string(kHeader) +
+                   "set title 'Tolerance proportionality: orientation error at the end against rtol (atol = rtol; "
+                   "grey: rtol/10, rtol, 10 rtol; peers dashed)' noenhanced\n"
+                   "set xlabel 'rtol'\nset ylabel 'orientation error at the end (rad)'\nset key noenhanced\n";
+  std::string plot = plot_blocks(name + ".dat", b, "1:2");
+  plot.pop_back();
+  plot += ", \\\n  x/10 lc rgb '#bbbbbb' dt 3 notitle, x lc rgb '#888888' dt 1 notitle, 10*x lc rgb '#bbbbbb' dt 3 notitle\n";
+  return draw(dir, name, b.text(), gp + plot, log);
+}
+
+}  // namespace tumble::bench

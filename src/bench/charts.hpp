@@ -23,6 +23,11 @@ std::vector<std::filesystem::path> chart_stability(const std::filesystem::path& 
                                                    const std::vector<StabilityRow>& rows, std::ostream& log);
 std::vector<std::filesystem::path> chart_drift(const std::filesystem::path& dir, const std::vector<DriftRow>& rows,
                                                std::ostream& log);
+/// Orientation error at the end against rtol for every adaptive configuration
+/// (tumble's pairs and the adaptive peers) on every problem, with rtol/10, rtol
+/// and 10 rtol drawn for reference.
+std::vector<std::filesystem::path> chart_tolerance(const std::filesystem::path& dir, const std::vector<WpRow>& rows,
+                                                   std::ostream& log);
 std::vector<std::filesystem::path> chart_flips(const std::filesystem::path& dir, const std::vector<FlipRow>& rows,
                                                std::ostream& log);
 

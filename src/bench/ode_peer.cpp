@@ -1,10 +1,10 @@
 // ODE peer: the body as one dBody stepped by dWorldStep.
+#include "bench/peer.hpp"
+
 #if TUMBLE_HAVE_ODE
 #include <ode/ode.h>
 
 #include <memory>
-
-#include "bench/peers.hpp"
 
 namespace tumble::bench {
 
@@ -65,6 +65,7 @@ class OdeStepper final : public Stepper {
 
 }  // namespace
 
+namespace {
 std::vector<PeerConfig> ode_configs() {
   const std::pair<const char*, OdeMode> modes[] = {
       {"ode_default", OdeMode::standard},
@@ -79,6 +80,24 @@ std::vector<PeerConfig> ode_configs() {
   }
   return out;
 }
+}  // namespace
 
 }  // namespace tumble::bench
 #endif
+
+namespace tumble::bench {
+
+PeerEngine ode_engine() {
+#if TUMBLE_HAVE_ODE
+  return {"ODE " TUMBLE_ODE_VERSION " (double precision, libode-dev)",
+          "- ODE: one dBody (dMassSetParameters with the principal moments), gravity 0, no joints, dWorldStep(dt), "
+          "auto-disable off. `ode_default`: as created (gyroscopic mode on, finite rotation off); `ode_gyro_off`: "
+          "dBodySetGyroscopicMode(0); `ode_finite_rotation`: gyroscopic on + dBodySetFiniteRotationMode(1) with no axis "
+          "(full finite-rotation update).\n",
+          ode_configs()};
+#else
+  return {"", "- ODE: not found (install libode-dev and re-run CMake)\n", {}};
+#endif
+}
+
+}  // namespace tumble::bench

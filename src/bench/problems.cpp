@@ -9,7 +9,7 @@
 #include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/quaternion.hpp"
-#include "core/rk45.hpp"
+#include "core/embedded_rk.hpp"
 
 namespace tumble::bench {
 
@@ -57,21 +57,67 @@ Problem forced_problem() {
   p.name = "forced";
   p.description = "forced T-handle: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.01, 10, 0.01) rad/s, gravity "
                   "(0, 0, -9.81) m/s^2 plus a body-fixed force (0, 0, 2) N at (1, 0, 0) m, 10 s; reference: "
-                  "rk45 at rtol 1e-13";
+                  "dop853 at rtol 1e-13";
   ForceSet f;
   f.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
   f.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
   p.model = diagonal_model("forced", {1, 2, 3}, f);
   p.s0 = spinning_state(p.model, {0.01, 10, 0.01});
   p.torque_free = false;
-  p.reference = run_rk45(p.model, p.s0, p.duration, 1e-13);
+  p.peers = true;
+  p.reference = reference_run(p.model, p.s0, p.duration);
   // The same reference integrator on the torque-free T-handle, against the closed form.
   const Problem th = t_handle_problem();
-  p.reference_check = rotation_angle_between(run_rk45(th.model, th.s0, th.duration, 1e-13).q, th.reference.q);
+  p.reference_check = rotation_angle_between(reference_run(th.model, th.s0, th.duration).q, th.reference.q);
   return p;
 }
 
-std::vector<Problem> all_problems() { return {t_handle_problem(), symmetric_top_problem(), forced_problem()}; }
+namespace {
+
+// A forced scene: its reference is reference_run; odeint joins the peers.
+Problem forced_scene(std::string name, std::string description, RigidBodyModel m, const Eigen::Vector3d& omega_body) {
+  Problem p;
+  p.name = std::move(name);
+  p.description = std::move(description) + "; reference: dop853 at rtol 1e-13";
+  p.model = std::move(m);
+  p.s0 = spinning_state(p.model, omega_body);
+  p.torque_free = false;
+  p.peers = true;
+  p.reference = reference_run(p.model, p.s0, p.duration);
+  return p;
+}
+
+}  // namespace
+
+std::vector<Problem> scene_problems() {
+  ForceSet thruster, damped, top;
+  thruster.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  thruster.terms.push_back(PointForce{Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(1, 0, 0), Frame::body});
+  thruster.terms.push_back(ConstantTorque{Eigen::Vector3d(0, 0.3, 0), Frame::body});
+  damped.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
+  damped.terms.push_back(LinearDamping{0.3});
+  damped.terms.push_back(AngularDamping{0.05});
+  top.terms.push_back(ConstantTorque{Eigen::Vector3d(0.5, 0, 0), Frame::world});
+  top.terms.push_back(AngularDamping{0.02});
+  return {forced_scene("thruster",
+                       "thruster: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.5, 3, 0.2) rad/s, gravity, body-fixed 2 N "
+                       "along z at (1, 0, 0) m, body torque (0, 0.3, 0) N m, 10 s",
+                       diagonal_model("thruster", {1, 2, 3}, thruster), {0.5, 3, 0.2}),
+          forced_scene("damped",
+                       "damped tumbler: moments (1, 2, 3) kg m^2, 1 kg, omega_body (0.3, 6, 0.2) rad/s, gravity, linear "
+                       "damping 0.3 N s/m, angular damping 0.05 N m s, 10 s",
+                       diagonal_model("damped", {1, 2, 3}, damped), {0.3, 6, 0.2}),
+          forced_scene("torqued_top",
+                       "torqued top: moments (2, 2, 4) kg m^2, 1 kg, omega_body (3, 1, 5) rad/s, world torque (0.5, 0, 0) "
+                       "N m, angular damping 0.02 N m s, 10 s",
+                       diagonal_model("torqued_top", {2, 2, 4}, top), {3, 1, 5})};
+}
+
+std::vector<Problem> all_problems() {
+  std::vector<Problem> v = {t_handle_problem(), symmetric_top_problem(), forced_problem()};
+  for (Problem& p : scene_problems()) v.push_back(std::move(p));
+  return v;
+}
 
 Problem body_problem(const std::string& name, const RigidBodyModel& m, const BodyState& s0, double duration) {
   Problem p;
@@ -80,8 +126,8 @@ Problem body_problem(const std::string& name, const RigidBodyModel& m, const Bod
   p.s0 = s0;
   p.duration = duration;
   p.torque_free = m.forces.empty();
-  p.peers = p.torque_free;
-  p.reference = p.torque_free ? exact_free_state(m, s0, duration) : run_rk45(m, s0, duration, 1e-13);
+  p.peers = true;  // forced bodies: the peers that take forces (odeint)
+  p.reference = p.torque_free ? exact_free_state(m, s0, duration) : reference_run(m, s0, duration);
   // Largest step h·|ω| = 1 at the start, and at least 10 steps per run.
   const double w = omega_principal(m, s0).norm();
   p.dt_max = std::min(w > 0 ? 1 / w : duration, duration / 10);
@@ -89,7 +135,7 @@ Problem body_problem(const std::string& name, const RigidBodyModel& m, const Bod
   d.precision(4);
   d << "body `" << m.name << "`: mass " << m.mass << " kg, principal moments (" << m.inertia.x() << ", "
     << m.inertia.y() << ", " << m.inertia.z() << ") kg m^2, |omega| " << w << " rad/s at t = 0, " << duration << " s, "
-    << (p.torque_free ? "torque-free; reference: closed form" : "forced; reference: rk45 at rtol 1e-13");
+    << (p.torque_free ? "torque-free; reference: closed form" : "forced; reference: dop853 at rtol 1e-13");
   p.description = d.str();
   return p;
 }
@@ -118,12 +164,16 @@ BodyState run_fixed(Method method, const RigidBodyModel& m, const BodyState& s0,
   return s.state();
 }
 
-BodyState run_rk45(const RigidBodyModel& m, const BodyState& s0, double T, double rtol) {
-  Rk45Options o;
+BodyState run_adaptive(Method method, const RigidBodyModel& m, const BodyState& s0, double T, double rtol) {
+  AdaptiveOptions o;
   o.rtol = rtol;
   o.atol = rtol;
-  Rk45 r(m, s0, 0.0, o);
-  return r.advance_to(T);
+  o.t_stop = T;
+  return method_info(method).adaptive(m, s0, 0.0, o)->advance_to(T);
+}
+
+BodyState reference_run(const RigidBodyModel& m, const BodyState& s0, double T) {
+  return run_adaptive(Method::dop853, m, s0, T, kReferenceRtol);
 }
 
 double thread_cpu_seconds() {

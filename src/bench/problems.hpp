@@ -11,7 +11,7 @@
 namespace tumble::bench {
 
 /// One test problem: a body, its initial state, a duration and the reference
-/// final state (closed form when torque-free, else rk45 at rtol 1e-13).
+/// final state (closed form when torque-free, else dop853 at rtol 1e-13).
 struct Problem {
   std::string name;         ///< "t_handle", "symmetric_top", "forced"
   std::string description;  ///< one line for summary.md
@@ -19,10 +19,10 @@ struct Problem {
   BodyState s0;
   double duration = 10;     ///< s
   bool torque_free = true;  ///< no forces at all: the reference is the closed form
-  bool peers = false;       ///< also run the peers (torque-free problems only)
+  bool peers = false;       ///< also run the peers (forced problems: those that take forces)
   double dt_max = 0.1;      ///< s, largest fixed step swept (h·|ω| ≈ 1)
   BodyState reference;      ///< state at `duration`
-  double reference_check = 0;  ///< forced: |rk45(1e-13) - exact| on the T-handle, rad
+  double reference_check = 0;  ///< forced: |dop853(1e-13) - exact| on the T-handle, rad
 };
 
 /// Principal moments (1, 2, 3) kg·m², ω_body = (0.01, 10, 0.01) rad/s, 10 s (issue #2 §5).
@@ -31,9 +31,14 @@ Problem t_handle_problem();
 Problem symmetric_top_problem();
 /// T-handle under gravity g = (0, 0, -9.81) m/s² plus a body-fixed 2 N force at (1, 0, 0) m.
 Problem forced_problem();
+/// Three more forced scenes with forces and damping (issue #27 §4): a thruster
+/// (gravity, body-fixed force, body torque), a damped tumbler (gravity, linear
+/// and angular damping) and a torqued, damped symmetric top.
+std::vector<Problem> scene_problems();
+/// The T-handle, the symmetric top, the forced T-handle, then scene_problems().
 std::vector<Problem> all_problems();
 /// A user's body (from a scene) over `duration` (s): the reference is the closed
-/// form when it has no forces, else rk45 at rtol 1e-13; peers when torque-free.
+/// form when it has no forces, else dop853 at rtol 1e-13; with the peers that run it.
 Problem body_problem(const std::string& name, const RigidBodyModel& m, const BodyState& s0, double duration);
 
 /// A body with principal moments `I` (kg·m²), unit mass, identity principal frame.
@@ -51,8 +56,11 @@ Errors errors(const Problem& p, const BodyState& s);
 
 /// n = round(T/dt) fixed steps of h = T/n. Non-finite states stop early.
 BodyState run_fixed(Method method, const RigidBodyModel& m, const BodyState& s0, double T, double dt);
-/// Adaptive Dormand–Prince to T with atol = rtol (all components are O(1..10)).
-BodyState run_rk45(const RigidBodyModel& m, const BodyState& s0, double T, double rtol);
+/// An adaptive pair (rk45, dop853) to T with atol = rtol, its last step ending on T.
+BodyState run_adaptive(Method method, const RigidBodyModel& m, const BodyState& s0, double T, double rtol);
+/// The forced problems' reference: dop853 at rtol kReferenceRtol.
+inline constexpr double kReferenceRtol = 1e-13;
+BodyState reference_run(const RigidBodyModel& m, const BodyState& s0, double T);
 
 /// Median CPU seconds (this thread) per call of `fn`; each timed batch repeats
 /// `fn` until it spans at least `min_batch_s`.

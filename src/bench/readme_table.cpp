@@ -7,8 +7,8 @@
 #include "bench/bench.hpp"
 #include "bench/peers.hpp"
 #include "core/error.hpp"
+#include "core/embedded_rk.hpp"
 #include "core/format.hpp"
-#include "core/rk45.hpp"
 
 namespace tumble::bench {
 
@@ -61,14 +61,14 @@ std::string readme_accuracy_table(std::ostream& log) {
         return run_fixed(m, q.model, q.s0, q.duration, dt);
       }));
     } else {  // the scene's defaults: rtol 1e-9, atol 1e-12, whatever dt
-      Rk45Options o;
+      AdaptiveOptions o;
       o.rtol = kRtol;
       long steps = 0;
       BodyState s;
       auto once = [&] {
-        Rk45 r(p.model, p.s0, 0.0, o);
-        s = r.advance_to(p.duration);
-        steps = r.accepted() + r.rejected();
+        const auto r = method_info(m).adaptive(p.model, p.s0, 0.0, o);
+        s = r->advance_to(p.duration);
+        steps = r->accepted() + r->rejected();
       };
       once();
       const double e = errors(p, s).angle, cpu = median_cpu_seconds(once, 0.02, 5);

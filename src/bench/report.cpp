@@ -57,10 +57,38 @@ std::vector<CheapestRow> cheapest_per_tolerance(const std::vector<WpRow>& rows, 
   return out;
 }
 
+namespace {
+
+using Cells = std::map<std::pair<std::string, double>, const CheapestRow*>;
+
+// CPU of `a` over CPU of `b` per tolerance (< 1: a is cheaper); empty names =
+// the cheapest of tumble's methods over the cheapest peer. Empty when no cell has both.
+std::string ratio_row(const std::string& title, Cells& cell, const std::vector<std::string>& who,
+                      const std::vector<double>& tols, const std::string& a, const std::string& b) {
+  std::string row = "| " + title + " |";
+  bool any = false;
+  for (double t : tols) {
+    double ca = NAN, cb = NAN;
+    for (const std::string& w : who) {
+      const CheapestRow* c = cell[{w, t}];
+      if (!c || !std::isfinite(c->cpu_s)) continue;
+      const bool is_a = a.empty() ? c->kind == "tumble" : w == a, is_b = b.empty() ? c->kind == "peer" : w == b;
+      if (is_a && !(c->cpu_s >= ca)) ca = c->cpu_s;
+      if (is_b && !(c->cpu_s >= cb)) cb = c->cpu_s;
+    }
+    const bool both = std::isfinite(ca) && std::isfinite(cb);
+    any = any || both;
+    row += " " + (both ? fmt(ca / cb, 2) + "×" : std::string("—")) + " |";
+  }
+  return any ? row + "\n" : "";
+}
+
+}  // namespace
+
 std::string cheapest_markdown(const std::vector<CheapestRow>& rows, const std::string& problem) {
   std::vector<double> tols;
   std::vector<std::string> who;
-  std::map<std::pair<std::string, double>, const CheapestRow*> cell;
+  Cells cell;
   for (const CheapestRow& r : rows) {
     if (r.problem != problem) continue;
     if (std::find(tols.begin(), tols.end(), r.tolerance) == tols.end()) tols.push_back(r.tolerance);
@@ -97,7 +125,10 @@ std::string cheapest_markdown(const std::vector<CheapestRow>& rows, const std::s
   if (std::any_of(rows.begin(), rows.end(), [&](const CheapestRow& r) { return r.problem == problem && r.kind == "peer"; })) {
     o << "| cheapest peer |";
     for (double t : tols) o << " " << (best_peer[t] ? best_peer[t]->who : std::string("none")) << " |";
-    o << "\n";
+    o << "\n" << ratio_row("tumble's cheapest ÷ cheapest peer", cell, who, tols, "", "");
+    for (const auto& [ours, theirs] : {std::pair{"rk45", "odeint_dopri5_body"}, {"dop853", "odeint_dopri5_body"},
+                                       {"rk4", "odeint_rk4_body"}})
+      o << ratio_row(std::string(ours) + " ÷ " + theirs, cell, who, tols, ours, theirs);
   }
   return o.str();
 }
@@ -131,17 +162,34 @@ std::string error_at_dt_markdown(const std::vector<WpRow>& rows, const std::stri
   return o.str();
 }
 
+static std::string tolerance_markdown(const std::vector<WpRow>& rows) {
+  std::ostringstream o;
+  o << "## Tolerance proportionality (tolerance.png)\n\nOrientation error at the end over rtol (atol = rtol) for "
+       "rtol from 1e-4 to 1e-10: within 10× of rtol means a ratio in [0.1, 10].\n\n| problem | adaptive method "
+       "| smallest error/rtol | largest error/rtol | points |\n|---|---|---|---|---|\n";
+  std::map<std::pair<std::string, std::string>, std::vector<double>> ratios;
+  for (const WpRow& r : rows)
+    if (r.param_name == "rtol" && r.param <= 1e-4 * (1 + 1e-9) && r.param >= 1e-10 * (1 - 1e-9))
+      ratios[{r.problem, r.method}].push_back(r.angle / r.param);
+  for (const auto& [key, v] : ratios)
+    o << "| " << key.first << " | " << key.second << " | " << fmt(*std::min_element(v.begin(), v.end()), 2) << " | "
+      << fmt(*std::max_element(v.begin(), v.end()), 2) << " | " << v.size() << " |\n";
+  return o.str() + "\n";
+}
+
 std::string work_precision_report(const std::vector<Problem>& problems, const Settings& st,
                                   const std::filesystem::path& dir, bool plot,
-                                  std::vector<std::filesystem::path>& pngs, std::ostream& log) {
+                                  std::vector<std::filesystem::path>& pngs, std::ostream& log,
+                                  std::vector<WpRow>* rows) {
   const std::vector<WpRow> wp = work_precision(problems, st, log);
+  if (rows) *rows = wp;
   write_work_precision_csv(dir / "work_precision.csv", wp);
   const std::vector<OrderFit> fits = fit_orders(wp);
   write_orders_csv(dir / "convergence_orders.csv", fits);
   const std::vector<CheapestRow> cheap = cheapest_per_tolerance(wp, summary_tolerances());
   write_cheapest_csv(dir / "cheapest.csv", cheap);
   if (plot)
-    for (auto v : {chart_work_precision(dir, wp, log), chart_convergence(dir, wp, fits, log)})
+    for (auto v : {chart_work_precision(dir, wp, log), chart_convergence(dir, wp, fits, log), chart_tolerance(dir, wp, log)})
       pngs.insert(pngs.end(), v.begin(), v.end());
 
   std::ostringstream md;
@@ -153,6 +201,7 @@ std::string work_precision_report(const std::vector<Problem>& problems, const Se
   for (const Problem& p : problems)
     md << "## Orientation error (rad) at " << fmt(p.duration) << " s: " << p.name << "\n\n"
        << error_at_dt_markdown(wp, p.name) << "\n";
+  md << tolerance_markdown(wp);
   md << "## Fitted orders (slope of log error vs log dt over errors in (1e-11, 1e-2))\n\n| problem | method | angle | "
         "energy |\n|---|---|---|---|\n";
   for (const OrderFit& f : fits)

@@ -34,11 +34,12 @@ std::string error_at_dt_markdown(const std::vector<WpRow>& rows, const std::stri
 
 /// Runs the work-precision study on `problems` and writes work_precision.csv,
 /// convergence_orders.csv, cheapest.csv and (when `plot`) the work-precision and
-/// convergence charts into dir. Returns the summary.md sections; appends the
-/// charts to `pngs`.
+/// convergence and tolerance charts into dir. Returns the summary.md sections;
+/// appends the charts to `pngs` and (when given) the rows to `rows`.
 std::string work_precision_report(const std::vector<Problem>& problems, const Settings& st,
                                   const std::filesystem::path& dir, bool plot,
-                                  std::vector<std::filesystem::path>& pngs, std::ostream& log);
+                                  std::vector<std::filesystem::path>& pngs, std::ostream& log,
+                                  std::vector<WpRow>* rows = nullptr);
 
 /// "3.14" with `prec` significant digits; "—" for NaN or inf.
 std::string fmt(double v, int prec = 3);

@@ -44,7 +44,7 @@ std::string header_markdown(const std::string& title, const Settings& st, const 
   for (const Problem& p : problems) {
     md << "- `" << p.name << "`: " << p.description;
     if (p.reference_check > 0)
-      md << " (that rk45 at rtol 1e-13 is " << fmt(p.reference_check)
+      md << " (that dop853 at rtol 1e-13 is " << fmt(p.reference_check)
          << " rad from the closed form on the torque-free T-handle)";
     md << "\n";
   }
@@ -85,14 +85,15 @@ int run(const BenchOptions& opt, std::ostream& log) {
 
   const std::vector<Problem> problems = all_problems();
   std::vector<std::filesystem::path> pngs;
-  const std::string wp_md = work_precision_report(problems, st, dir, plot, pngs, log);
+  std::vector<WpRow> wp;
+  const std::string wp_md = work_precision_report(problems, st, dir, plot, pngs, log, &wp);
   std::vector<StabilityRow> stab = stability_map(st, log);
   write_stability_csv(dir / "stability_map.csv", stab);
   std::vector<DriftRow> drift = long_run_drift(st, log);
   write_drift_csv(dir / "drift.csv", drift);
   std::vector<FlipRow> flips = dzhanibekov(st, log);
   write_flips_csv(dir / "dzhanibekov.csv", flips);
-  std::vector<AutoRow> autos = auto_study(st, log);
+  std::vector<AutoRow> autos = auto_study(problems, wp, st, log);
   write_auto_csv(dir / "auto.csv", autos);
 
   if (plot) {
@@ -108,7 +109,7 @@ int run(const BenchOptions& opt, std::ostream& log) {
   md << "## Stability map (T-handle moments, spin Ω about the intermediate axis for ≈ 10 s ending between flips, "
      << "plus major/minor-axis spins with a 1e-3 tilt)\n\nok: error ≤ 1 % (max of orientation rad and relative energy); "
      << "inaccurate: > 1 %; wrong: flip count differs from the closed form's (both seen at the method's step times, so a step longer than half a flip interval is not blamed for aliasing) or a stable axis tilts > 0.1 rad; "
-     << "diverged: non-finite or energy × 10. rk45 and odeint_dopri5_body here are fixed-step Dormand–Prince steps.\n\n"
+     << "diverged: non-finite or energy × 10. rk45, dop853 and odeint_dopri5_body here are fixed-step steps of their pairs.\n\n"
      << stability_table(stab) << "\n";
   md << "## Long-run drift (T-handle, dt = 1 ms)\n\nWorld L is a state variable with L' = 0 when torque-free, so every method keeps "
      << "it exactly; the |Π| column (Π = q* L q) shows |q| drift instead.\n\n| method | steps | |ΔE|/E at end | |Δ|Π||/|L| at end |\n|---|---|---|---|\n";
@@ -118,16 +119,7 @@ int run(const BenchOptions& opt, std::ostream& log) {
     const DriftRow& r = last[std::string(method_name(m))];
     md << "| " << r.method << " | " << r.step << " | " << fmt(r.energy) << " | " << fmt(r.momentum) << " |\n";
   }
-  md << "\n## method = \"auto\": the pick against the tolerance\n\nProblem: " << auto_problem_description()
-     << ". Auto measures each candidate on the body (the pilot) and runs the cheapest that meets the tolerance; "
-     << "the run is then timed (median CPU) and its end error measured against the reference.\n\n"
-     << "| tolerance (rad) | pick | at | predicted error | error | predicted CPU (ms) | CPU (ms) | pilot CPU (ms) |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
-  for (const AutoRow& a : autos)
-    md << "| " << fmt(a.tolerance) << " | " << a.method << " | " << a.param_name << " = " << fmt(a.param) << " | "
-       << fmt(a.predicted_error) << " | " << fmt(a.error) << " | " << fmt(a.predicted_cpu_s * 1e3) << " | "
-       << fmt(a.cpu_s * 1e3) << " | " << fmt(a.pilot_cpu_s * 1e3) << " |\n";
-  md << "\n";
+  md << auto_markdown(autos);
   finish(dir, md.str(),
          "work_precision.csv, convergence_orders.csv, cheapest.csv, stability_map.csv, drift.csv, dzhanibekov.csv, "
          "auto.csv",

@@ -2,6 +2,7 @@
 // rows so run() can chart and summarise them.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -35,7 +36,8 @@ struct WpRow {
 /// form, `exact` on a torque-free body) down 4 decades (--quick: 2), and at
 /// most 1e6 steps (--quick: 1e5) per run.
 std::vector<double> dt_grid(const Settings& st, const Problem& p, bool closed_form);
-/// The rtol sweep of adaptive runs (tumble's rk45 and adaptive peers).
+/// The rtol sweep of adaptive runs (tumble's pairs and adaptive peers): 1e-3 … 1e-12, 4 per
+/// decade (--quick: 2 per decade), fine enough that the rtol grid does not decide the cheapest.
 std::vector<double> rtol_grid(const Settings& st);
 
 std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Settings& st, std::ostream& log);
@@ -82,16 +84,24 @@ struct FlipRow {
 std::vector<FlipRow> dzhanibekov(const Settings& st, std::ostream& log);
 void write_flips_csv(const std::filesystem::path& file, const std::vector<FlipRow>& rows);
 
-/// method = "auto" over a sweep of tolerances on a forced body: the pick, its
-/// predicted and measured error (rad) and CPU (s), and the pilot's CPU (s).
+/// method = "auto" on each problem at each tolerance: the pick, its predicted
+/// and delivered error (rad) and CPU (s), the pilot's CPU (s), and the
+/// cheapest of tumble's configurations in the work-precision rows `wp` that
+/// meets the tolerance.
 struct AutoRow {
+  std::string problem;
   double tolerance = 0;
   std::string method, param_name;
   double param = 0, predicted_error = 0, error = 0, predicted_cpu_s = 0, cpu_s = 0, pilot_cpu_s = 0;
+  std::string cheapest;       ///< "rk4 dt 0.001"; empty when no configuration met the tolerance
+  double cheapest_cpu_s = NAN;
 };
-std::string auto_problem_description();
-std::vector<AutoRow> auto_study(const Settings& st, std::ostream& log);
+/// 1e-3 … 1e-8 (--quick: 1e-3, 1e-5, 1e-8).
+std::vector<double> auto_tolerances(const Settings& st);
+std::vector<AutoRow> auto_study(const std::vector<Problem>& problems, const std::vector<WpRow>& wp, const Settings& st,
+                                std::ostream& log);
 void write_auto_csv(const std::filesystem::path& file, const std::vector<AutoRow>& rows);
+std::string auto_markdown(const std::vector<AutoRow>& rows);
 
 /// io::atomic_write_file: `file` is the old one or the whole new one; throws io::IoError.
 void write_text(const std::filesystem::path& file, const std::string& text);

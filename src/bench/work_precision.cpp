@@ -19,7 +19,7 @@ std::vector<double> dt_grid(const Settings& st, const Problem& p, bool closed_fo
 }
 
 std::vector<double> rtol_grid(const Settings& st) {
-  return st.quick ? log_sweep(1e-3, 1e-9, 1) : log_sweep(1e-3, 1e-12, 2);
+  return st.quick ? log_sweep(1e-3, 1e-12, 2) : log_sweep(1e-3, 1e-12, 4);
 }
 
 std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Settings& st, std::ostream& log) {
@@ -33,7 +33,7 @@ std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Se
       for (double par : params) {
         BodyState s;
         auto once = [&] {
-          s = adaptive ? run_rk45(p.model, p.s0, p.duration, par) : run_fixed(m, p.model, p.s0, p.duration, par);
+          s = adaptive ? run_adaptive(m, p.model, p.s0, p.duration, par) : run_fixed(m, p.model, p.s0, p.duration, par);
         };
         once();
         const Errors e = errors(p, s);

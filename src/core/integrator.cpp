@@ -3,7 +3,7 @@
 #include "core/body_frame.hpp"
 #include "core/explicit_rk.hpp"
 #include "core/free_rotation_exact.hpp"
-#include "core/rk45.hpp"
+#include "core/embedded_rk.hpp"
 #include "core/rotation_steps.hpp"
 
 namespace tumble {
@@ -27,41 +27,40 @@ constexpr double kFollowRk = 0.5, kFollowFirstOrder = 0.1, kFollowGeometric = 3.
 constexpr MethodInfo kTable[] = {
     {Method::euler, "euler",
      "explicit Euler on (c, q, P, L), q renormalised",
-     1, euler_step, nullptr, nullptr, false, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
+     1, euler_step, nullptr, nullptr, nullptr, false, false, false, kFollowFirstOrder, kCostEuler.free, kCostEuler.forced},
     {Method::semi_implicit_euler, "semi_implicit_euler",
      "momenta first, then positions with the new velocities; orientation by the exponential map",
-     1, semi_implicit_euler_step, nullptr, nullptr, false, false, false, false,
+     1, semi_implicit_euler_step, nullptr, nullptr, nullptr, false, false, false,
      kFollowFirstOrder, kCostSemiImplicitEuler.free, kCostSemiImplicitEuler.forced},
     {Method::rk4, "rk4",
-     "classical Runge–Kutta with the rotation in Euler's coordinates: Π = Rᵀ L (principal frame), Π' = Π "
-     "× ω_body + Rᵀτ, q' = ½ q ⊗ ω_body; state and CSV stay (c, q, P, L)",
-     4, rk4_body_step, rk4_coords_step, nullptr, false, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
+     "classical Runge–Kutta with the rotation in Euler's coordinates: Π = Rᵀ L (principal frame), Π' = Π × ω_body + Rᵀτ, q' = ½ q ⊗ ω_body; state and CSV stay (c, q, P, L)",
+     4, rk4_body_step, rk4_coords_step, nullptr, nullptr, false, true, false, kFollowRk, kCostRk4.free, kCostRk4.forced},
     {Method::rk4_seed, "rk4_seed",
-     "the same RK4 on the seed's coordinates (q, L_world), Butcher tableau as data: kept to show what the "
-     "coordinates cost",
-     4, rk4_step, nullptr, nullptr, false, false, false, false, kFollowRk, kCostRk4Seed.free,
+     "the same RK4 on the seed's coordinates (q, L_world), Butcher tableau as data: kept to show what the coordinates cost",
+     4, rk4_step, nullptr, nullptr, nullptr, false, false, false, kFollowRk, kCostRk4Seed.free,
      kCostRk4Seed.forced},
     {Method::rk45, "rk45",
-     "adaptive Dormand–Prince in Euler's coordinates, with rtol/atol and dense output at sample times",
-     5, rk45_fixed_step, nullptr, nullptr, true, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
+     "adaptive Dormand–Prince 5(4) with FSAL and a PI step-size controller in Euler's coordinates; rtol/atol, dense output at sample times",
+     5, rk45_fixed_step, nullptr, nullptr, make_rk45, false, true, false, kFollowRk, kCostRk45.free, kCostRk45.forced},
+    {Method::dop853, "dop853",
+     "adaptive Dormand–Prince 8(5,3) (Hairer's DOP853) in Euler's coordinates, the same controller, 7th-order dense output: the cheapest at tight tolerances",
+     8, dop853_fixed_step, nullptr, nullptr, make_dop853, false, true, false, kFollowRk, kCostDop853.free,
+     kCostDop853.forced},
     {Method::implicit_midpoint, "implicit_midpoint",
-     "midpoint rule on Euler's equations (keeps energy and |L| to round-off, GNI IV.2.1), Cayley "
-     "orientation update keeps world L",
-     2, implicit_midpoint_step, nullptr, nullptr, false, false, true, false,
+     "midpoint rule on Euler's equations (keeps energy and |L| to round-off, GNI IV.2.1), Cayley orientation update keeps world L",
+     2, implicit_midpoint_step, nullptr, nullptr, nullptr, false, true, false,
      kFollowGeometric, kCostImplicitMidpoint.free, kCostImplicitMidpoint.forced},
     {Method::splitting, "splitting",
-     "symplectic, time-reversible NO_SQUISH / Dullweber–Leimkuhler–McLachlan splitting with exact planar "
-     "sub-rotations; forces as Strang half kicks",
-     2, splitting_step, nullptr, splitting_step_ordered, false, false, true, true, kFollowGeometric,
+     "symplectic, time-reversible NO_SQUISH / Dullweber–Leimkuhler–McLachlan splitting with exact planar sub-rotations; forces as Strang half kicks",
+     2, splitting_step, nullptr, splitting_step_ordered, nullptr, false, true, true, kFollowGeometric,
      kCostSplitting.free, kCostSplitting.forced},
     {Method::splitting4, "splitting4",
      "Yoshida triple-jump composition of `splitting`",
-     4, splitting4_step, nullptr, nullptr, false, false, true, true, kFollowGeometric,
+     4, splitting4_step, nullptr, nullptr, nullptr, false, true, true, kFollowGeometric,
      kCostSplitting4.free, kCostSplitting4.forced},
     {Method::exact, "exact",
-     "closed-form torque-free rotation (Jacobi elliptic functions, elliptic integral of the third kind "
-     "via Carlson's R_J); with forces, Strang-composed with exact half kicks",
-     0, exact_step, nullptr, nullptr, false, true, true, false, kFollowGeometric, kCostExact.free,
+     "closed-form torque-free rotation (Jacobi elliptic functions, elliptic integral of the third kind via Carlson's R_J); with forces, Strang-composed with exact half kicks",
+     0, exact_step, nullptr, nullptr, nullptr, true, true, false, kFollowGeometric, kCostExact.free,
      kCostExact.forced},
 };
 static_assert(std::size(kTable) == kAllMethods.size());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,6 +20,7 @@ enum class Method {
   rk4,
   rk4_seed,
   rk45,
+  dop853,
   implicit_midpoint,
   splitting,
   splitting4,
@@ -29,6 +31,11 @@ enum class Method {
 using StepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s, double t, double h);
 
 struct BodyCoords;
+class AdaptiveIntegrator;
+struct AdaptiveOptions;
+/// An adaptive pair's integrator for one body from t0 (embedded_rk.hpp).
+using MakeAdaptiveFn = std::unique_ptr<AdaptiveIntegrator> (*)(const RigidBodyModel& m, const BodyState& s0, double t0,
+                                                               const AdaptiveOptions& opt);
 /// One step of size h (s) in Euler's coordinates (c, q, P, Π), in place, for
 /// methods that integrate in them (body_frame.hpp): the Propagator carries these
 /// between steps (in place: no 128-byte copy per step).
@@ -46,13 +53,15 @@ struct MethodInfo {
   /// is and what it integrates in. The README's method table is generated from
   /// it (`tumble methods --readme README.md`).
   std::string_view description;
-  int order;                 ///< global order (rk45: of its 5th-order solution; exact: 0 = exact when torque-free)
-  StepFn step;               ///< one fixed step (rk45: one uncontrolled Dormand–Prince step)
+  int order;                 ///< global order (adaptive pairs: of the solution they advance; exact: 0 = exact when torque-free)
+  StepFn step;               ///< one fixed step (adaptive pairs: one uncontrolled step)
   CoordsStepFn coords_step;  ///< the same step in Euler's coordinates, or nullptr (steps on the seed's state)
   /// The same step with the sub-flow order a run fixes at its start
   /// (kernel::split_order_for_start), or nullptr (step() alone).
   OrderedStepFn ordered_step;
-  bool adaptive;             ///< Propagator runs its own step control with dense output (rk45)
+  /// Adaptive pairs (rk45, dop853): the integrator the Propagator runs, with its
+  /// own step control and dense output; nullptr for fixed-step methods.
+  MakeAdaptiveFn adaptive;
   bool closed_form_if_free;  ///< Propagator evaluates the closed form at any t when torque-free (exact)
   bool auto_candidate;       ///< method = "auto" may pick it
   bool splits_free_rotation; ///< uses the splitting sub-flows (order chosen per body)
@@ -67,20 +76,20 @@ struct MethodInfo {
 std::span<const MethodInfo> method_table();
 const MethodInfo& method_info(Method m);
 
-inline constexpr std::array<Method, 9> kAllMethods = {
+inline constexpr std::array<Method, 10> kAllMethods = {
     Method::euler,      Method::semi_implicit_euler, Method::rk4,        Method::rk4_seed, Method::rk45,
-    Method::implicit_midpoint, Method::splitting,    Method::splitting4, Method::exact};
+    Method::dop853,     Method::implicit_midpoint,   Method::splitting,  Method::splitting4, Method::exact};
 
 std::string_view method_name(Method m);
 std::optional<Method> parse_method(std::string_view name);
 /// "euler, semi_implicit_euler, ..." for error messages.
 std::string method_list();
 
-/// Global order of accuracy (rk45: of its 5th-order solution).
+/// Global order of accuracy (adaptive pairs: of the solution they advance).
 int method_order(Method m);
 
-/// One step of size h (s) from time t (s). For `rk45` this is one uncontrolled
-/// Dormand–Prince step; adaptive integration lives in `Propagator`/`Rk45`.
+/// One step of size h (s) from time t (s). For the adaptive pairs this is one
+/// uncontrolled step; adaptive integration lives in `Propagator`/embedded_rk.hpp.
 BodyState step(Method method, const RigidBodyModel& m, const BodyState& s, double t, double h);
 
 }  // namespace tumble

@@ -1,6 +1,7 @@
 #include "core/mass_properties.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -86,6 +87,15 @@ MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::st
     fail(body_name, "all particles are (nearly) collinear, so the moment about that line vanishes "
                     "(smallest/largest principal moment < 1e-12); give the rod a thickness, e.g. a box "
                     "shape with a non-zero cross-section");
+  // Subnormal masses or moments (a particle of 1e-310 kg) lose their precision
+  // and their inverses overflow: NaN a few steps in. Refuse them here.
+  const double small = mp.principal_moments[0];
+  if (!(mp.mass >= DBL_MIN) || !(small >= DBL_MIN)) {
+    std::ostringstream s;
+    s << "the total mass (" << mp.mass << " kg) or the smallest principal moment (" << small
+      << " kg·m²) is below the normal double range (2.2e-308); express the body in larger units (e.g. g and mm)";
+    fail(body_name, s.str());
+  }
   mp.principal_axes = canonical_right_handed(eig.eigenvectors());
 
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;

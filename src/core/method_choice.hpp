@@ -17,18 +17,18 @@ struct ChoiceRequest {
   double duration = 10;         ///< s, the run's length
   double sample_interval = 0;   ///< s between samples (frames): one partial step each; 0 = none
   double tolerance = 1e-6;      ///< largest end error, rad (see end_state_error)
-  bool prune = true;            ///< false: measure every candidate in full (tests, bench)
+  bool prune = true;            ///< false: measure every candidate (tests)
 };
 
 /// One candidate's measured error model and predicted cost.
 struct MethodEstimate {
   Method method = Method::splitting;
   bool usable = false;          ///< its error model was verified on this body
-  StepConfig config;            ///< step (rk45: rtol, atol) that meets the tolerance
+  StepConfig config;            ///< step (adaptive pairs: rtol, atol) that meets the tolerance
   double steps = 0;             ///< predicted steps of the run
   double error = 0;             ///< predicted end error, rad
   double cost_s = 0;            ///< predicted CPU s: steps × step_cost_ns
-  double observed_order = 0;    ///< from the pilot (rk45: 0)
+  double observed_order = 0;    ///< from the pilot (adaptive pairs: 0)
   std::string note;             ///< why it is not usable
 };
 
@@ -60,14 +60,17 @@ bool auto_takes_closed_form(const RigidBodyModel& m);
 /// caller set another), with the one-line reason. No candidates are measured.
 MethodChoice auto_without_tolerance(const RigidBodyModel& m, const StepConfig& asked);
 
-/// Torque-free bodies get `exact` (auto_takes_closed_form). Other
-/// bodies: each candidate runs the whole duration at N, 2N, 4N, … steps; the
+/// Torque-free bodies get `exact` (auto_takes_closed_form: the closed form, error at round-off). Other
+/// bodies, with `prune` (scenes): `exact` when no force torques the body and
+/// its pilot ladder qualifies, else the highest-order adaptive pair (dop853) at
+/// rtol = tolerance / 10 with no pilot (the pairs' rtol asks for the end error;
+/// embedded_rk.hpp). Without `prune` every candidate is measured: each
+/// fixed-step method runs the whole duration at N, 2N, 4N, … steps; the
 /// differences of successive end states give its error (Richardson: e(h) ≈
 /// d/(2^p - 1) once two successive ratios match the order p), which fixes the
-/// step that meets half the tolerance. rk45 is run at rtol 1e-3, 1e-4, … and
-/// takes the first rtol whose difference to the next stays within half of it.
-/// Each pilot has a CPU budget (0.2 s by step_cost_ns, less once a cheaper run
-/// is known). The cheapest usable candidate wins. Throws InputError when none is.
+/// step that meets half the tolerance (0.2 s of predicted CPU per ladder); the
+/// adaptive pairs are priced on the first 1/32 of the run. The cheapest usable
+/// candidate wins. Throws InputError when none is.
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& req);
 
 }  // namespace tumble

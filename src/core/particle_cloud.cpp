@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/quote.hpp"
 
 namespace tumble {
 
@@ -56,7 +57,7 @@ bool read_header(const std::vector<std::string>& tok, std::vector<int>& column, 
     for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     const auto k = std::string_view("xyzm").find(name.size() == 1 ? name[0] : '?');
     if (k == std::string_view::npos) continue;
-    if (column[k] >= 0) why = "column '" + tok[i] + "' appears twice";
+    if (column[k] >= 0) why = "column " + quote_token(tok[i], '\'') + " appears twice";
     column[k] = static_cast<int>(i);
   }
   for (int k = 0; k < 4 && why.empty(); ++k)
@@ -68,7 +69,9 @@ bool read_header(const std::vector<std::string>& tok, std::vector<int>& column, 
 
 ParticleCloud parse_cloud_text(const std::string& text, const std::string& source_name) {
   ParticleCloud cloud;
-  std::istringstream in(text);
+  // Excel's "CSV UTF-8" export starts with a byte-order mark: not part of the header.
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  std::istringstream in(text.rfind(kBom, 0) == 0 ? text.substr(kBom.size()) : text);
   std::string line;
   int line_no = 0;
   bool first = true, csv = false;
@@ -99,12 +102,12 @@ ParticleCloud parse_cloud_text(const std::string& text, const std::string& sourc
     for (int i = 0; i < 4; ++i) {
       const std::string& t = tok[static_cast<std::size_t>(column[static_cast<std::size_t>(i)])];
       if (!parse_double(t, v[i]))
-        throw InputError(where() + "expected a number, found '" + t + "'");
+        throw InputError(where() + "expected a number, found " + quote_token(t, '\''));
       if (!std::isfinite(v[i]))
-        throw InputError(where() + "expected a finite number, found '" + t + "'");
+        throw InputError(where() + "expected a finite number, found " + quote_token(t, '\''));
     }
     if (!(v[3] > 0.0))
-      throw InputError(where() + "particle mass must be > 0 kg, found " + tok[static_cast<std::size_t>(column[3])]);
+      throw InputError(where() + "particle mass must be > 0 kg, found " + quote_token(tok[static_cast<std::size_t>(column[3])], '\''));
     cloud.push_back({Eigen::Vector3d(v[0], v[1], v[2]), v[3]});
   }
   return cloud;

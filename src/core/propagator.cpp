@@ -30,7 +30,7 @@ std::optional<std::string> coarse_step_warning(const RigidBodyModel& m, const Bo
   const MethodInfo& info = method_info(cfg.method);
   if (info.adaptive || (info.closed_form_if_free && m.forces.empty())) return std::nullopt;
   const double turn = cfg.dt * rate(m, s0);
-  if (turn <= info.max_turn_per_step) return std::nullopt;
+  if (!(turn > info.max_turn_per_step)) return std::nullopt;  // NaN too: no NaN in a message
   return "body '" + m.name + "': dt = " + format_number(cfg.dt, 3) + " s turns or damps by " + format_number(turn, 3) +
          " rad per step, beyond the " + format_number(info.max_turn_per_step, 3) + " that " + std::string(info.name) +
          " follows; expect a wrong or diverging run (dt <= " + format_number(info.max_turn_per_step / rate(m, s0), 3) +
@@ -46,10 +46,10 @@ Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepC
   power_abs_ = f.scale;
   if (info_->closed_form_if_free && m.forces.empty()) exact_.emplace(m.inertia, s0.q, s0.L);
   if (info_->adaptive) {
-    Rk45Options o;
+    AdaptiveOptions o;
     o.rtol = cfg_.rtol;
     o.atol = cfg_.atol;
-    rk45_ = std::make_unique<Rk45>(m, s0, 0.0, o);
+    adaptive_ = info_->adaptive(m, s0, 0.0, o);
   }
 }
 
@@ -92,11 +92,15 @@ void Propagator::check_free(const BodyState& s, double t, double h) {
 }
 
 void Propagator::diverged(bool finite, double t, double h) const {
-  throw Diverged("diverged at t=" + format_number(t, 6) + " s, step " + std::to_string(steps_) + ", body '" +
-                     m_->name + "', method " + std::string(info_->name) +
-                     (finite ? " (energy grew beyond the work of the declared forces)" : "") + "; try dt <= " +
-                     format_number(h / 10, 6) + " s or a geometric method (splitting, exact)",
-                 t, steps_);
+  std::string msg = "diverged at t=" + format_number(t, 6) + " s, step " + std::to_string(steps_) + ", body '" +
+                    m_->name + "', method " + std::string(info_->name) +
+                    (finite ? " (energy grew beyond the work of the declared forces)" : "");
+  const bool geometric = cfg_.method == Method::splitting || cfg_.method == Method::exact;
+  if (std::isfinite(h) && h > 0)
+    msg += "; try dt <= " + format_number(h / 10, 6) + " s" + (geometric ? "" : " or a geometric method (splitting, exact)");
+  else if (!geometric)
+    msg += "; try a geometric method (splitting, exact)";
+  throw Diverged(msg, t, steps_);
 }
 
 void Propagator::grid_step() {
@@ -121,16 +125,16 @@ const BodyState& Propagator::advance_to(double t) {
     check(s_, t, h);
     return s_;
   }
-  if (rk45_) {
+  if (adaptive_) {
     try {
-      s_ = rk45_->advance_to(t);
+      s_ = adaptive_->advance_to(t);
     } catch (const Diverged&) {
       t_ = t;
       check(s_, t, cfg_.dt);
       throw;
     }
     s_.q = same_hemisphere(s_.q, prev);
-    steps_ = rk45_->accepted();
+    steps_ = adaptive_->accepted();
     check(s_, t, t - t_);
     t_ = t;
     return s_;
@@ -154,7 +158,7 @@ const BodyState& Propagator::advance_to(double t) {
 }
 
 const BodyState& Propagator::advance_steps(long n) {
-  if (exact_ || rk45_) return advance_to(t_ + static_cast<double>(n) * cfg_.dt);
+  if (exact_ || adaptive_) return advance_to(t_ + static_cast<double>(n) * cfg_.dt);
   const long target = steps_ + n;
   while (steps_ < target) grid_step();
   s_ = grid_.state();

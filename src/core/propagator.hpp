@@ -11,7 +11,7 @@
 #include "core/fixed_stepper.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
-#include "core/rk45.hpp"
+#include "core/embedded_rk.hpp"
 
 namespace tumble {
 
@@ -20,9 +20,9 @@ namespace tumble {
 /// |L| exactly and the energy without drift at any dt, forces or not.
 struct StepConfig {
   Method method = Method::splitting;
-  double dt = 1e-3;         ///< s, fixed step (adaptive methods: their largest step)
-  double rtol = 1e-9;       ///< adaptive methods only (MethodInfo::adaptive)
-  double atol = 1e-12;      ///< adaptive methods only
+  double dt = 1e-3;         ///< s, fixed step (adaptive pairs: unused)
+  double rtol = 1e-9;       ///< adaptive pairs (rk45, dop853) only
+  double atol = 1e-12;      ///< adaptive pairs only (a fraction of the body's scales)
 };
 
 /// Most steps one run may take (duration / dt): scenes reject more, and
@@ -42,7 +42,7 @@ class Propagator {
   /// methods step on the grid t_n = n·dt whatever the sample times are; a
   /// sample between grid points is one partial step from the last grid state,
   /// never fed back, so the trajectory does not depend on fps, --every or
-  /// --frames. rk45 uses dense output; `exact` on a torque-free body evaluates
+  /// --frames. the adaptive pairs use dense output; `exact` on a torque-free body evaluates
   /// the closed form at t. Throws Diverged with time, step, body and method.
   const BodyState& advance_to(double t);
   /// Advances by exactly n steps of dt (fixed-step methods: to the grid point
@@ -50,7 +50,7 @@ class Propagator {
   const BodyState& advance_steps(long n);
 
   double time() const { return t_; }
-  /// Steps taken on the grid (rk45: accepted steps; closed form: evaluations).
+  /// Steps taken on the grid (adaptive pairs: accepted steps; closed form: evaluations).
   long steps() const { return steps_; }
   const BodyState& state() const { return s_; }
   const RigidBodyModel& model() const { return *m_; }
@@ -81,7 +81,7 @@ class Propagator {
   // Energy balance: E − E0 may exceed the work of the driving terms only by round-off.
   double e0_ = 0, erot0_ = 0, scale0_ = 0, work_ = 0, work_abs_ = 0, power_ = 0, power_abs_ = 0;
   std::optional<FreeRotationExact> exact_;
-  std::unique_ptr<Rk45> rk45_;
+  std::unique_ptr<AdaptiveIntegrator> adaptive_;
 };
 
 }  // namespace tumble

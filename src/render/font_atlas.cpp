@@ -17,8 +17,26 @@ struct Range {
   char32_t first;
   int count;
 };
-// ASCII, Latin-1, Greek, and general punctuation (dashes, bullets, ellipsis).
-constexpr std::array<Range, 4> kRanges = {{{0x20, 95}, {0xA0, 96}, {0x391, 57}, {0x2010, 24}}};
+// ASCII, Latin-1 (×, ½, ±, ·), Greek, general punctuation (dashes, bullets,
+// ellipsis, primes), super- and subscripts (ω₁, I₂, x²), arrows (→), the
+// common math operators (∂ ∇ − √ ∝ ∞ ∠ ∥ ∫ ≈ ≠ ≡ ≤ ≥ ⊥ ⋅) and the key's
+// swatches (━ █ ■ ●). DejaVu Sans has them all; U+2588 (█) also gives the
+// solid texel backdrops are drawn with.
+constexpr std::array<Range, 14> kRanges = {{{0x20, 95},
+                                            {0xA0, 96},
+                                            {0x391, 57},
+                                            {0x2010, 24},
+                                            {0x2030, 8},
+                                            {0x2070, 48},
+                                            {0x2190, 10},
+                                            {0x2200, 48},
+                                            {0x2248, 1},
+                                            {0x2260, 6},
+                                            {0x22A5, 1},
+                                            {0x22C5, 1},
+                                            {0x2501, 1},
+                                            {0x2588, 1}}};
+constexpr std::array<Range, 2> kShapes = {{{0x25A0, 1}, {0x25CF, 1}}};
 
 // Minimal UTF-8 decoder; malformed bytes come out as '?'.
 char32_t next_code_point(std::string_view s, std::size_t& i) {
@@ -60,7 +78,9 @@ FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_
     throw std::runtime_error("stbtt_PackBegin failed");
   }
   bool ok = true;
-  for (const Range& r : kRanges) {
+  std::vector<Range> ranges(kRanges.begin(), kRanges.end());
+  ranges.insert(ranges.end(), kShapes.begin(), kShapes.end());
+  for (const Range& r : ranges) {
     std::vector<stbtt_packedchar> packed(r.count);
     ok = ok && stbtt_PackFontRange(&pack, data.data(), 0, bake_px, static_cast<int>(r.first),
                                    r.count, packed.data());
@@ -76,6 +96,15 @@ FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_
   if (!ok) throw std::runtime_error("font atlas too small for " + ttf.string());
   std::sort(glyphs_.begin(), glyphs_.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
+  // The middle of the full block: coverage 1 at every mipmap level text uses.
+  const Glyph* block = find(U'\u2588');
+  solid_uv_ = {0.5f * (block->u0 + block->u1), 0.5f * (block->v0 + block->v1)};
+}
+
+void FontAtlas::rect(glm::vec4 box_px, glm::vec4 color, std::vector<TextVertex>& out) const {
+  const TextVertex a{{box_px.x, box_px.y}, solid_uv_, color}, b{{box_px.z, box_px.y}, solid_uv_, color},
+      d{{box_px.x, box_px.w}, solid_uv_, color}, e{{box_px.z, box_px.w}, solid_uv_, color};
+  out.insert(out.end(), {a, b, e, a, e, d});
 }
 
 const FontAtlas::Glyph* FontAtlas::find(char32_t c) const {

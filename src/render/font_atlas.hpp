@@ -1,5 +1,6 @@
-// A glyph atlas baked once with stb_truetype (ASCII, Latin-1, Greek, dashes so
-// labels like "ω" work) and the CPU-side layout of text into textured quads.
+// A glyph atlas baked once with stb_truetype (ASCII, Latin-1, Greek, sub- and
+// superscripts, arrows and math symbols, so labels like "ω₁ ≈ I₂ × ½" work)
+// and the CPU-side layout of text into textured quads.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,10 @@ class FontAtlas {
   void layout(std::string_view text, glm::vec2 top_left_px, float size_px, glm::vec4 color,
               std::vector<TextVertex>& out) const;
 
+  /// Two triangles filling `box_px` (x0, y0, x1, y1) with `color`: a backdrop
+  /// drawn by the same pass as the glyphs, so it layers with them in order.
+  void rect(glm::vec4 box_px, glm::vec4 color, std::vector<TextVertex>& out) const;
+
   /// Width and height in pixels of `text` at `size_px` (for alignment).
   glm::vec2 measure(std::string_view text, float size_px) const;
 
@@ -44,7 +49,8 @@ class FontAtlas {
   };
   const Glyph* find(char32_t c) const;
 
-  int width_ = 1024, height_ = 1024;
+  int width_ = 1024, height_ = 2048;  // the first 1024 rows as before issue 22: the same glyph texels
+  glm::vec2 solid_uv_{0};
   float bake_px_;
   float ascent_px_ = 0, line_px_ = 0;  // at bake size
   std::vector<std::uint8_t> pixels_;

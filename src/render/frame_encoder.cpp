@@ -3,13 +3,15 @@
 #include <algorithm>
 
 #include "io/png.hpp"
+#include "render/worker_threads.hpp"
 
 namespace tumble::render {
 
-FrameEncoder::FrameEncoder(int threads, std::size_t capacity)
-    : capacity_(std::max<std::size_t>(capacity, 1)),
-      max_spare_(capacity_ + static_cast<std::size_t>(std::max(threads, 1))) {
-  const int n = std::max(threads, 1);
+FrameEncoder::FrameEncoder(int threads, std::size_t capacity, OnWritten on_written)
+    : on_written_(std::move(on_written)) {
+  const int n = threads > 0 ? threads : worker_threads();
+  capacity_ = capacity > 0 ? capacity : 2 * static_cast<std::size_t>(n);
+  max_spare_ = capacity_ + static_cast<std::size_t>(n);
   workers_.reserve(n);
   for (int i = 0; i < n; ++i) workers_.emplace_back([this] { worker(); });
 }
@@ -93,9 +95,10 @@ void FrameEncoder::worker() {
     std::exception_ptr failure;
     const bool raw = !job.raw.rgba.empty();
     try {
-      // One thread each: the other workers and the drawing use the other core.
+      // One thread each: the other workers and the drawing use the other cores.
       if (raw) finish_frame(job.raw, finished, fxaa, 1);
       io::write_png_atomic(job.path, raw ? finished : job.image);
+      if (on_written_) on_written_(job.path);
     } catch (...) {
       failure = std::current_exception();
     }

@@ -8,6 +8,7 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -20,8 +21,16 @@ namespace tumble::render {
 
 class FrameEncoder {
  public:
-  /// `threads` workers (at least 1); `capacity` queued frames (at least 1).
-  explicit FrameEncoder(int threads = 2, std::size_t capacity = 4);
+  /// Called on a worker with each frame's path once it is renamed into place
+  /// (e.g. to record its checksum); what it throws is that frame's error.
+  using OnWritten = std::function<void(const std::filesystem::path&)>;
+
+  /// `threads` workers, 0 = render::worker_threads() (--jobs, TUMBLE_JOBS,
+  /// else the cores this process may use); `capacity` queued frames, 0 = two
+  /// per worker, so each has the next frame waiting while the GL thread draws.
+  explicit FrameEncoder(int threads = 0, std::size_t capacity = 0, OnWritten on_written = {});
+  int threads() const { return static_cast<int>(workers_.size()); }
+  std::size_t capacity() const { return capacity_; }
   /// Drains the queue and joins; errors not yet reported are dropped (call
   /// flush() first to see them).
   ~FrameEncoder();
@@ -69,6 +78,7 @@ class FrameEncoder {
   std::size_t written_ = 0;
   bool stopping_ = false;
   std::exception_ptr error_;
+  OnWritten on_written_;
   std::vector<std::thread> workers_;
 };
 

@@ -35,6 +35,7 @@ struct RawFrame {
   std::vector<std::uint8_t> rgba;  ///< width × height RGBA8, bottom row first
   int width = 0, height = 0;
   bool fxaa = false;               ///< anti-alias with FXAA when finishing
+  long index = -1;                 ///< the caller's frame number (Renderer::render_overlapped)
 };
 
 /// `raw` as a top-down RGB image: FXAA'd (using `fxaa`'s scratch) or converted.

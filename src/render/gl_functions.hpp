@@ -32,6 +32,8 @@ namespace tumble::render {
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers, "glDeleteBuffers")                    \
   X(PFNGLBINDBUFFERPROC, BindBuffer, "glBindBuffer")                             \
   X(PFNGLBUFFERDATAPROC, BufferData, "glBufferData")                             \
+  X(PFNGLMAPBUFFERRANGEPROC, MapBufferRange, "glMapBufferRange")                 \
+  X(PFNGLUNMAPBUFFERPROC, UnmapBuffer, "glUnmapBuffer")                          \
   X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays, "glGenVertexArrays")              \
   X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays, "glDeleteVertexArrays")     \
   X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray, "glBindVertexArray")              \
@@ -73,6 +75,7 @@ namespace tumble::render {
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers, "glGenFramebuffers")              \
   X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers, "glDeleteFramebuffers")     \
   X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer, "glBindFramebuffer")              \
+  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D, "glFramebufferTexture2D")  \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer,                   \
     "glFramebufferRenderbuffer")                                                 \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus,                     \

@@ -67,7 +67,7 @@ void OffscreenTarget::bind_for_drawing() const {
   gl_.Viewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::read_rgba(std::vector<std::uint8_t>& rgba) {
+void OffscreenTarget::resolve() {
   if (samples_ > 0) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_.id());
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.id());
@@ -77,15 +77,75 @@ void OffscreenTarget::read_rgba(std::vector<std::uint8_t>& rgba) {
   gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_.id());
   gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+}
 
+void OffscreenTarget::read_rgba(std::vector<std::uint8_t>& rgba) {
+  resolve();
   // RGBA matches the renderbuffer, so Mesa copies rows straight out; asking
   // for GL_RGB takes its generic per-pixel conversion path (~10x slower).
-  const std::size_t w = static_cast<std::size_t>(width_);
-  rgba.resize(w * 4 * height_);
+  rgba.resize(frame_bytes());
   gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (const GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
     throw std::runtime_error("glReadPixels failed, GL error " + std::to_string(err));
   }
+}
+
+void OffscreenTarget::start_read() {
+  if (queued_ == 2) throw std::logic_error("OffscreenTarget: two reads queued already; finish_read() first");
+  resolve();
+  GlObject& pbo = pbo_[next_];
+  if (pbo.id() == 0) {
+    pbo = make_buffer(gl_);
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, pbo.id());
+    gl_.BufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(frame_bytes()), nullptr, GL_STREAM_READ);
+  }
+  gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, pbo.id());
+  gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);  // into the PBO
+  gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  if (const GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
+    throw std::runtime_error("glReadPixels into a PBO failed, GL error " + std::to_string(err));
+  }
+  next_ = 1 - next_;
+  ++queued_;
+}
+
+bool OffscreenTarget::finish_read(std::vector<std::uint8_t>& rgba) {
+  if (queued_ == 0) return false;
+  const int oldest = queued_ == 2 ? next_ : 1 - next_;
+  gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, pbo_[oldest].id());
+  // Waits only if the GPU has not finished that copy yet.
+  const void* p = gl_.MapBufferRange(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(frame_bytes()), GL_MAP_READ_BIT);
+  if (p == nullptr) {
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    throw std::runtime_error("glMapBufferRange of the read-back failed, GL error " + std::to_string(gl_.GetError()));
+  }
+  rgba.resize(frame_bytes());
+  std::memcpy(rgba.data(), p, frame_bytes());
+  gl_.UnmapBuffer(GL_PIXEL_PACK_BUFFER);
+  gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  --queued_;
+  return true;
+}
+
+void OffscreenTarget::begin_post_pass() {
+  if (post_texture_.id() == 0) {
+    post_texture_ = make_texture(gl_);
+    gl_.BindTexture(GL_TEXTURE_2D, post_texture_.id());
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    post_fbo_ = make_framebuffer(gl_);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, post_fbo_.id());
+    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, post_texture_.id(), 0);
+    check_complete(gl_, "post-pass");
+  }
+  resolve();
+  gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, post_fbo_.id());
+  gl_.BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_.id());
+  gl_.Viewport(0, 0, width_, height_);
+  gl_.ActiveTexture(GL_TEXTURE0);
+  gl_.BindTexture(GL_TEXTURE_2D, post_texture_.id());
 }
 
 }  // namespace tumble::render

@@ -23,6 +23,19 @@ class OffscreenTarget {
   /// page faults per frame). render::finish_frame makes the image of it.
   void read_rgba(std::vector<std::uint8_t>& out);
 
+  /// Overlapped read-back through two pixel-buffer objects: start_read()
+  /// resolves and queues the copy of the drawn frame, returning at once (a
+  /// GPU copies while the CPU builds the next frame); finish_read() maps the
+  /// oldest queued copy into `out` (same bytes as read_rgba), false when none
+  /// is queued. At most two are queued: a third start_read() throws.
+  void start_read();
+  bool finish_read(std::vector<std::uint8_t>& out);
+  int reads_queued() const { return queued_; }
+
+  /// For a post pass (GL FXAA): resolves, copies the frame into a texture
+  /// bound to unit 0 and binds the resolve framebuffer to draw the result over it.
+  void begin_post_pass();
+
   int width() const { return width_; }
   int height() const { return height_; }
   int samples() const { return samples_; }
@@ -32,6 +45,11 @@ class OffscreenTarget {
   int width_, height_, samples_;
   GlObject ms_fbo_, ms_color_, ms_depth_;        // multisampled (samples_ > 0)
   GlObject resolve_fbo_, resolve_color_, resolve_depth_;  // single-sample
+  GlObject pbo_[2];   // made on the first start_read()
+  int next_ = 0, queued_ = 0;
+  GlObject post_fbo_, post_texture_;  // made on the first begin_post_pass()
+  void resolve();
+  std::size_t frame_bytes() const { return static_cast<std::size_t>(width_) * 4 * height_; }
 };
 
 }  // namespace tumble::render

@@ -5,6 +5,7 @@
 #include <array>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "render/dynamic_library.hpp"
@@ -72,6 +73,7 @@ class OsmesaContext final : public GlContext {
   }
 
   GlBackend backend() const override { return GlBackend::osmesa; }
+  std::string display() const override { return "OSMesa"; }
 
  private:
   static constexpr int kSide = 4;

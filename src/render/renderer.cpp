@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,10 @@ class Renderer::Impl {
     render(frame, raw_);
     finish_frame(raw_, out, post_);
   }
+  bool render_overlapped(const viz::DrawList& frame, long index, RawFrame& out);
+  bool finish_overlapped(RawFrame& out);
+  void set_gpu_paths(GpuPaths paths);
+  GpuPaths gpu_paths() const { return paths_; }
   const OffscreenTarget& target() const { return target_; }
   bool fxaa() const { return fxaa_; }
 
@@ -60,6 +66,14 @@ class Renderer::Impl {
   void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
                  const PixelRect& rect);
   void set_viewport(const PixelRect& rect);
+  void draw(const viz::DrawList& frame);
+  void gl_fxaa_pass();
+  void describe(RawFrame& out, long index) const {
+    out.width = target_.width();
+    out.height = target_.height();
+    out.fxaa = fxaa_ && !paths_.gl_fxaa;  // else FXAA is in the pixels already
+    out.index = index;
+  }
   SphereShading sphere_shading() const { return {kLightDir, kOpaqueSpecular, target_.samples() > 0}; }
 
   GlContext& context_;
@@ -76,6 +90,10 @@ class Renderer::Impl {
   Fxaa post_;    // its scratch, for render(..., Image&)
   RawFrame raw_;
   GlObject empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
+  GpuPaths paths_;
+  std::optional<ShaderProgram> fxaa_program_;  // made when gl_fxaa is first used
+  std::filesystem::path shader_dir_;
+  long queued_index_[2] = {-1, -1};  // frame numbers of the overlapped reads, oldest first
 };
 
 Renderer::Renderer(GlContext& context, int width, int height, int msaa, bool fxaa,
@@ -92,6 +110,12 @@ io::Image Renderer::render(const viz::DrawList& frame) {
 
 void Renderer::render(const viz::DrawList& frame, io::Image& out) { impl_->render(frame, out); }
 void Renderer::render(const viz::DrawList& frame, RawFrame& out) { impl_->render(frame, out); }
+bool Renderer::render_overlapped(const viz::DrawList& frame, long index, RawFrame& out) {
+  return impl_->render_overlapped(frame, index, out);
+}
+bool Renderer::finish_overlapped(RawFrame& out) { return impl_->finish_overlapped(out); }
+void Renderer::set_gpu_paths(GpuPaths paths) { impl_->set_gpu_paths(paths); }
+GpuPaths Renderer::gpu_paths() const { return impl_->gpu_paths(); }
 
 int Renderer::width() const { return impl_->target().width(); }
 int Renderer::height() const { return impl_->target().height(); }
@@ -114,7 +138,9 @@ Renderer::Impl::Impl(GlContext& context, int width, int height, int msaa, bool f
       lines_(gl_, resource_dir / "shaders"),
       text_(gl_, resource_dir / "shaders", font_),
       fxaa_(fxaa),
-      empty_vao_(make_vertex_array(gl_)) {}
+      empty_vao_(make_vertex_array(gl_)),
+      paths_(default_gpu_paths(context)),
+      shader_dir_(resource_dir / "shaders") {}
 
 // GL objects are freed by their members; they need our context current.
 Renderer::Impl::~Impl() {
@@ -131,6 +157,58 @@ void Renderer::Impl::set_viewport(const PixelRect& rect) {
 }
 
 void Renderer::Impl::render(const viz::DrawList& frame, RawFrame& out) {
+  draw(frame);
+  target_.read_rgba(out.rgba);
+  describe(out, -1);
+}
+
+bool Renderer::Impl::render_overlapped(const viz::DrawList& frame, long index, RawFrame& out) {
+  if (!paths_.overlapped_readback) {
+    render(frame, out);
+    out.index = index;
+    return true;
+  }
+  draw(frame);
+  target_.start_read();
+  queued_index_[target_.reads_queued() - 1] = index;
+  return target_.reads_queued() == 2 && finish_overlapped(out);
+}
+
+bool Renderer::Impl::finish_overlapped(RawFrame& out) {
+  context_.make_current();
+  if (!target_.finish_read(out.rgba)) return false;
+  describe(out, queued_index_[0]);
+  queued_index_[0] = queued_index_[1];
+  return true;
+}
+
+void Renderer::Impl::set_gpu_paths(GpuPaths paths) {
+  if (target_.reads_queued() > 0) throw std::logic_error("Renderer: set_gpu_paths with overlapped frames unfinished");
+  paths_ = paths;
+}
+
+void Renderer::Impl::gl_fxaa_pass() {
+  if (!fxaa_program_) {
+    try {
+      fxaa_program_.emplace(gl_, shader_dir_, "fxaa");
+    } catch (const std::runtime_error&) {
+      // No `precise` (GL_ARB_gpu_shader5, GL 4 hardware): the CPU FXAA on the
+      // encoder threads does it, as on llvmpipe.
+      paths_.gl_fxaa = false;
+      return;
+    }
+  }
+  target_.begin_post_pass();
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.Disable(GL_BLEND);
+  gl_.Disable(GL_SCISSOR_TEST);
+  fxaa_program_->use();
+  fxaa_program_->set("u_frame", 0);
+  gl_.BindVertexArray(empty_vao_.id());
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void Renderer::Impl::draw(const viz::DrawList& frame) {
   context_.make_current();
   target_.bind_for_drawing();
   gl_.Disable(GL_SCISSOR_TEST);
@@ -162,10 +240,7 @@ void Renderer::Impl::render(const viz::DrawList& frame, RawFrame& out) {
   draw_separators(rects, background * 0.82f);
   draw_text(frame.texts, {}, full);
   gl_.Disable(GL_SCISSOR_TEST);
-  target_.read_rgba(out.rgba);
-  out.width = target_.width();
-  out.height = target_.height();
-  out.fxaa = fxaa_;
+  if (fxaa_ && paths_.gl_fxaa) gl_fxaa_pass();
 }
 
 void Renderer::Impl::draw_background(const glm::vec3& background) {
@@ -233,6 +308,8 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   }
   lines_.draw(batches.box_edges, view_proj, kEdgeWidthPx);
   gl_.DepthMask(GL_TRUE);
+  // Translucent surfaces last, over the curves behind them.
+  surfaces_.draw_translucent(view.surfaces, cam.view, cam.proj, kLightDir);
 
   gl_.Disable(GL_DEPTH_TEST);
   draw_text(view.texts, view.label, rect);
@@ -299,12 +376,8 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
     font_.layout(label, {lm.pad_px, lm.top_px}, lm.size_px, {0.13f, 0.14f, 0.18f, 0.95f}, quads);
   }
   for (const viz::TextItem& t : items) {
-    // Shrink a line that would run past the viewport's right edge (keeping the
-    // left margin on the right too) rather than clip it: small frames and
-    // comparison grids keep their whole overlay and legend.
-    const float room = static_cast<float>(rect.width) - 2 * std::max(t.position_px.x, 0.0f);
-    const float width = font_.measure(t.text, t.size_px).x;
-    const float size = width > room && room > 0 ? t.size_px * room / width : t.size_px;
+    if (t.backdrop.a > 0) font_.rect(t.backdrop_px, t.backdrop, quads);
+    const float size = fitted_text_px(t, static_cast<float>(rect.width), font_.measure(t.text, t.size_px).x);
     font_.layout(t.text, t.position_px, size, t.color, quads);
   }
   if (quads.empty()) return;

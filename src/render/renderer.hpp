@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string_view>
 
 #include "render/fxaa.hpp"
 #include "render/gl_context.hpp"
@@ -13,6 +14,21 @@
 #include "viz/draw_list.hpp"
 
 namespace tumble::render {
+
+/// Where the GPU does more than draw. Both on for a hardware GPU; off on
+/// llvmpipe, where each measured slower (README, "Using the whole machine")
+/// and the CPU FXAA keeps the bytes the goldens hold.
+struct GpuPaths {
+  bool overlapped_readback = false;  ///< two PBOs: a frame's read-back overlaps the next one's drawing
+  bool gl_fxaa = false;              ///< FXAA as a GL pass (shaders/fxaa.frag), not on the encoder threads
+  bool operator==(const GpuPaths&) const = default;
+};
+
+/// On for a hardware GPU (GlContext::hardware_gpu), else off; env
+/// TUMBLE_GPU_PATHS overrides: "auto", "none", or a comma list of "pbo" and
+/// "fxaa". Throws std::invalid_argument naming the variable on other values.
+GpuPaths default_gpu_paths(const GlContext& context);
+GpuPaths parse_gpu_paths(std::string_view text, bool hardware_gpu);
 
 class Renderer {
  public:
@@ -38,6 +54,18 @@ class Renderer {
   /// (with FXAA when it is on), e.g. on a FrameEncoder thread while the next
   /// frame draws. The bytes equal render(frame, image)'s.
   void render(const viz::DrawList& frame, RawFrame& out);
+
+  /// The frame loop's form: draws `frame` (the caller's frame number
+  /// `index`) and hands back in `out` a frame ready to finish, with its
+  /// `index`: with overlapped read-back the frame before (false for the
+  /// first), else this one. finish_overlapped(out) hands back the last one
+  /// (false when none is left). Same bytes as render(frame, out).
+  bool render_overlapped(const viz::DrawList& frame, long index, RawFrame& out);
+  bool finish_overlapped(RawFrame& out);
+
+  /// Defaults to default_gpu_paths(context). Finish the overlapped frames first.
+  void set_gpu_paths(GpuPaths paths);
+  GpuPaths gpu_paths() const;
 
   int width() const;
   int height() const;

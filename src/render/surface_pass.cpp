@@ -1,5 +1,7 @@
 #include "render/surface_pass.hpp"
 
+#include <algorithm>
+
 namespace tumble::render {
 
 SurfacePass::SurfacePass(const GlFunctions& gl, const std::filesystem::path& shader_dir)
@@ -22,6 +24,24 @@ InstancedMesh& SurfacePass::upload(const std::shared_ptr<const viz::SurfaceMesh>
 
 void SurfacePass::draw(const std::vector<viz::SurfaceItem>& items, const glm::mat4& view, const glm::mat4& proj,
                        const glm::vec3& light_dir) {
+  draw_items(items, view, proj, light_dir, false);
+}
+
+void SurfacePass::draw_translucent(const std::vector<viz::SurfaceItem>& items, const glm::mat4& view,
+                                   const glm::mat4& proj, const glm::vec3& light_dir) {
+  if (std::none_of(items.begin(), items.end(), [](const viz::SurfaceItem& it) { return it.color.a < 1.0f; })) return;
+  gl_->DepthMask(GL_FALSE);
+  gl_->Enable(GL_CULL_FACE);
+  gl_->CullFace(GL_FRONT);
+  draw_items(items, view, proj, light_dir, true);
+  gl_->CullFace(GL_BACK);
+  draw_items(items, view, proj, light_dir, true);
+  gl_->Disable(GL_CULL_FACE);
+  gl_->DepthMask(GL_TRUE);
+}
+
+void SurfacePass::draw_items(const std::vector<viz::SurfaceItem>& items, const glm::mat4& view, const glm::mat4& proj,
+                             const glm::vec3& light_dir, bool translucent) {
   if (items.empty()) return;
   program_.use();
   program_.set("u_view", view);
@@ -29,7 +49,7 @@ void SurfacePass::draw(const std::vector<viz::SurfaceItem>& items, const glm::ma
   program_.set("u_light_dir", light_dir);
   program_.set("u_specular", 0.22f);
   for (const viz::SurfaceItem& it : items) {
-    if (!it.mesh || it.mesh->positions.empty()) continue;
+    if (!it.mesh || it.mesh->positions.empty() || (it.color.a < 1.0f) != translucent) continue;
     InstancedMesh& mesh = upload(it.mesh);
     mesh.upload({MeshInstance{glm::mat4(it.model), it.color}});
     mesh.draw();

@@ -1,5 +1,6 @@
-// Draws viz::SurfaceItem meshes, lit and opaque, with the instanced mesh
-// shader (one instance each). A mesh is uploaded once and kept on the GPU
+// Draws viz::SurfaceItem meshes, lit, with the instanced mesh shader (one
+// instance each): the opaque ones in the scene's depth pass, the translucent
+// ones (alpha < 1) last, without depth writes, back faces before front faces. A mesh is uploaded once and kept on the GPU
 // while its draw-list item's SurfaceMesh lives.
 #pragma once
 
@@ -19,8 +20,12 @@ namespace tumble::render {
 class SurfacePass {
  public:
   SurfacePass(const GlFunctions& gl, const std::filesystem::path& shader_dir);
+  /// The opaque items (alpha = 1).
   void draw(const std::vector<viz::SurfaceItem>& items, const glm::mat4& view, const glm::mat4& proj,
             const glm::vec3& light_dir);
+  /// The translucent items: exact for one convex surface, close enough for a few.
+  void draw_translucent(const std::vector<viz::SurfaceItem>& items, const glm::mat4& view, const glm::mat4& proj,
+                        const glm::vec3& light_dir);
 
  private:
   struct Cached {
@@ -28,6 +33,8 @@ class SurfacePass {
     std::unique_ptr<InstancedMesh> mesh;
   };
   InstancedMesh& upload(const std::shared_ptr<const viz::SurfaceMesh>& m);
+  void draw_items(const std::vector<viz::SurfaceItem>& items, const glm::mat4& view, const glm::mat4& proj,
+                  const glm::vec3& light_dir, bool translucent);
 
   const GlFunctions* gl_;
   ShaderProgram program_;

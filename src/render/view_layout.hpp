@@ -43,14 +43,26 @@ inline PixelRect view_rect(const viz::View& view, int index, int count, int colu
   return {x0 + gap_x, y0 + gap_y, x1 - x0 - gap_x, y1 - y0 - gap_y};
 }
 
+/// The size `t` is drawn at in a viewport `width_px` wide, its line `width`
+/// px at t.size_px. Named text (explanatory views) is laid out to fit and is
+/// drawn as is, so the layout report's boxes are what is drawn; unnamed text
+/// (the classic overlay) that would run past the right edge (keeping its left
+/// margin, up to 12 px, on the right too) shrinks instead of being clipped: a
+/// label in the middle of a view keeps its size.
+inline float fitted_text_px(const viz::TextItem& t, float width_px, float width) {
+  if (!t.name.empty()) return t.size_px;
+  const float left = std::max(t.position_px.x, 0.0f);
+  const float room = width_px - left - std::min(left, 12.0f);
+  return width > room && room > 0 ? t.size_px * room / width : t.size_px;
+}
+
 struct CameraMatrices {
   glm::mat4 view;
   glm::mat4 proj;
 };
 
 inline CameraMatrices camera_matrices(const viz::Camera& cam, float aspect) {
-  const glm::mat4 view = glm::lookAt(glm::vec3(cam.position), glm::vec3(cam.target),
-                                     glm::vec3(cam.up));
+  const glm::mat4 view = glm::lookAt(glm::vec3(cam.position), glm::vec3(cam.target), glm::vec3(viz::view_up(cam)));
   const float hh = float(cam.ortho_half_height);
   const glm::mat4 proj =
       hh > 0 ? glm::ortho(-hh * aspect, hh * aspect, -hh, hh, float(cam.near_m), float(cam.far_m))

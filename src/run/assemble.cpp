@@ -5,7 +5,9 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
+#include "io/frame_sums.hpp"
 #include "run/manifest_parts.hpp"
 #include "run/render_output.hpp"
 #include "run/video.hpp"
@@ -28,6 +30,8 @@ std::string describe(const Part& p) {
 std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part>& parts, const Part& ref) {
   std::vector<std::string> errors;
   std::vector<char> have(static_cast<std::size_t>(ref.frame_count), 0);
+  const auto sums = io::read_frame_sums(dir);
+  long damaged = 0;
   for (const Part& p : parts) {
     if (!p.ok) {
       errors.push_back(p.file + ": not a manifest part written by tumble (unreadable, or fields missing)");
@@ -40,9 +44,15 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
                        p.json.value("scene", "SCENE") + " -o " + dir.string() + " --frames " + std::to_string(p.first) +
                        ":" + std::to_string(p.last) + " --resume");
     } else {
-      std::error_code ec;
-      for (long k = std::max(0L, p.first); k <= p.last && k < ref.frame_count; ++k)
-        have[static_cast<std::size_t>(k)] = fs::exists(io::frame_path(dir, k), ec) ? 1 : 0;
+      // Each frame must be what its shard recorded when it wrote it (io/frame_sums.hpp).
+      const int w = ref.json.value("width", 0), h = ref.json.value("height", 0);
+      for (long k = std::max(0L, p.first); k <= p.last && k < ref.frame_count; ++k) {
+        if (have[static_cast<std::size_t>(k)]) continue;
+        const std::string why = io::check_frame(io::frame_path(dir, k), sums, w, h);
+        have[static_cast<std::size_t>(k)] = why.empty() ? 1 : 0;
+        if (!why.empty() && why != "missing" && ++damaged <= 5)
+          errors.push_back(io::frame_path(dir, k).filename().string() + " fails its check: " + why);
+      }
     }
   }
   std::vector<std::pair<long, long>> covered;
@@ -50,7 +60,7 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
     if (have[static_cast<std::size_t>(k)]) covered.emplace_back(k, k);
   if (const std::string gaps = missing_ranges(covered, ref.frame_count); !gaps.empty())
     errors.push_back("frames " + gaps + " of 0:" + std::to_string(ref.frame_count - 1) +
-                     " are missing (no complete part covers them, or their files are gone); render them with "
+                     " are missing (no complete part covers them, or their files are gone or damaged); render them with "
                      "--frames A:B");
   return errors;
 }
@@ -59,6 +69,9 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
 std::pair<std::vector<Part>, std::size_t> whole_render_parts(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw io::IoError("'" + dir.string() + "' is not a folder");
+  // Alone in the folder (the caller holds it exclusively): every temp file is
+  // a killed run's leftover (a video half encoded, say).
+  for (const fs::path& t : list_dir(dir, is_stale_temp)) remove_file(t);
   std::vector<Part> parts = read_parts(dir);
   if (parts.empty())
     throw InputError("tumble assemble: " + dir.string() +
@@ -78,6 +91,9 @@ std::pair<std::vector<Part>, std::size_t> whole_render_parts(const fs::path& dir
 }  // namespace
 
 Outcome assemble(const fs::path& dir, std::optional<scene::VideoFormat> video, Listener& l) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw io::IoError("'" + dir.string() + "' is not a folder");
+  const io::FolderLock lock(dir, io::FolderLock::Mode::exclusive, "tumble assemble", "");  // no shard may run meanwhile
   const auto [parts, ref_index] = whole_render_parts(dir);
   const Part& ref = parts[ref_index];
   const long count = ref.frame_count;

@@ -4,10 +4,14 @@
 #include <cmath>
 
 #include "core/dynamics.hpp"
+#include "scene/frame_clock.hpp"
 #include "viz/captions.hpp"
+#include "viz/key.hpp"
+#include "viz/palette.hpp"
 #include "viz/momentum_sphere.hpp"
 #include "viz/poinsot.hpp"
 #include "viz/strip_chart.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::run {
 
@@ -15,26 +19,79 @@ namespace {
 
 glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-const viz::Color kSeriesColors[] = {{0.86f, 0.15f, 0.15f, 1}, {0.12f, 0.62f, 0.20f, 1}, {0.15f, 0.30f, 0.90f, 1},
-                                    {0.10f, 0.10f, 0.14f, 1}, {0.60f, 0.20f, 0.75f, 1}, {0.95f, 0.55f, 0.05f, 1}};
+// How the plot shows each series of scene::plot_series_names(): its name in
+// the key and its colour (viz/palette.hpp: principal components and angles
+// take their axis' colour; the cloud-axis components, which are no principal
+// axis, greys).
+struct SeriesLook {
+  const char* name;
+  const char* shown;
+  viz::Color color;
+};
+const std::vector<SeriesLook>& series_looks() {
+  using viz::Meaning;
+  static const std::vector<SeriesLook> looks = {
+      {"w1", "\u03c9\u2081", viz::color_of(Meaning::axis1)},
+      {"w2", "\u03c9\u2082", viz::color_of(Meaning::axis2)},
+      {"w3", "\u03c9\u2083", viz::color_of(Meaning::axis3)},
+      {"wbx", "\u03c9x (cloud axes)", {0.30f, 0.30f, 0.34f, 1}},
+      {"wby", "\u03c9y (cloud axes)", {0.50f, 0.50f, 0.55f, 1}},
+      {"wbz", "\u03c9z (cloud axes)", {0.68f, 0.68f, 0.72f, 1}},
+      {"|w|", "|\u03c9|", viz::color_of(Meaning::omega)},
+      {"energy_error", "\u0394E/E", viz::color_of(Meaning::ink)},
+      {"axis1_L", "\u2220(e\u2081, L)", viz::color_of(Meaning::axis1)},
+      {"axis2_L", "\u2220(e\u2082, L)", viz::color_of(Meaning::axis2)},
+      {"axis3_L", "\u2220(e\u2083, L)", viz::color_of(Meaning::axis3)}};
+  return looks;
+}
 
-// ω_body components take the colours of the axes they are closest to in name.
-viz::Color series_color(const std::string& name, std::size_t i) {
-  if (name == "wbx" || name == "axis1_L") return kSeriesColors[0];
-  if (name == "wby" || name == "axis2_L") return kSeriesColors[1];
-  if (name == "wbz" || name == "axis3_L") return kSeriesColors[2];
-  return kSeriesColors[3 + i % 3];
+const SeriesLook& series_look(const std::string& name) {
+  for (const SeriesLook& l : series_looks())
+    if (name == l.name) return l;
+  return series_looks()[7];
 }
 
 }  // namespace
 
 double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0) {
+  if (name == "w1" || name == "w2" || name == "w3") return omega_principal(m, s)[name[1] - '1'];
   if (name == "wbx" || name == "wby" || name == "wbz") return omega_body(m, s)[name[2] - 'x'];
   if (name == "|w|") return omega_world(m, s).norm();
   if (name == "energy_error") return (total_energy(m, s) - e0) / std::max(std::abs(e0), 1e-300);
   if (name.size() == 7 && name.rfind("axis", 0) == 0) return principal_axis_angles_to_L(s)[name[4] - '1'];
   return 0;
 }
+
+namespace {
+
+viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::SphereCameraSettings s) {
+  s.azimuth_deg = c.azimuth_deg.value_or(s.azimuth_deg);
+  s.elevation_deg = c.elevation_deg.value_or(s.elevation_deg);
+  s.distance = c.distance.value_or(s.distance);
+  s.follow = c.follow.value_or(s.follow);
+  return s;
+}
+
+// The body_frame view's camera at t = 0: aimed at the body from `c`'s azimuth
+// and elevation (default: the scene camera's direction), `distance` body radii away.
+viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, const scene::ViewCamera& c,
+                        const RigidBodyModel& m, const BodyState& s0) {
+  const glm::dvec3 d = glm::normalize(scene_cam.position - scene_cam.target);
+  const double az = c.azimuth_deg ? glm::radians(*c.azimuth_deg) : std::atan2(d.y, d.x);
+  const double el = c.elevation_deg ? glm::radians(*c.elevation_deg) : std::asin(std::clamp(d.z, -0.95, 0.95));
+  viz::Camera cam;
+  cam.fov_y_deg = s.render.camera.fov_y_deg;
+  const double r = viz::box_radius(m);
+  const double dist = c.distance.value_or(std::max(2.2, 1.15 / std::sin(glm::radians(cam.fov_y_deg) / 2))) * r;
+  cam.target = to_glm(s0.c);
+  cam.position = cam.target + dist * glm::dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+  cam.up = {0, 0, 1};
+  cam.near_m = 0.05 * dist;
+  cam.far_m = 20 * dist;
+  return cam;
+}
+
+}  // namespace
 
 ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const std::vector<Run>& runs, int width,
                            int height)
@@ -46,21 +103,103 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
     slot.height_px = std::max(1, static_cast<int>(std::lround(f[3] * height)));
     if (const scene::Body* b = s.find_body(vc.body)) slot.body = static_cast<std::size_t>(b - s.bodies.data());
     slot.camera = scene_camera(s, runs, static_cast<double>(slot.width_px) / slot.height_px);
+    const RigidBodyModel& m = s.bodies[slot.body].model;
+    if (vc.kind == scene::ViewKind::body_frame && !runs.empty() && !runs[0].frames.empty())
+      slot.camera = body_camera(s, slot.camera, vc.camera, m, runs[0].frames[0][slot.body]);
+    if (vc.kind == scene::ViewKind::momentum_sphere) {
+      slot.sphere = sphere_settings(vc.camera, viz::SphereCameraSettings{});
+      if (!runs.empty()) {
+        // Followed from t = 0 through every path sample: frame k alone gets the pose of a full run.
+        std::vector<Eigen::Vector3d> pi;
+        for (const auto& states : runs[0].path) pi.push_back(momentum_body(states[slot.body]));
+        slot.track = viz::follow_track(runs[0].path_t, pi, slot.sphere);
+      }
+    }
+    if (vc.kind == scene::ViewKind::poinsot) slot.sphere = sphere_settings(vc.camera, viz::PoinsotInput{}.camera);
     if (vc.kind == scene::ViewKind::plot && !runs.empty()) {
       // The value axis covers the whole run, so every frame shares it.
       double lo = 1e300, hi = -1e300;
       const Run& run = runs[0];
       for (const auto& states : run.frames)
         for (const std::string& name : vc.series) {
-          const double v = series_value(name, s.bodies[slot.body].model, states[slot.body], run.energy0[slot.body]);
+          const double v = series_value(name, m, states[slot.body], run.energy0[slot.body]);
           if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
         }
       if (!(hi >= lo)) lo = -1, hi = 1;
       const double pad = 0.08 * std::max(hi - lo, 1e-12 + 1e-9 * std::abs(hi));
       slot.lo = lo - pad, slot.hi = hi + pad;
     }
-    slots_.push_back(slot);
+    slots_.push_back(std::move(slot));
   }
+}
+
+viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
+  const scene::ViewConfig& vc = scene_.render.explain.views[i];
+  const Slot& slot = slots_[i];
+  const Run& run = runs_[0];
+  const long kk = std::min(k, static_cast<long>(run.frames.size()) - 1);
+  viz::Camera cam = slot.camera;
+  const bool turn_with_body = vc.camera.follow.value_or(true);
+  if (vc.kind == scene::ViewKind::body_frame && kk >= 0) {
+    // The camera keeps its offset (and, following, its up) in the body's own
+    // axes: the body stands still while L and the world turn around it.
+    const RigidBodyModel& m = scene_.bodies[slot.body].model;
+    const BodyState& s0 = run.frames[0][slot.body];
+    const BodyState& sk = run.frames[static_cast<std::size_t>(kk)][slot.body];
+    const Eigen::Quaterniond turn = turn_with_body ? Eigen::Quaterniond(cloud_orientation(m, sk) * cloud_orientation(m, s0).conjugate())
+                                                   : Eigen::Quaterniond::Identity();
+    const glm::dvec3 off = cam.position - cam.target;
+    cam.target = to_glm(sk.c);
+    cam.position = cam.target + to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
+    cam.up = to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
+  }
+  viz::View head;
+  const float w = static_cast<float>(slot.width_px);
+  const float top = viz::add_view_title(head, vc.title, w, height_);
+  viz::View v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, top);
+  v.name = vc.kind == scene::ViewKind::world ? "world" : "body_frame";
+  for (viz::TextItem& t : head.texts) v.texts.push_back(std::move(t));
+  if (scene_.render.explain.key) {
+    std::vector<std::pair<std::string, viz::Color>> bodies;
+    for (const scene::Body& b : scene_.bodies)
+      bodies.emplace_back(b.name, viz::Color(0.75f * b.color.cast<float>().x(), 0.75f * b.color.cast<float>().y(),
+                                             0.75f * b.color.cast<float>().z(), 1.0f));
+    const scene::DrawConfig& d = scene_.render.draw;
+    const viz::DrawOptions opt{d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
+    // In a corner clear of the bodies on screen and of the view's text.
+    const float h = static_cast<float>(slot.height_px);
+    std::vector<viz::Box> avoid;
+    for (const viz::TextItem& t : v.texts) avoid.push_back(viz::text_box(t));
+    if (kk >= 0)
+      for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
+        const glm::dvec3 c = to_glm(run.frames[static_cast<std::size_t>(kk)][b].c);
+        const double r = viz::box_radius(scene_.bodies[b].model);
+        glm::vec2 p0, p1;
+        if (!viz::project_to_viewport(v.camera, w, h, c, p0) ||
+            !viz::project_to_viewport(v.camera, w, h, c + r * glm::normalize(v.camera.up), p1))
+          continue;
+        const float rp = glm::length(p1 - p0);
+        avoid.push_back({p0.x - rp, p0.y - rp, p0.x + rp, p0.y + rp});
+      }
+    // And of the speed badge over the frame's corner (frame px to this view's px).
+    const double rate = fb_.clock().rate(k);
+    if (const auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_)) {
+      const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
+      const viz::Box b = viz::text_box(*badge);
+      const float dx = static_cast<float>(f[0] * width_), dy = static_cast<float>(f[1] * height_);
+      avoid.push_back({b.x0 - dx, b.y0 - dy, b.x1 - dx, b.y1 - dy});
+    }
+    const std::size_t texts = v.texts.size(), text_boxes = texts;
+    const viz::Box kb =
+        viz::add_key_clear(v, viz::bodies_key(opt, bodies), w, h, top, viz::text_px(viz::TextRole::key, height_), avoid);
+    // A view too small for it (no corner clear of its own text) goes without the key.
+    for (std::size_t i = 0; i < text_boxes; ++i)
+      if (avoid[i].overlaps(kb)) {
+        v.texts.resize(texts);
+        break;
+      }
+  }
+  return v;
 }
 
 viz::View ExplainViews::view_at(std::size_t i, long k) const {
@@ -71,28 +210,11 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   const long kk = std::min(k, last);
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
   auto state = [&](long j) -> const BodyState& { return run.frames[static_cast<std::size_t>(j)][slot.body]; };
-  // A titled world view's text starts below the title, which the renderer draws top-left.
-  const float title_px = vc.title.empty() ? 0.0f : viz::view_label_metrics(static_cast<float>(slot.height_px)).bottom_px;
+  const float w = static_cast<float>(slot.width_px), h = static_cast<float>(slot.height_px);
   viz::View v;
   switch (vc.kind) {
-    case scene::ViewKind::world: v = fb_.world_view(0, k, slot.camera, slot.width_px, slot.height_px, title_px); break;
-    case scene::ViewKind::body_frame: {
-      // The camera keeps its offset and up in the body's own axes: the body
-      // stands still while L and the world turn around it.
-      viz::Camera cam = slot.camera;
-      if (kk >= 0) {
-        const Eigen::Quaterniond r0 = cloud_orientation(m, state(0)), rk = cloud_orientation(m, state(kk));
-        const Eigen::Quaterniond turn = rk * r0.conjugate();
-        const glm::dvec3 off = cam.position - cam.target;
-        const Eigen::Vector3d off_k = turn * Eigen::Vector3d(off.x, off.y, off.z);
-        const Eigen::Vector3d up_k = turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z);
-        cam.target = to_glm(state(kk).c);
-        cam.position = cam.target + to_glm(off_k);
-        cam.up = to_glm(up_k);
-      }
-      v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, title_px);
-      break;
-    }
+    case scene::ViewKind::world:
+    case scene::ViewKind::body_frame: v = bodies_view(i, k); break;
     case scene::ViewKind::momentum_sphere: {
       if (kk < 0) break;
       viz::MomentumSphereInput in;
@@ -101,7 +223,11 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][slot.body]));
       in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
       in.title = vc.title;
-      viz::build_momentum_sphere(v, in, fb_.font_px());
+      if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
+      in.camera = slot.sphere;
+      in.key = scene_.render.explain.key;
+      in.width_px = w, in.height_px = h, in.frame_h = height_;
+      viz::build_momentum_sphere(v, in);
       break;
     }
     case scene::ViewKind::plot: {
@@ -109,13 +235,17 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       in.t0 = 0, in.t1 = scene_.simulation.duration, in.lo = slot.lo, in.hi = slot.hi;
       in.playhead = fb_.clock().time(k);
       in.title = vc.title;
+      for (const scene::SlowMotion& m : scene_.render.explain.slow_motion)
+        in.shaded.push_back({m.start, m.end, scene::speed_text(m.time_scale)});
+      in.frame_h = height_;
       for (long j = 0; j <= kk; ++j) in.times.push_back(fb_.clock().time(j));
-      for (std::size_t s = 0; s < vc.series.size(); ++s) {
-        viz::Series series{vc.series[s], {}, series_color(vc.series[s], s)};
-        for (long j = 0; j <= kk; ++j) series.values.push_back(series_value(vc.series[s], m, state(j), run.energy0[slot.body]));
+      for (const std::string& name : vc.series) {
+        const SeriesLook& look = series_look(name);
+        viz::Series series{look.shown, {}, look.color};
+        for (long j = 0; j <= kk; ++j) series.values.push_back(series_value(name, m, state(j), run.energy0[slot.body]));
         in.series.push_back(std::move(series));
       }
-      viz::build_strip_chart(v, in, slot.width_px, slot.height_px, fb_.font_px());
+      viz::build_strip_chart(v, in, slot.width_px, slot.height_px, viz::text_px(viz::TextRole::tick, height_));
       break;
     }
     case scene::ViewKind::poinsot: {
@@ -129,14 +259,16 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
         in.omega_world_history.push_back(omega_world(m, run.path[j][slot.body]));
       }
       in.title = vc.title;
-      viz::build_poinsot(v, in, fb_.font_px());
+      in.camera = slot.sphere;
+      in.key = scene_.render.explain.key;
+      in.width_px = w, in.height_px = h, in.frame_h = height_;
+      viz::build_poinsot(v, in);
       break;
     }
   }
+  viz::settle_labels(v, w, h);
   if (vc.viewport) v.viewport = glm::dvec4((*vc.viewport)[0], (*vc.viewport)[1], (*vc.viewport)[2], (*vc.viewport)[3]);
   else v.viewport = glm::dvec4(0, 0, 1, 1);
-  if (!vc.title.empty() && (vc.kind == scene::ViewKind::world || vc.kind == scene::ViewKind::body_frame))
-    v.label = vc.title;
   return v;
 }
 
@@ -146,17 +278,29 @@ void ExplainViews::add_views(viz::DrawList& dl, long k) const {
 
 void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   const scene::ExplainConfig& e = scene_.render.explain;
-  const double tau = static_cast<double>(k) / fb_.clock().fps();  // video time
+  const scene::FrameClock& clock = fb_.clock();
+  const double tau = static_cast<double>(k) / clock.fps();  // video time
+  const double rate = clock.rate(k);
+  const auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
+  // The captions keep clear of the badge's corner.
+  const float side = badge ? static_cast<float>(width_) - badge->position_px.x : 0.0f;
   for (const scene::Caption& c : e.captions) {
-    const float a = viz::fade_alpha(tau, fb_.clock().video_time(c.start), fb_.clock().video_time(c.end));
-    if (a > 0) dl.texts.push_back(viz::caption_item(c.text, a, width_, height_));
-  }
-  if (e.title.duration > 0) {
-    const float a = viz::fade_alpha(tau, -1.0, e.title.duration);
+    const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time(c.end));
     if (a > 0)
-      for (viz::TextItem& t : viz::title_items(e.title.text, e.title.subtitle, a, width_, height_))
-        dl.texts.push_back(std::move(t));
+      for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, side)) dl.texts.push_back(std::move(t));
   }
+  if (badge) dl.texts.push_back(*badge);
+}
+
+bool ExplainViews::title_card(viz::DrawList& dl, long k) const {
+  const scene::TitleCard& t = scene_.render.explain.title;
+  if (t.hold <= 0 || !fb_.clock().on_title_card(k)) return false;
+  const double tau = static_cast<double>(k) / fb_.clock().fps();
+  dl.background = viz::kTitleCardBackground;
+  dl.views.clear();
+  for (viz::TextItem& item : viz::title_items(t.text, t.subtitle, viz::fade_alpha(tau, -1.0, t.hold), width_, height_))
+    dl.texts.push_back(std::move(item));
+  return true;
 }
 
 }  // namespace tumble::run

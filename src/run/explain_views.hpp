@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "run/render_job.hpp"
+#include "viz/sphere_camera.hpp"
 
 namespace tumble::run {
 
@@ -14,17 +15,22 @@ class ExplainViews {
   ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const std::vector<Run>& runs, int width, int height);
   /// One view per [[views]] table, each in its viewport.
   void add_views(viz::DrawList& dl, long k) const;
-  /// Captions and the title card over the whole frame.
+  /// Captions and the slow-motion badge over the whole frame.
   void add_text(viz::DrawList& dl, long k) const;
+  /// Frame k as the title card (its own backdrop, no views), if it is one.
+  bool title_card(viz::DrawList& dl, long k) const;
 
  private:
   struct Slot {
     int width_px = 0, height_px = 0;
     std::size_t body = 0;
-    viz::Camera camera;         // world / body_frame
+    viz::Camera camera;         // world / body_frame (at t = 0)
     double lo = -1, hi = 1;     // plot: value range over the whole run
+    viz::SphereCameraSettings sphere;     // momentum_sphere, poinsot
+    std::vector<viz::SpherePose> track;   // momentum_sphere: the camera at each path sample
   };
   viz::View view_at(std::size_t i, long k) const;
+  viz::View bodies_view(std::size_t i, long k) const;  // world, body_frame
   const FrameBuilder& fb_;
   const scene::Scene& scene_;
   const std::vector<Run>& runs_;

@@ -16,6 +16,7 @@
 #include "render/frame_encoder.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
+#include "render/worker_threads.hpp"
 
 namespace tumble::run {
 
@@ -42,21 +43,27 @@ struct EndToEnd {
 /// As `tumble render` does it: simulation, frame building, drawing, read
 /// back, then on the encoder's threads FXAA, PNG encode and write, timed together.
 EndToEnd end_to_end(const scene::Scene& s, long frames, render::Renderer& renderer,
-                    const std::filesystem::path& out_dir) {
+                    const std::filesystem::path& out_dir, int jobs) {
   EndToEnd r;
   const auto t0 = Clock::now();
   const double c0 = cpu_seconds();
   {
     const std::vector<Run> runs = simulate_runs(s, frames, s.render.output.fps);
     const FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
-    render::FrameEncoder encoder(2, 4);
+    render::FrameEncoder encoder(jobs);
+    render::RawFrame raw;
+    auto submit = [&] {
+      const std::filesystem::path path = io::frame_path(out_dir, raw.index);
+      encoder.submit(path, std::move(raw));
+      raw = encoder.recycle_raw();
+    };
     for (long k = 0; k < frames; ++k) {
       const auto tr = Clock::now();
-      render::RawFrame raw = encoder.recycle_raw();
-      renderer.render(builder.build(k), raw);
+      const bool ready = renderer.render_overlapped(builder.build(k), k, raw);
       r.render_seconds += seconds_since(tr);
-      encoder.submit(io::frame_path(out_dir, k), std::move(raw));
+      if (ready) submit();
     }
+    if (renderer.finish_overlapped(raw)) submit();
     encoder.flush();
   }
   r.seconds = seconds_since(t0);
@@ -94,23 +101,35 @@ AaQuality measure_quality(render::GlContext& ctx, const std::filesystem::path& p
   return q;
 }
 
-std::string markdown(const RenderBenchResult& r, const std::string& scene, const std::string& gl) {
+/// A video row's value: frames/s and CPU, or why there is none.
+std::string video_cell(const VideoRow& v) {
+  if (!v.error.empty()) return v.error;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.1f frames/s, CPU %.1f ms/frame", v.fps, v.cpu_ms);
+  return buf;
+}
+
+std::string markdown(const RenderBenchResult& r, const std::string& scene) {
   char buf[2048];
   std::snprintf(
       buf, sizeof buf,
-      "Scene `%s`, %ld frames, 1280x720, %s; \"high\" quality is FXAA (one sample a pixel). End to "
+      "Scene `%s`, %ld frames, 1280x720, %s; %s; %d frame encoder threads; \"high\" quality is %s. End to "
       "end: best of two runs each, FXAA and MSAA interleaved; CPU is user + system time of all threads.\n\n"
       "| measure | value |\n|---|---|\n| end to end, high quality (FXAA) | %.1f frames/s, CPU %.1f ms/frame |\n"
-      "| encode-only limit (2 threads) | %.1f frames/s |\n| end-to-end / encode-only | %.2f |\n"
-      "| build + draw + read back, mean (FXAA runs on the encoder threads) | %.1f ms/frame |\n"
+      "| encode-only limit (%d threads) | %.1f frames/s |\n| end-to-end / encode-only | %.2f |\n"
+      "| build + draw + read back, mean (FXAA: %s) | %.1f ms/frame |\n"
       "| end to end, 4x MSAA | %.1f frames/s, CPU %.1f ms/frame |\n"
       "| build + draw + read back, mean (4x MSAA) | %.1f ms/frame |\n"
-      "| H.264 video via PNG files (render, then ffmpeg reads them) | %.1f frames/s, CPU %.1f ms/frame |\n"
-      "| H.264 video, raw frames piped to ffmpeg (--frames-out none) | %.1f frames/s, CPU %.1f ms/frame |\n",
-      scene.c_str(), r.frames, gl.c_str(), r.end_to_end_fps, r.cpu_ms, r.encode_only_fps,
-      r.end_to_end_fps / r.encode_only_fps, r.render_ms, r.msaa_end_to_end_fps, r.msaa_cpu_ms, r.msaa_render_ms,
-      r.png_video_fps, r.png_video_cpu_ms, r.stream_video_fps, r.stream_video_cpu_ms);
+      "| end to end, FXAA, the other GPU paths (%s) | %.1f frames/s, CPU %.1f ms/frame |\n",
+      scene.c_str(), r.frames, r.gl.c_str(), r.hardware_gpu ? "a hardware GPU" : "not a hardware GPU", r.threads,
+      r.paths.c_str(), r.end_to_end_fps, r.cpu_ms, r.threads, r.encode_only_fps, r.end_to_end_fps / r.encode_only_fps,
+      r.gl_fxaa ? "a GL pass" : "on the encoder threads", r.render_ms, r.msaa_end_to_end_fps, r.msaa_cpu_ms,
+      r.msaa_render_ms, r.other_paths.c_str(), r.other_paths_fps, r.other_paths_cpu_ms);
   std::string md = buf;
+  md += "| H.264 video via PNG files (render, then ffmpeg reads them; " + r.video_encoder + ", all cores) | " +
+        video_cell(r.png_video) + " |\n";
+  md += "| H.264 video, raw frames piped to ffmpeg (--frames-out none; " + r.video_encoder + r.stream_threads + ") | " +
+        video_cell(r.stream_video) + " |\n";
   if (r.quality.empty()) return md;
   md += "\nAnti-aliasing against 4x MSAA (the reference), 1280x720, mean over frames at 1/4, 1/2 and 3/4 of each "
         "scene: RMS difference in 0..255 levels, and the share of pixels off by more than 8 levels.\n\n"
@@ -125,9 +144,55 @@ std::string markdown(const RenderBenchResult& r, const std::string& scene, const
 
 }  // namespace
 
+namespace {
+
+/// The video made both ways from the same frames: PNG files read back by
+/// ffmpeg (the end-to-end run `e`, then the encode), and raw frames piped to it.
+void measure_video(const scene::Scene& s, long frames, render::Renderer& high, const EndToEnd& e,
+                   const VideoEncoder& encoder, const std::filesystem::path& out_dir, RenderBenchResult& r) {
+  const int fps = static_cast<int>(std::lround(s.render.output.fps));
+  if (!ffmpeg_available()) {
+    r.png_video.error = r.stream_video.error = kMissingFfmpeg;
+    return;
+  }
+  const auto tv = Clock::now();
+  const double cv = cpu_seconds();
+  const VideoResult v = encode_video(out_dir, fps, VideoFormat::mp4, 18, out_dir / "png_path.mp4", {}, {}, encoder);
+  if (v.ok()) {
+    r.png_video.fps = frames / (e.seconds + seconds_since(tv));
+    r.png_video.cpu_ms = 1000 * (e.cpu_seconds + cpu_seconds() - cv) / frames;
+  } else {
+    r.png_video.error = v.message;
+  }
+  const auto ts = Clock::now();
+  const double cs = cpu_seconds();
+  const std::vector<Run> runs = simulate_runs(s, frames, s.render.output.fps);
+  const FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
+  VideoStream stream(kW, kH, fps, VideoFormat::mp4, 18, out_dir / "stream_path.mp4", encoder);
+  io::Image img;
+  for (long k = 0; k < frames && stream.running() && !stream.broken(); ++k) {
+    high.render(builder.build(k), img);
+    stream.write(img, {});
+  }
+  if (const VideoResult sv = stream.finish(); sv.ok()) {
+    r.stream_video.fps = frames / seconds_since(ts);
+    r.stream_video.cpu_ms = 1000 * (cpu_seconds() - cs) / frames;
+  } else {
+    r.stream_video.error = sv.message;
+  }
+}
+
+std::string paths_name(render::GpuPaths p) {
+  if (!p.overlapped_readback && !p.gl_fxaa) return "none";
+  return std::string(p.overlapped_readback ? "PBO read-back" : "") + (p.overlapped_readback && p.gl_fxaa ? " + " : "") +
+         (p.gl_fxaa ? "GL FXAA" : "");
+}
+
+}  // namespace
+
 RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long frames,
                                    const std::filesystem::path& out_dir, std::ostream& log,
-                                   const std::vector<std::filesystem::path>& quality_scenes) {
+                                   const std::vector<std::filesystem::path>& quality_scenes, int jobs) {
   scene::Scene s = scene::load_scene(scene_path);
   s.render.output.width = kW;
   s.render.output.height = kH;
@@ -140,9 +205,22 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   auto ctx = render::create_gl_context(render::default_gl_backend());
   render::Renderer high(*ctx, kW, kH, 0, true);  // --quality high: FXAA
   render::Renderer msaa(*ctx, kW, kH, 4, false);
+  // The GPU paths the default leaves off (on llvmpipe: both), measured too.
+  render::Renderer other(*ctx, kW, kH, 0, true);
+  const render::GpuPaths chosen = high.gpu_paths();
+  other.set_gpu_paths({!chosen.overlapped_readback, !chosen.gl_fxaa});
 
   RenderBenchResult r;
   r.frames = frames;
+  r.threads = render::worker_threads(jobs);
+  r.gl = ctx->vendor() + ", " + ctx->renderer() + " (" + ctx->version() + "), " + ctx->display();
+  r.hardware_gpu = ctx->hardware_gpu();
+  r.gl_fxaa = chosen.gl_fxaa;
+  r.paths = "FXAA with GPU paths: " + paths_name(chosen);
+  r.other_paths = paths_name(other.gpu_paths());
+  const VideoEncoder encoder = choose_video_encoder(ctx->vendor(), r.threads);
+  r.video_encoder = encoder.codec + " " + encoder.preset;
+  r.stream_threads = encoder.threads ? ", " + std::to_string(encoder.threads) + " thread(s)" : "";
   {
     // Encode-only limit: the same frames, drawn beforehand (untimed), then only
     // encoded and written by the same FrameEncoder.
@@ -153,7 +231,7 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
     for (long k = 0; k < frames; ++k) kept.push_back(high.render(builder.build(k)));
     const auto t1 = Clock::now();
     {
-      render::FrameEncoder encoder(2, 4);
+      render::FrameEncoder encoder(r.threads);
       for (long k = 0; k < frames; ++k)
         encoder.submit(io::frame_path(out_dir, k), std::move(kept[static_cast<size_t>(k)]));
       encoder.flush();
@@ -162,11 +240,14 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   }
   // Interleaved, best of two each: a load that comes and goes (a shared
   // machine) then favours neither. The last FXAA run's frames feed the PNG video.
-  EndToEnd m, e;
+  EndToEnd m, e, o;
   for (int rep = 0; rep < 2; ++rep) {
-    const EndToEnd mi = end_to_end(s, frames, msaa, out_dir), ei = end_to_end(s, frames, high, out_dir);
+    const EndToEnd oi = end_to_end(s, frames, other, out_dir, r.threads);
+    const EndToEnd mi = end_to_end(s, frames, msaa, out_dir, r.threads);
+    const EndToEnd ei = end_to_end(s, frames, high, out_dir, r.threads);
     if (rep == 0 || mi.seconds < m.seconds) m = mi;
     if (rep == 0 || ei.seconds < e.seconds) e = ei;
+    if (rep == 0 || oi.seconds < o.seconds) o = oi;
   }
   r.msaa_end_to_end_fps = frames / m.seconds;
   r.msaa_render_ms = 1000 * m.render_seconds / frames;
@@ -174,37 +255,14 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   r.end_to_end_fps = frames / e.seconds;
   r.render_ms = 1000 * e.render_seconds / frames;
   r.cpu_ms = 1000 * e.cpu_seconds / frames;
+  r.other_paths_fps = frames / o.seconds;
+  r.other_paths_cpu_ms = 1000 * o.cpu_seconds / frames;
 
-  // The video, both ways, from the same frames: PNG files read back by ffmpeg
-  // (the end-to-end run above, then the encode), and raw frames piped to it.
-  if (ffmpeg_available()) {
-    const auto tv = Clock::now();
-    const double cv = cpu_seconds();
-    const VideoResult v = encode_video(out_dir, static_cast<int>(std::lround(fps)), VideoFormat::mp4, 18,
-                                       out_dir / "png_path.mp4");
-    if (v.ok()) r.png_video_fps = frames / (e.seconds + seconds_since(tv));
-    if (v.ok()) r.png_video_cpu_ms = 1000 * (e.cpu_seconds + cpu_seconds() - cv) / frames;
-    const auto ts = Clock::now();
-    const double cs = cpu_seconds();
-    {
-      const std::vector<Run> runs3 = simulate_runs(s, frames, fps);
-      const FrameBuilder builder3(s, runs3, fps, kW, kH);
-      VideoStream stream(kW, kH, static_cast<int>(std::lround(fps)), VideoFormat::mp4, 18, out_dir / "stream_path.mp4");
-      io::Image img;
-      for (long k = 0; k < frames && stream.running() && !stream.broken(); ++k) {
-        high.render(builder3.build(k), img);
-        stream.write(img, {});
-      }
-      if (stream.finish().ok()) {
-        r.stream_video_fps = frames / seconds_since(ts);
-        r.stream_video_cpu_ms = 1000 * (cpu_seconds() - cs) / frames;
-      }
-    }
-  }
+  measure_video(s, frames, high, e, encoder, out_dir, r);
   r.quality.push_back(measure_quality(*ctx, scene_path));
   for (const auto& q : quality_scenes) r.quality.push_back(measure_quality(*ctx, q));
 
-  r.markdown = markdown(r, scene_path.filename().string(), ctx->renderer() + " (" + ctx->version() + ")");
+  r.markdown = markdown(r, scene_path.filename().string());
   io::atomic_write_file(out_dir / "render.md", "# tumble bench --render\n\n" + r.markdown);
   log << "# tumble bench --render\n\n" << r.markdown;
   return r;

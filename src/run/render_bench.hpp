@@ -20,18 +20,31 @@ struct AaQuality {
   double none_rms = 0, none_over = 0;  ///< no anti-aliasing against 4x MSAA
 };
 
+/// One way to the video: frames/s and CPU ms a frame, or why there is none
+/// (ffmpeg missing, or its error).
+struct VideoRow {
+  double fps = 0, cpu_ms = 0;
+  std::string error;
+};
+
 struct RenderBenchResult {
   long frames = 0;
+  int threads = 0;              ///< frame encoder threads (--jobs, TUMBLE_JOBS, else the usable cores)
+  std::string gl;               ///< GL vendor, renderer, version and display or device
+  bool hardware_gpu = false;    ///< the renderer is a GPU, not llvmpipe and the like
+  bool gl_fxaa = false;         ///< "high"'s FXAA ran as a GL pass
+  std::string paths, other_paths;  ///< the GPU paths "high" used, and the others measured beside
+  double other_paths_fps = 0, other_paths_cpu_ms = 0;  ///< end to end, FXAA, with the other paths
+  std::string video_encoder;    ///< "libx264 ultrafast"
+  std::string stream_threads;   ///< ", 1 thread(s)" when x264's threads are set (while frames are drawn)
   double end_to_end_fps = 0;  ///< "high" (FXAA): simulate + draw + read back + encode + write, frames/s
   double encode_only_fps = 0; ///< encode + write of the same frames, frames/s
   double render_ms = 0;       ///< mean build + draw + read-back time per frame ("high"), ms
   double cpu_ms = 0;          ///< CPU time (all threads, user + system) per frame end to end ("high"), ms
   double msaa_end_to_end_fps = 0, msaa_render_ms = 0, msaa_cpu_ms = 0;  ///< the same with 4x MSAA
-  /// Frames to an H.264 video, frames/s (0 without ffmpeg): through PNG files
-  /// (end to end, then ffmpeg reads them), and piped raw (--frames-out none).
-  double png_video_fps = 0, stream_video_fps = 0;
-  /// The same two paths in CPU time (tumble + ffmpeg, user + system), ms per frame.
-  double png_video_cpu_ms = 0, stream_video_cpu_ms = 0;
+  /// Frames to an H.264 video: through PNG files (end to end, then ffmpeg
+  /// reads them), and piped raw (--frames-out none); CPU is tumble + ffmpeg.
+  VideoRow png_video, stream_video;
   std::vector<AaQuality> quality;
   std::string markdown;       ///< what render.md holds
 };
@@ -42,6 +55,6 @@ struct RenderBenchResult {
 /// `quality_scenes`. Writes render.md there.
 RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long frames,
                                    const std::filesystem::path& out_dir, std::ostream& log,
-                                   const std::vector<std::filesystem::path>& quality_scenes = {});
+                                   const std::vector<std::filesystem::path>& quality_scenes = {}, int jobs = 0);
 
 }  // namespace tumble::run

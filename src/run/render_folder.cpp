@@ -4,14 +4,20 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <map>
+#include <memory>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "io/atomic_file.hpp"
+#include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
+#include "io/frame_sums.hpp"
 #include "io/trajectory_csv.hpp"
 #include "render/frame_encoder.hpp"
 #include "render/renderer.hpp"
+#include "render/worker_threads.hpp"
 #include "run/manifest_parts.hpp"
 #include "run/render_job.hpp"
 #include "run/render_output.hpp"
@@ -66,6 +72,7 @@ struct Job {
   std::string own;  ///< manifest.json, or this shard's part
   Existing existing;
   Manifest man;
+  std::unique_ptr<io::FolderLock> lock;  ///< held from open_folder to the end
   fs::path man_path() const { return req.dir / own; }
   void save() const { io::atomic_write_file(man_path(), man.json()); }
   /// "tumble render SCENE -o DIR" + `tail`: how to run this again.
@@ -89,6 +96,11 @@ void open_folder(Job& j) {
   // part, so shards running at once never overwrite each other's manifest.
   j.shard = asked.first != 0 || asked.second != j.count - 1;
   j.own = j.shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
+  // One writer per folder; the shards of one render (same scene and settings) together.
+  j.lock = std::make_unique<io::FolderLock>(
+      j.req.dir, j.shard ? io::FolderLock::Mode::shared : io::FolderLock::Mode::exclusive,
+      "tumble render " + quote_arg(j.req.scene_arg) + (j.shard ? " --frames " + j.req.frames : std::string()),
+      j.man.scene_hash + " " + j.man.settings_hash);
   j.existing = inspect_output(j.req.dir, j.man, j.own, j.req.force);
   const Existing& ex = j.existing;
   std::tie(j.first, j.last) = asked;
@@ -106,10 +118,12 @@ void open_folder(Job& j) {
     const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
     if (!j.shard || target == j.own || (k >= j.first && k <= j.last)) remove_file(t);
   }
+  if (!j.resume && !j.shard) remove_file(j.req.dir / io::kFrameSumsName);  // every frame is written again
 }
 
 /// What the manifest records of the runs, the GL context and the frames.
-void describe(Job& j, const std::vector<Run>& runs, const render::GlContext& ctx, int samples) {
+void describe(Job& j, const std::vector<Run>& runs, const render::GlContext& ctx, int samples,
+              const VideoEncoder& encoder) {
   const scene::Scene& s = j.req.scene;
   Manifest& man = j.man;
   for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
@@ -124,6 +138,10 @@ void describe(Job& j, const std::vector<Run>& runs, const render::GlContext& ctx
   man.gl_version = ctx.version();
   man.gl_renderer = ctx.renderer();
   man.backend = std::string(render::to_string(j.req.backend));
+  man.gl_vendor = ctx.vendor();
+  man.gl_device = ctx.display();
+  man.hardware_gpu = ctx.hardware_gpu();
+  if (s.render.output.video == scene::VideoFormat::mp4) man.video_encoder = encoder.codec + " " + encoder.preset;
   man.frames_out = j.req.stream ? "none" : "png";
 }
 
@@ -137,7 +155,7 @@ long on_disk(const Job& j, long drawn) {
 }
 
 struct Drawn {
-  long drawn = 0, skipped = 0;
+  long drawn = 0, skipped = 0, rejected = 0;
   int signal = 0;
 };
 
@@ -147,23 +165,40 @@ struct Drawn {
 Drawn draw_frames(Job& j, const FrameBuilder& builder, render::Renderer& renderer, long good) {
   Drawn d;
   std::error_code ec;
+  // A frame on disk is kept only if it is what was recorded when written (io/frame_sums.hpp).
+  const auto sums = j.resume ? io::read_frame_sums(j.req.dir) : std::map<std::string, io::FrameSum>{};
+  const scene::OutputConfig& out = j.req.scene.render.output;
+  auto kept = [&](long k) {
+    const fs::path f = io::frame_path(j.req.dir, k);
+    if (!fs::exists(fs::symlink_status(f, ec))) return false;
+    if (io::check_frame(f, sums, out.width, out.height).empty()) return true;
+    ++d.rejected;
+    remove_file(f);  // a link goes, not what it points to
+    return false;
+  };
   j.l.begin(j.last - j.first + 1);
   try {
-    render::FrameEncoder encoder(2, 4);
+    render::FrameEncoder encoder(j.req.jobs, 0, [](const fs::path& f) { io::record_frame(f); });
+    // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
+    // page faults. The encoder's threads finish it (FXAA) while we draw on;
+    // on a GPU the read-back itself overlaps the next frame (one frame late).
+    render::RawFrame raw;
+    auto submit = [&] {
+      const fs::path path = io::frame_path(j.req.dir, raw.index);
+      encoder.submit(path, std::move(raw));
+      raw = encoder.recycle_raw();
+    };
     for (long k = j.first; k <= j.last && k < good; ++k) {
       if ((d.signal = j.l.stop()) != 0) break;
-      if (j.resume && fs::exists(io::frame_path(j.req.dir, k), ec)) {
-        ++d.skipped;  // written whole by an earlier run (rename is atomic)
+      if (j.resume && kept(k)) {
+        ++d.skipped;  // written whole by an earlier run (rename is atomic) and unchanged since
       } else {
-        // Reuse a written frame's buffer: a fresh 3.7 MB buffer per frame costs
-        // page faults. The encoder's threads finish it (FXAA) while we draw on.
-        render::RawFrame raw = encoder.recycle_raw();
-        renderer.render(builder.build(k), raw);
-        encoder.submit(io::frame_path(j.req.dir, k), std::move(raw));
+        if (renderer.render_overlapped(builder.build(k), k, raw)) submit();
         ++d.drawn;
       }
       j.l.advance(k - j.first + 1);
     }
+    if (renderer.finish_overlapped(raw)) submit();
     encoder.flush();  // the frames in flight are finished, not dropped
   } catch (const std::runtime_error& e) {  // a frame could not be written: disk full, permissions
     j.man.written = on_disk(j, d.drawn);
@@ -174,6 +209,9 @@ Drawn draw_frames(Job& j, const FrameBuilder& builder, render::Renderer& rendere
     throw io::IoError(e.what());
   }
   j.l.end();
+  if (d.rejected > 0)
+    j.l.note(std::to_string(d.rejected) + " frame(s) on disk failed their check (truncated, changed, a link, or not "
+             "recorded in " + io::kFrameSumsName + ") and were drawn again");
   if (d.signal == 0) d.signal = j.l.stop();  // arrived during the last frames: they are whole anyway
   return d;
 }
@@ -197,13 +235,13 @@ Outcome stopped_early(Job& j, int signal, const std::string& diverged) {
 
 /// The video from the frames on disk, part of a complete render: until it
 /// exists the manifest says "complete": false, and --resume makes it.
-Outcome encode_frames(Job& j) {
+Outcome encode_frames(Job& j, const VideoEncoder& encoder) {
   const scene::OutputConfig& out = j.req.scene.render.output;
   const fs::path video = j.req.dir / video_file_name(j.req.scene, out.video);
   j.l.begin(j.count, "encoding " + video.filename().string() + " from " + std::to_string(j.count) + " frames");
   const VideoResult v = encode_video(
       j.req.dir, static_cast<int>(std::lround(out.fps)), out.video, out.crf(), video, [&] { return j.l.stop(); },
-      [&](long n) { j.l.advance(std::min(n, j.count)); });
+      [&](long n) { j.l.advance(std::min(n, j.count)); }, encoder);
   j.l.end();
   if (!v.ok()) {
     j.man.complete = false;
@@ -221,7 +259,7 @@ Outcome encode_frames(Job& j) {
 
 /// After the frames: the earlier render's leftovers removed, the video made
 /// (a shard's is made by `tumble assemble`), the manifest completed.
-Outcome finish(Job& j, const Drawn& d) {
+Outcome finish(Job& j, const Drawn& d, const VideoEncoder& encoder) {
   const scene::OutputConfig& out = j.req.scene.render.output;
   // Every new frame exists: the earlier render's other frames can go (before
   // the encode, which would read a stale frame past the last as one of ours).
@@ -231,7 +269,7 @@ Outcome finish(Job& j, const Drawn& d) {
                video ? video_file_name(j.req.scene, out.video) : std::string());
   j.man.replacing = false;
   if (video)
-    if (Outcome o = encode_frames(j); o.kind != Outcome::done) return o;
+    if (Outcome o = encode_frames(j, encoder); o.kind != Outcome::done) return o;
   j.save();
   return {Outcome::done, 0,
           "rendered frames " + std::to_string(j.first) + ".." + std::to_string(j.last) + " of " +
@@ -255,14 +293,22 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
   // Frames every run could reach (a single run stops at its divergence).
   const long good = runs.size() == 1 ? static_cast<long>(runs[0].frames.size()) : j.count;
   const std::string diverged = runs[0].diverged.value_or("stopped early");
-  auto ctx = render::create_gl_context(r.backend);
+  std::unique_ptr<render::GlContext> ctx;
+  try {
+    ctx = render::create_gl_context(r.backend, r.gpu);
+  } catch (const std::invalid_argument& e) {  // --gpu / TUMBLE_EGL_DEVICE past the last device
+    throw InputError(e.what());
+  }
   render::Renderer renderer(*ctx, out.width, out.height, out.samples(), out.fxaa());
-  describe(j, runs, *ctx, renderer.samples());
+  const VideoEncoder encoder = out.video == scene::VideoFormat::mp4
+                                   ? choose_video_encoder(ctx->vendor(), render::worker_threads(r.jobs))
+                                   : VideoEncoder{};
+  describe(j, runs, *ctx, renderer.samples(), encoder);
   l.arm_stop();
   if (r.stream) {
     j.save();
     return stream_render({r.dir, s, builder, renderer, j.man, j.existing, good, l,
-                          j.rerun(" --frames-out none"), diverged});
+                          j.rerun(" --frames-out none"), diverged, encoder});
   }
   if (j.resume) j.man.written = on_disk(j, 0);
   j.save();
@@ -270,7 +316,7 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
   j.man.written = on_disk(j, d.drawn);
   j.man.complete = j.man.written == j.last - j.first + 1;
   if (!j.man.complete || d.signal != 0) return stopped_early(j, d.signal, diverged);
-  return finish(j, d);
+  return finish(j, d, encoder);
 }
 
 }  // namespace tumble::run

@@ -10,6 +10,7 @@
 #include "core/propagator.hpp"
 #include "run/explain_views.hpp"
 #include "viz/captions.hpp"
+#include "viz/text_layout.hpp"
 #include "viz/particle_set.hpp"
 
 namespace tumble::run {
@@ -137,7 +138,8 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, int w
     glm::vec2 px;
     if (!viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;
     const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
-    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f}});
+    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+                       "label:" + b.model->name});
   }
 }
 
@@ -194,7 +196,9 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
   const int n = std::max<int>(1, static_cast<int>(runs.size()));
   columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
   rows_ = (n + columns_ - 1) / columns_;
-  font_px_ = std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f);
+  // Explanatory views: the label size of the text roles (in proportion to the frame).
+  font_px_ = s.render.explain.views.empty() ? std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f)
+                                            : viz::text_px(viz::TextRole::label, height);
   const scene::DrawConfig& d = s.render.draw;
   draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
   for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, d.particles));
@@ -206,7 +210,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
     for (size_t r = 0; r < runs.size(); ++r)
       for (size_t j = 0; j < runs[r].path.size(); ++j)
         trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
-  if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.duration > 0)
+  if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.hold > 0)
     explain_ = std::make_unique<ExplainViews>(*this, s, runs, width, height);
 }
 
@@ -289,6 +293,7 @@ viz::DrawList FrameBuilder::build(long k) const {
   dl.background = rgba(bg, 1.0f);
   dl.columns = columns_;
   const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
+  if (explain_ && explain_->title_card(dl, k)) return dl;  // the animation waits
   if (explain_ && !scene_.render.explain.views.empty()) {
     explain_->add_views(dl, k);
   } else {

@@ -24,7 +24,8 @@ std::string Manifest::json() const {
       {"fps", fps}, {"width", frame.width}, {"height", frame.height}, {"aa", scene::antialias_name(frame.aa)},
       {"msaa", samples}, {"frame_count", frame_count},
       {"frames", {first, last}}, {"frames_written", written}, {"gl_backend", backend},
-      {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"video", or_null(video)},
+      {"gl_version", gl_version}, {"gl_renderer", gl_renderer}, {"gl_vendor", gl_vendor}, {"gl_device", gl_device},
+      {"hardware_gpu", hardware_gpu}, {"video_encoder", or_null(video_encoder)}, {"video", or_null(video)},
       {"video_error", or_null(video_error)}, {"video_format", scene::video_format_name(frame.video)},
       {"crf", frame.crf()},
       {"frames_out", frames_out}, {"replacing", replacing}, {"complete", complete}});

@@ -14,6 +14,9 @@ namespace tumble::run {
 /// manifest.json: what was rendered, how, and whether it finished.
 struct Manifest {
   std::string scene_path, scene_name, scene_hash, settings_hash, method, step, gl_version, gl_renderer, backend;
+  std::string gl_vendor, gl_device;  ///< GL_VENDOR; the display or EGL device ("EGL device 1 of 2 (/dev/dri/renderD129)")
+  bool hardware_gpu = false;         ///< drawn by a GPU, not llvmpipe and the like
+  std::string video_encoder;         ///< "libx264 ultrafast", "h264_nvenc p4"; empty without an mp4
   std::string video;        ///< file name in the folder; empty = none made ("video": null)
   std::string video_error;  ///< why a wanted video is missing (ffmpeg missing, failed, interrupted)
   std::string frames_out = "png";  ///< "png", or "none": frames streamed into the video only

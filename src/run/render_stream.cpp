@@ -16,7 +16,8 @@ Outcome stream_render(const StreamJob& j) {
   const std::filesystem::path video = j.dir / video_file_name(j.scene, out.video);
   auto save = [&] { io::atomic_write_file(j.dir / "manifest.json", man.json()); };
   const StopPoll stop = [&] { return l.stop(); };
-  VideoStream stream(out.width, out.height, static_cast<int>(std::lround(out.fps)), out.video, out.crf(), video);
+  VideoStream stream(out.width, out.height, static_cast<int>(std::lround(out.fps)), out.video, out.crf(), video,
+                     j.encoder);
   if (!stream.running()) {
     man.video_error = stream.status().message;
     save();

@@ -25,6 +25,7 @@ struct StreamJob {
   Listener& listener;         ///< notes, progress, stop requests
   std::string rerun;          ///< the command that runs it again, for messages
   std::string diverged;       ///< why the simulation stopped early (when good < count)
+  VideoEncoder encoder;       ///< the H.264 encoder (choose_video_encoder)
 };
 
 /// Draws frames 0..count-1 into the video: done, failed (ffmpeg missing or

@@ -18,11 +18,35 @@ bool ffmpeg_available();
 
 inline constexpr const char* kMissingFfmpeg = "ffmpeg not found on PATH (Debian package: ffmpeg)";
 
+/// The H.264 encoder of an mp4 and its settings.
+struct VideoEncoder {
+  std::string codec = "libx264";  ///< or "h264_nvenc"
+  std::string preset;             ///< x264's or NVENC's preset
+  int threads = 0;                ///< x264 threads; 0 = x264's own (1.5 per core)
+};
+
+/// libx264 at the preset and threads chosen by scripts/video_presets.sh's
+/// table (README, "Video encode"), for `cores` worker threads.
+VideoEncoder x264_encoder(int cores);
+
+/// x264_encoder for the cores this process may use (render::usable_cores).
+VideoEncoder default_video_encoder();
+
+/// h264_nvenc when `gl_vendor` is NVIDIA's and ffmpeg offers the encoder and
+/// can open it (a 16-frame trial encode), else x264_encoder(cores).
+VideoEncoder choose_video_encoder(const std::string& gl_vendor, int cores);
+
 /// ffmpeg's output options for `format` into `tmp`: H.264 yuv420p at CRF
 /// `crf`, +faststart, padded to even sizes; GIF by palettegen/paletteuse. The
 /// temp name has no video extension, so the container is named (-f).
 /// Bit-exact (no encoder version in the file): the same frames give the same bytes.
-std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp);
+std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp,
+                                            const VideoEncoder& encoder = default_video_encoder());
+
+/// "" when `video` holds a video stream of `frames` frames (GIF: 1..frames,
+/// it merges repeats) lasting about frames / fps, as ffprobe counts them;
+/// else what is wrong.
+std::string verify_video(const std::filesystem::path& video, long frames, int fps, VideoFormat format);
 
 /// How an encode ended. `signal` is SIGINT/SIGTERM when it was interrupted
 /// (tumble asked to stop, or ffmpeg itself got the terminal's Ctrl-C).
@@ -44,6 +68,6 @@ using EncodeProgress = std::function<void(long)>;
 /// A stop signal seen by `stop` kills ffmpeg and removes its temp file.
 VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoFormat format, int crf,
                          const std::filesystem::path& output, const StopPoll& stop = {},
-                         const EncodeProgress& progress = {});
+                         const EncodeProgress& progress = {}, const VideoEncoder& encoder = default_video_encoder());
 
 }  // namespace tumble::run

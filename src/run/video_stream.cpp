@@ -1,6 +1,7 @@
 #include "run/video_stream.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,8 +13,9 @@
 
 namespace tumble::run {
 
-VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output)
-    : output_(std::move(output)), tmp_(io::temp_path_for(output_)) {
+VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output,
+                         const VideoEncoder& encoder)
+    : output_(std::move(output)), tmp_(io::temp_path_for(output_)), fps_(fps), format_(format) {
   // A dead ffmpeg must show as EPIPE from write(), not kill tumble by SIGPIPE.
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;
@@ -26,7 +28,7 @@ VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int
   std::vector<std::string> args = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-nostats", "-f", "rawvideo",
                                    "-pix_fmt", "rgb24", "-s", std::to_string(width) + "x" + std::to_string(height),
                                    "-framerate", std::to_string(fps), "-i", "pipe:0"};
-  for (std::string& a : ffmpeg_output_args(format, crf, tmp_)) args.push_back(std::move(a));
+  for (std::string& a : ffmpeg_output_args(format, crf, tmp_, encoder)) args.push_back(std::move(a));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -37,6 +39,7 @@ VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int
   }
   pid_ = ::fork();
   if (pid_ == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // dies with tumble (kill -9): no orphan writing a temp file
     ::dup2(fds[0], STDIN_FILENO);  // dup2 clears O_CLOEXEC on the copy
     ::signal(SIGPIPE, SIG_DFL);     // an ignored signal would stay ignored across exec
     ::execvp(argv[0], argv.data());
@@ -73,6 +76,7 @@ int VideoStream::write(const io::Image& frame, const StopPoll& stop) {
     p += n;
     left -= static_cast<std::size_t>(n);
   }
+  if (left == 0 && !broken_) ++frames_;
   return stop ? stop() : 0;
 }
 
@@ -98,6 +102,10 @@ VideoResult VideoStream::finish() {
     std::filesystem::remove(tmp_, ec);
     const std::string how = end < -1 ? "killed by signal " + std::to_string(-1 - end) : "exit " + std::to_string(end);
     return status_ = {VideoResult::failed, 0, "ffmpeg failed (" + how + ") making " + output_.string()};
+  }
+  if (const std::string bad = verify_video(tmp_, frames_, fps_, format_); !bad.empty()) {  // exit 0 is no proof
+    std::filesystem::remove(tmp_, ec);
+    return status_ = {VideoResult::failed, 0, "ffmpeg's " + output_.filename().string() + " failed its check (" + bad + ")"};
   }
   std::filesystem::rename(tmp_, output_, ec);
   if (ec) {

@@ -19,7 +19,8 @@ class VideoStream {
  public:
   /// Starts ffmpeg for width × height rgb24 frames at `fps` (frames/s). Check
   /// status() before writing: missing_ffmpeg or failed when it could not start.
-  VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output);
+  VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output,
+              const VideoEncoder& encoder = default_video_encoder());
   ~VideoStream();
   VideoStream(const VideoStream&) = delete;
   VideoStream& operator=(const VideoStream&) = delete;
@@ -45,6 +46,9 @@ class VideoStream {
   pid_t pid_ = -1;
   int in_ = -1;      // the write end of ffmpeg's stdin
   bool broken_ = false;
+  long frames_ = 0;  // written whole, for the check of the video
+  int fps_ = 0;
+  VideoFormat format_ = VideoFormat::mp4;
   struct sigaction old_pipe_ {};
   VideoResult status_;
 };

@@ -1,8 +1,11 @@
 // [[bodies]]: particle sources, initial conditions, per-body forces, colour.
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
+#include <iterator>
 
+#include "core/dynamics.hpp"
 #include "core/error.hpp"
 #include "scene/internal.hpp"
 
@@ -10,10 +13,12 @@ namespace tumble::scene::detail {
 
 namespace {
 
-// Default body colours (linear RGB), cycled by body index.
+// Default body colours (linear RGB), cycled by body index: after the first
+// (kept for the goldens), muted tones apart from the meanings' colours of
+// docs/colours.md (no L orange, ω purple or axis green).
 constexpr std::array<std::array<double, 3>, 6> kPalette = {{
-    {0.25, 0.45, 0.80}, {0.85, 0.45, 0.15}, {0.30, 0.65, 0.35},
-    {0.60, 0.35, 0.70}, {0.80, 0.70, 0.20}, {0.40, 0.40, 0.45}}};
+    {0.25, 0.45, 0.80}, {0.66, 0.60, 0.50}, {0.50, 0.62, 0.56},
+    {0.62, 0.52, 0.60}, {0.56, 0.52, 0.40}, {0.40, 0.40, 0.45}}};
 
 bool valid_name(const std::string& n) {
   if (n.empty() || n.size() > 64) return false;
@@ -103,7 +108,7 @@ void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
                    {"type", "force", "point", "frame"});
     const std::string type = fr.string("type").value_or("point");
     if (type != "point") {
-      fr.error("type", "expected \"point\" (torques and damping are body keys), found \"" + type + "\"");
+      fr.error("type", "expected \"point\" (torques and damping are body keys), found " + quote_token(type));
       continue;
     }
     PointForce pf;
@@ -113,7 +118,7 @@ void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
     const std::string frame = fr.string("frame").value_or("world");
     if (frame == "world") pf.frame = Frame::world;
     else if (frame == "body") pf.frame = Frame::body;
-    else fr.error("frame", "expected \"world\" or \"body\", found \"" + frame + "\"");
+    else fr.error("frame", "expected \"world\" or \"body\", found " + quote_token(frame));
     f.terms.push_back(pf);
   }
   f.terms.insert(f.terms.end(), keyed.begin(), keyed.end());
@@ -130,7 +135,7 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   Body b;
   b.name = r.string("name").value_or("body" + std::to_string(index));
   if (!valid_name(b.name)) {
-    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-], found \"" + b.name + "\"");
+    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-], found " + quote_token(b.name));
   } else if (std::find(ctx.body_names.begin(), ctx.body_names.end(), b.name) != ctx.body_names.end()) {
     r.error("name", "duplicate body name \"" + b.name + "\"; names must be unique");
   }
@@ -183,6 +188,14 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   b.initial = make_state(b.model, ic);
   if (!b.initial.all_finite()) {
     ctx.diag.error(t.source(), r.path(), "initial state of \"" + b.name + "\" is not finite; check the values");
+    return;
+  }
+  // The steps square momenta and divide energies: each must stay a normal double (or 0).
+  const double sizes[] = {b.initial.L.squaredNorm(), b.initial.P.squaredNorm(), kinetic_energy(b.model, b.initial)};
+  if (std::any_of(std::begin(sizes), std::end(sizes), [](double v) { return !std::isfinite(v) || (v != 0 && v < DBL_MIN); })) {
+    ctx.diag.error(t.source(), r.path(), "body '" + b.name + "': the initial momenta or kinetic energy (" +
+                                             format_number(sizes[2]) + " J) leave the normal double range "
+                                             "(2.2e-308 to 1.8e308); express the body in other units");
     return;
   }
   scene.bodies.push_back(std::move(b));

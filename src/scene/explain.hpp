@@ -16,18 +16,31 @@ struct SlowMotion {
 };
 
 /// Text shown while the simulated time is in [start, end], fading in and out.
+/// A scene may anchor start/end to flips (scene/events.hpp): they are resolved
+/// at load, and `start_text`/`end_text` keep what the file said.
 struct Caption {
   double start = 0, end = 0;  ///< simulated s
   std::string text;
+  std::string start_text, end_text;  ///< as written ("flip 1 - 0.2", "1.5")
+  std::size_t body = 0;              ///< the body whose flips anchor it
 };
 
-/// A title over the first `duration` s of video, fading out.
+/// A title card on its own backdrop for the first `hold` s of video, while the
+/// animation waits at t = 0 (FrameClock).
 struct TitleCard {
   std::string text, subtitle;
-  double duration = 0;        ///< video s; 0 = no title
+  double hold = 0;            ///< video s; 0 = no title
 };
 
 enum class ViewKind { world, body_frame, momentum_sphere, plot, poinsot };
+
+/// A view's `camera = { azimuth, elevation, distance, follow }` (body_frame,
+/// momentum_sphere, poinsot); unset fields keep the view kind's defaults.
+struct ViewCamera {
+  std::optional<double> azimuth_deg, elevation_deg;  ///< degrees
+  std::optional<double> distance;  ///< body_frame: body sizes; momentum_sphere: |L|; poinsot: largest semi-axes
+  std::optional<bool> follow;      ///< momentum_sphere: follow Π (default true); body_frame: turn with the body
+};
 
 /// One `[[views]]` table.
 struct ViewConfig {
@@ -37,6 +50,7 @@ struct ViewConfig {
   std::string body;                 ///< body name; empty = the first body
   std::vector<std::string> series;  ///< plot: wbx wby wbz |w| energy_error axis1_L axis2_L axis3_L
   std::string title;                ///< drawn in the view's corner
+  ViewCamera camera;
 };
 
 /// Names of the plot series, in the order of `plot_series_names()`.
@@ -50,6 +64,7 @@ struct ExplainConfig {
   TitleCard title;
   std::vector<ViewConfig> views;   ///< empty: the classic single world view (or [compare] grid)
   bool labels = false;             ///< [draw] labels: body names next to the bodies
+  bool key = true;                 ///< [draw] key: each view's key of colours and meanings
 };
 
 }  // namespace tumble::scene

@@ -1,14 +1,15 @@
 // [[views]], [[captions]], [title], [[slow_motion]]: explanatory-video settings.
 #include <algorithm>
 
+#include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/internal.hpp"
 
 namespace tumble::scene {
 
 const std::vector<std::string>& plot_series_names() {
-  static const std::vector<std::string> names = {"wbx", "wby", "wbz", "|w|", "energy_error", "axis1_L", "axis2_L",
-                                                 "axis3_L"};
+  static const std::vector<std::string> names = {"w1",           "w2",      "w3",      "wbx",    "wby", "wbz", "|w|",
+                                                 "energy_error", "axis1_L", "axis2_L", "axis3_L"};
   return names;
 }
 
@@ -55,16 +56,30 @@ void read_viewport(TableReader& r, ViewConfig& v) {
 void check_body(TableReader& r, const LoadContext& ctx, const std::string& name) {
   const std::vector<std::string_view> names(ctx.body_names.begin(), ctx.body_names.end());
   if (std::find(names.begin(), names.end(), name) != names.end()) return;
-  std::string msg = "expected the name of a body, found \"" + name + "\"";
+  std::string msg = "expected the name of a body, found " + quote_token(name);
   const std::string hint = closest(name, names);
   if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
   r.error("body", msg);
 }
 
+void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
+  auto t = r.subtable("camera");
+  if (!t) return;
+  if (v.kind == ViewKind::world || v.kind == ViewKind::plot) {
+    r.error("camera", "only body_frame, momentum_sphere and poinsot views take a camera (a world view uses [camera])");
+    return;
+  }
+  TableReader c(*t, r.key_path("camera"), ctx.diag, {"azimuth", "elevation", "distance", "follow"});
+  v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
+  v.camera.elevation_deg = c.number("elevation", Range::closed(-89, 89));
+  v.camera.distance = c.number("distance", Range::closed(1.5, 100));
+  v.camera.follow = c.boolean("follow");
+}
+
 void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("views", i), ctx.diag, {"kind", "viewport", "body", "series", "title"});
+    TableReader r(*list[i], indexed("views", i), ctx.diag, {"kind", "viewport", "body", "series", "title", "camera"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -75,7 +90,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     for (ViewKind k : {ViewKind::world, ViewKind::body_frame, ViewKind::momentum_sphere, ViewKind::plot,
                        ViewKind::poinsot})
       if (*kind == view_kind_name(k)) v.kind = k, known = true;
-    if (!known) r.error("kind", "expected world, body_frame, momentum_sphere, plot or poinsot, found \"" + *kind + "\"");
+    if (!known) r.error("kind", "expected world, body_frame, momentum_sphere, plot or poinsot, found " + quote_token(*kind));
     read_viewport(r, v);
     v.body = r.string("body").value_or("");
     if (!v.body.empty()) check_body(r, ctx, v.body);
@@ -84,12 +99,13 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
       for (const std::string& name : *series) {
         const auto& all = plot_series_names();
         if (std::find(all.begin(), all.end(), name) == all.end())
-          r.error("series", "expected names from wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, axis3_L, found \"" +
-                                name + "\"");
+          r.error("series", "expected names from w1, w2, w3, wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, "
+                            "axis3_L, found " + quote_token(name));
       }
       v.series = *series;
     }
-    if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"wbx", "wby", "wbz"};
+    if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"w1", "w2", "w3"};
+    read_view_camera(r, ctx, v);
     if (v.kind != ViewKind::plot && r.has("series")) r.error("series", "only a plot view has series");
     s.render.explain.views.push_back(std::move(v));
   }
@@ -97,14 +113,57 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     root.error("views", "[[views]] and [compare] do not combine; a comparison lays out its own grid");
 }
 
+// The body named by `body` (checked), else the first.
+std::size_t read_body_index(TableReader& r, const LoadContext& ctx, const Scene& s) {
+  const auto name = r.string("body");
+  if (!name) return 0;
+  check_body(r, ctx, *name);
+  const Body* b = s.find_body(*name);
+  return b ? static_cast<std::size_t>(b - s.bodies.data()) : 0;
+}
+
+// `key` as simulated seconds or an event of body `body` (scene/events.hpp),
+// clamped to [0, duration]; `written` gets the text as the file has it.
+std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
+                                std::string* written = nullptr) {
+  const toml::node* n = r.node(key);
+  if (!n) return std::nullopt;
+  const double duration = s.simulation.duration;
+  if (n->is_number()) {
+    auto v = read_number(*n, r.key_path(key), Range::closed(0, duration), r.diag());
+    if (v && written) *written = format_number(*v);
+    return v;
+  }
+  const auto* str = n->as_string();
+  const auto e = str ? parse_event_time(str->get()) : std::nullopt;
+  if (!e) {
+    r.error(key, std::string("expected ") + kEventTimeForms + ", found " + describe(*n));
+    return std::nullopt;
+  }
+  if (written) *written = str->get();
+  if (!r.diag().ok() || body >= s.bodies.size()) return std::nullopt;  // the bodies are not all there
+  const std::vector<double> flips = body_flip_times(s, body);
+  if (static_cast<std::size_t>(e->flip) > flips.size()) {
+    std::string at;
+    for (double f : flips) at += (at.empty() ? " at " : ", ") + format_number(f) + " s";
+    r.error(key, "body '" + s.bodies[body].name + "' flips " + std::to_string(flips.size()) + " time(s) in " +
+                     format_number(duration) + " s" + at + "; there is no flip " + std::to_string(e->flip));
+    return std::nullopt;
+  }
+  return std::clamp(flips[static_cast<std::size_t>(e->flip - 1)] + e->offset, 0.0, duration);
+}
+
 void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("captions");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text"});
+    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body"});
     Caption c;
-    c.start = r.number("start", Range::non_negative()).value_or(0);
-    c.end = r.number("end", Range::non_negative()).value_or(s.simulation.duration);
-    if (c.end <= c.start) r.error("end", "expected end > start (simulated s)");
+    c.body = read_body_index(r, ctx, s);
+    c.start = read_time(r, "start", s, c.body, &c.start_text).value_or(0);
+    c.end = read_time(r, "end", s, c.body, &c.end_text).value_or(s.simulation.duration);
+    if (c.end <= c.start && ctx.diag.ok())
+      r.error("end", "expected end > start (simulated s); found start " + format_number(c.start) + " s, end " +
+                         format_number(c.end) + " s");
     auto text = r.string("text");
     if (!text) {
       if (!r.has("text")) r.error("text", "missing; a caption needs text = \"...\"");
@@ -119,10 +178,11 @@ void read_slow_motion(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("slow_motion");
   auto& out = s.render.explain.slow_motion;
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("slow_motion", i), ctx.diag, {"start", "end", "time_scale"});
+    TableReader r(*list[i], indexed("slow_motion", i), ctx.diag, {"start", "end", "time_scale", "body"});
     SlowMotion m;
-    const auto a = r.number("start", Range::closed(0, s.simulation.duration));
-    const auto b = r.number("end", Range::closed(0, s.simulation.duration));
+    const std::size_t body = read_body_index(r, ctx, s);
+    const auto a = read_time(r, "start", s, body);
+    const auto b = read_time(r, "end", s, body);
     if (!a && !r.has("start")) r.error("start", "missing (simulated s)");
     if (!b && !r.has("end")) r.error("end", "missing (simulated s)");
     if (!a || !b) continue;
@@ -137,9 +197,19 @@ void read_slow_motion(TableReader& root, LoadContext& ctx, Scene& s) {
     out.push_back(m);
   }
   std::sort(out.begin(), out.end(), [](const SlowMotion& x, const SlowMotion& y) { return x.start < y.start; });
-  if (!out.empty() && root.diag().ok() &&
-      frame_clock(s, s.render.output.fps).count() > static_cast<long>(kMaxFrames))
-    root.error("slow_motion", "the slowed video exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
+}
+
+void read_title(TableReader& root, LoadContext& ctx, Scene& s) {
+  auto t = root.subtable("title");
+  if (!t) return;
+  TableReader r(*t, "title", ctx.diag, {"text", "subtitle", "hold", "duration"});
+  TitleCard& c = s.render.explain.title;
+  c.text = r.string("text").value_or("");
+  c.subtitle = r.string("subtitle").value_or("");
+  c.hold = r.number("hold", Range::closed(0, 60)).value_or(2.5);
+  if (c.text.empty()) r.error("text", "missing; a title card needs text = \"...\"");
+  if (r.has("duration"))
+    r.error("duration", "renamed to hold: the video s the title card is shown while the animation waits");
 }
 
 }  // namespace
@@ -148,14 +218,12 @@ void read_explain_config(TableReader& root, LoadContext& ctx, Scene& s) {
   read_views(root, ctx, s);
   read_captions(root, ctx, s);
   read_slow_motion(root, ctx, s);
-  if (auto t = root.subtable("title")) {
-    TableReader r(*t, "title", ctx.diag, {"text", "subtitle", "duration"});
-    TitleCard& c = s.render.explain.title;
-    c.text = r.string("text").value_or("");
-    c.subtitle = r.string("subtitle").value_or("");
-    c.duration = r.number("duration", Range::closed(0, 60)).value_or(3.0);
-    if (c.text.empty()) r.error("text", "missing; a title card needs text = \"...\"");
-  }
+  read_title(root, ctx, s);
+  auto& e = s.render.explain;
+  if ((!e.slow_motion.empty() || e.title.hold > 0) && root.diag().ok() &&
+      frame_clock(s, s.render.output.fps).count() > static_cast<long>(kMaxFrames))
+    root.error(e.slow_motion.empty() ? "title" : "slow_motion",
+               "the slowed video exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
 }
 
 }  // namespace detail

@@ -4,13 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace tumble::scene {
 
-FrameClock::FrameClock(double duration, double fps, double time_scale, std::vector<SlowMotion> segments)
-    : fps_(fps), time_scale_(time_scale) {
+FrameClock::FrameClock(double duration, double fps, double time_scale, std::vector<SlowMotion> segments,
+                       double hold)
+    : fps_(fps), time_scale_(time_scale), hold_(std::max(hold, 0.0)) {
   // Piecewise-constant rate; video time is its integral of 1/rate.
-  double t = 0, tau = 0;
+  double t = 0, tau = hold_;
   auto add = [&](double t_end, double rate) {
     if (t_end <= t) return;
     pieces_.push_back({t, tau, rate});
@@ -22,18 +24,25 @@ FrameClock::FrameClock(double duration, double fps, double time_scale, std::vect
     add(std::min(s.end, duration), s.time_scale);
   }
   add(duration, time_scale);
-  if (pieces_.empty()) pieces_.push_back({0, 0, time_scale});
+  if (pieces_.empty()) pieces_.push_back({0, hold_, time_scale});
   count_ = static_cast<long>(std::floor(tau * fps * (1 + 1e-12))) + 1;
+}
+
+const FrameClock::Piece& FrameClock::piece_at_video(double tau) const {
+  auto it = std::upper_bound(pieces_.begin(), pieces_.end(), tau, [](double v, const Piece& p) { return v < p.tau0; });
+  return *(it == pieces_.begin() ? it : it - 1);
 }
 
 double FrameClock::time(long k) const {
   const double kd = static_cast<double>(k);
-  if (pieces_.size() == 1) return time_scale_ == 1 ? kd / fps_ : kd * time_scale_ / fps_;
+  if (on_title_card(k)) return 0;
+  if (pieces_.size() == 1 && hold_ == 0) return time_scale_ == 1 ? kd / fps_ : kd * time_scale_ / fps_;
   const double tau = kd / fps_;
-  auto it = std::upper_bound(pieces_.begin(), pieces_.end(), tau, [](double v, const Piece& p) { return v < p.tau0; });
-  const Piece& p = *(it == pieces_.begin() ? it : it - 1);
+  const Piece& p = piece_at_video(tau);
   return p.t0 + (tau - p.tau0) * p.rate;
 }
+
+double FrameClock::rate(long k) const { return on_title_card(k) ? 0 : piece_at_video(static_cast<double>(k) / fps_).rate; }
 
 double FrameClock::video_time(double t) const {
   auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double v, const Piece& p) { return v < p.t0; });
@@ -47,8 +56,28 @@ long FrameClock::frame_at(double t) const {
   return std::abs(time(k) - t) <= 1e-9 * std::max(1.0, std::abs(t)) ? k : -1;
 }
 
+std::vector<ClockSpan> clock_spans(const FrameClock& c) {
+  std::vector<ClockSpan> out;
+  for (long k = 0; k < c.count(); ++k) {
+    const double r = c.rate(k);
+    if (out.empty() || out.back().rate != r) out.push_back({k, k, r});
+    else out.back().last = k;
+  }
+  return out;
+}
+
+std::string speed_text(double rate) {
+  if (!(rate > 0) || std::abs(rate - 1) < 1e-12) return "";
+  char b[32];
+  const double inv = 1 / rate;
+  if (rate < 1 && std::abs(inv - std::round(inv)) < 1e-6 * inv) std::snprintf(b, sizeof b, "×1/%.0f", inv);
+  else std::snprintf(b, sizeof b, "×%.3g", rate);
+  return b;
+}
+
 FrameClock frame_clock(const Scene& s, double fps) {
-  return FrameClock(s.simulation.duration, fps, s.render.explain.time_scale, s.render.explain.slow_motion);
+  return FrameClock(s.simulation.duration, fps, s.render.explain.time_scale, s.render.explain.slow_motion,
+                    s.render.explain.title.hold);
 }
 
 }  // namespace tumble::scene

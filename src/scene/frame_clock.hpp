@@ -2,8 +2,11 @@
 // τ_k = k/fps; simulated time advances at `time_scale` s per video second,
 // or at a slow-motion segment's own rate inside it. With time_scale 1 and no
 // segment, frame k shows exactly k/fps (the classic render, bit for bit).
+// A title card's `hold` (video s) comes first: its frames show t = 0 while
+// the animation waits, and every later frame is shifted by it.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "scene/explain.hpp"
@@ -13,11 +16,17 @@ namespace tumble::scene {
 class FrameClock {
  public:
   /// `segments` must be sorted, disjoint, inside [0, duration] (the loader checks).
-  FrameClock(double duration, double fps, double time_scale = 1, std::vector<SlowMotion> segments = {});
+  FrameClock(double duration, double fps, double time_scale = 1, std::vector<SlowMotion> segments = {},
+             double hold = 0);
 
   double fps() const { return fps_; }
   long count() const { return count_; }        ///< frames: 0 … ⌊τ(duration)·fps⌋
   double time(long k) const;                   ///< simulated s shown by frame k
+  double hold() const { return hold_; }        ///< video s of the title card before the animation
+  /// Whether frame k is on the title card (before the animation starts).
+  bool on_title_card(long k) const { return static_cast<double>(k) / fps_ < hold_ - 1e-9; }
+  /// Speed of frame k: simulated s per video s (the title card: 0).
+  double rate(long k) const;
   double video_time(double t) const;           ///< τ(t): video s at which simulated t is shown
   /// Frame showing simulated `t` exactly (within 1e-9 relative), or -1.
   long frame_at(double t) const;
@@ -26,10 +35,24 @@ class FrameClock {
   struct Piece {
     double t0, tau0, rate;  // from simulated t0 (shown at video tau0), simulated s per video s
   };
-  double fps_, time_scale_;
+  const Piece& piece_at_video(double tau) const;
+  double fps_, time_scale_, hold_;
   std::vector<Piece> pieces_;  // sorted by t0; the first starts at 0
   long count_;
 };
+
+/// Consecutive frames played at one rate: frames first … last, simulated
+/// s per video s `rate` (0 on the title card).
+struct ClockSpan {
+  long first = 0, last = 0;
+  double rate = 0;
+};
+/// The clock's frames grouped into spans of one rate, in order (for `tumble info`).
+std::vector<ClockSpan> clock_spans(const FrameClock& c);
+
+/// A rate as a lecturer says it: "×1/8" for 0.125 simulated s per video s,
+/// "×2" for 2, "" for real time (1) and the title card (0).
+std::string speed_text(double rate);
 
 struct Scene;
 /// The clock of a scene's render at `fps` ([output] time_scale, [[slow_motion]]).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/particle_cloud.hpp"
+#include "core/quote.hpp"
 #include "scene/reader.hpp"
 #include "scene/scene.hpp"
 

@@ -3,8 +3,6 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <unordered_map>
 
 #include <assimp/Importer.hpp>
@@ -12,6 +10,7 @@
 #include <assimp/scene.h>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace tumble::scene {
 
@@ -47,7 +46,7 @@ class Welder {
 };
 
 void collect(const aiScene& s, const aiNode& node, const aiMatrix4x4& parent, MeshFile& out, Welder& weld,
-             const std::filesystem::path& path) {
+             const std::string& path) {
   const aiMatrix4x4 world = parent * node.mTransformation;
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
     const aiMesh& m = *s.mMeshes[node.mMeshes[k]];
@@ -55,7 +54,7 @@ void collect(const aiScene& s, const aiNode& node, const aiMatrix4x4& parent, Me
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
       const aiVector3D p = world * m.mVertices[v];
       const Eigen::Vector3d q(p.x, p.y, p.z);
-      if (!q.allFinite()) throw InputError(path.string() + ": vertex " + std::to_string(v) + " is not finite");
+      if (!q.allFinite()) throw InputError(path + ": vertex " + std::to_string(v) + " is not finite");
       ids[v] = weld.index(q);
     }
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
@@ -68,7 +67,7 @@ void collect(const aiScene& s, const aiNode& node, const aiMatrix4x4& parent, Me
       for (int c = 0; c < 3; ++c) {
         const unsigned i = face.mIndices[c];
         if (i >= m.mNumVertices)
-          throw InputError(path.string() + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(i) +
+          throw InputError(path + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(i) +
                            " of " + std::to_string(m.mNumVertices));
         t[static_cast<std::size_t>(c)] = ids[i];
       }
@@ -78,59 +77,70 @@ void collect(const aiScene& s, const aiNode& node, const aiMatrix4x4& parent, Me
   for (unsigned c = 0; c < node.mNumChildren; ++c) collect(s, *node.mChildren[c], world, out, weld, path);
 }
 
-// OFF and PLY headers declare their element counts, and assimp reserves (and
-// walks) that many before noticing the file is short: a forged count of 3e11
-// costs a minute. Refuse counts that the file's size cannot hold.
-void check_declared_counts(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  std::error_code ec;
-  const double size = static_cast<double>(std::filesystem::file_size(path, ec));
-  std::istringstream lines(head);
-  std::string line;
-  double declared = 0;  // bytes the declared elements need at least
-  if (head.rfind("OFF", 0) == 0) {
-    std::getline(lines, line);
-    while (std::getline(lines, line) && (line.empty() || line[0] == '#')) {
-    }
-    std::istringstream counts(line);
-    double nv = 0, nf = 0;
-    counts >> nv >> nf;
-    declared = 6 * nv + 8 * nf;  // "0 0 0\n", "3 0 1 2\n"
-  } else if (head.rfind("ply", 0) == 0) {
-    while (std::getline(lines, line) && line.rfind("end_header", 0) != 0) {
-      std::istringstream words(line);
-      std::string kw, name;
-      double n = 0;
-      if (words >> kw >> name >> n && kw == "element") declared += n;  // a byte each, at least
-    }
+// The mesh through the pipe: counts, then the raw vertices and triangles.
+std::string encode(const MeshFile& m) {
+  const std::uint64_t head[3] = {m.mesh.vertices.size(), m.mesh.triangles.size(), m.ignored_primitives};
+  std::string out(reinterpret_cast<const char*>(head), sizeof head);
+  for (const Eigen::Vector3d& v : m.mesh.vertices) out.append(reinterpret_cast<const char*>(v.data()), 3 * sizeof(double));
+  for (const auto& t : m.mesh.triangles) out.append(reinterpret_cast<const char*>(t.data()), 3 * sizeof(int));
+  return out;
+}
+
+MeshFile decode(const std::string& bytes, const std::string& name) {
+  std::uint64_t head[3] = {0, 0, 0};
+  if (bytes.size() >= sizeof head) std::memcpy(head, bytes.data(), sizeof head);
+  const double need = sizeof head + 24.0 * static_cast<double>(head[0]) + 12.0 * static_cast<double>(head[1]);
+  if (bytes.size() < sizeof head || need != static_cast<double>(bytes.size()))
+    throw InputError(name + ": the guarded import returned a malformed mesh");
+  MeshFile m;
+  m.ignored_primitives = head[2];
+  m.mesh.vertices.resize(head[0]);
+  m.mesh.triangles.resize(head[1]);
+  const char* p = bytes.data() + sizeof head;
+  for (auto& v : m.mesh.vertices) std::memcpy(v.data(), p, 24), p += 24;
+  for (auto& t : m.mesh.triangles) std::memcpy(t.data(), p, 12), p += 12;
+  return m;
+}
+
+// In the guarded child: assimp on the checked bytes.
+MeshFile import(const std::string& bytes, MeshFormat format, const std::string& name) {
+  static constexpr const char* kHint[] = {"obj", "stl", "ply", "off"};
+  Assimp::Importer importer;
+  // Polygons become triangles; lines and points stay (counted, not used as faces).
+  const aiScene* s = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                                 aiProcess_Triangulate | aiProcess_ValidateDataStructure,
+                                                 kHint[static_cast<int>(format)]);
+  if (!s || !s->mRootNode || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+    const std::string why = importer.GetErrorString();
+    throw InputError(name + ": cannot read the mesh: " + (why.empty() ? "unknown format or no geometry" : why));
   }
-  if (declared > size)
-    throw InputError(path.string() + ": the header declares more elements than a file of " +
-                     std::to_string(static_cast<long long>(size)) + " bytes can hold (truncated or forged)");
+  MeshFile out;
+  Welder weld(out.mesh);
+  collect(*s, *s->mRootNode, aiMatrix4x4(), out, weld, name);
+  if (out.mesh.vertices.empty()) throw InputError(name + ": the file holds no vertices");
+  return out;
 }
 
 }  // namespace
+
+MeshFile read_mesh_bytes(const std::string& bytes, MeshFormat format, const std::string& name,
+                         const IsolationLimits& limits) {
+  precheck_mesh(bytes, format, name);
+  return decode(run_isolated([&] { return encode(import(bytes, format, name)); }, limits, name), name);
+}
 
 MeshFile read_mesh_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError(path.string() + ": no such mesh file (paths are relative to the scene file)");
-  check_declared_counts(path);
-  Assimp::Importer importer;
-  // Polygons become triangles; lines and points stay (counted, not used as faces).
-  const aiScene* s = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_ValidateDataStructure);
-  if (!s || !s->mRootNode || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
-    const std::string why = importer.GetErrorString();
-    throw InputError(path.string() + ": cannot read the mesh: " + (why.empty() ? "unknown format or no geometry" : why));
+  const MeshFormat format = mesh_format(path.string());
+  std::string bytes;
+  try {
+    bytes = read_input_file(path, kMaxMeshBytes, "mesh file");
+  } catch (const UnreadableFile& e) {
+    throw InputError(e.what());
   }
-  MeshFile out;
-  Welder weld(out.mesh);
-  collect(*s, *s->mRootNode, aiMatrix4x4(), out, weld, path);
-  if (out.mesh.vertices.empty()) throw InputError(path.string() + ": the file holds no vertices");
-  return out;
+  return read_mesh_bytes(bytes, format, path.string(), {});
 }
 
 }  // namespace tumble::scene

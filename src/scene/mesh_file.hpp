@@ -1,12 +1,16 @@
-// Reads a mesh file (OBJ, STL, PLY and whatever else assimp reads) into a
-// welded triangle mesh. The only file that includes assimp.
+// Reads a mesh file (OBJ, STL, PLY, OFF) into a welded triangle mesh: our own
+// structural check first (mesh_precheck.hpp), then assimp in a guarded child
+// process (isolated.hpp). The only file that includes assimp.
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/triangle_mesh.hpp"
+#include "scene/isolated.hpp"
+#include "scene/mesh_precheck.hpp"
 
 namespace tumble::scene {
 
@@ -15,7 +19,15 @@ struct MeshFile {
   std::size_t ignored_primitives = 0;        ///< lines and points, which bound no volume
 };
 
-/// Throws InputError "<path>: <what is wrong>" for unreadable, malformed or empty files.
+/// Largest mesh file read, bytes (checked before reading).
+inline constexpr std::size_t kMaxMeshBytes = std::size_t{1} << 30;
+
+/// Throws InputError "<path>: <what is wrong>" for unreadable, malformed or empty
+/// files, and for imports that crash or pass the default IsolationLimits (60 s, 4 GiB).
 MeshFile read_mesh_file(const std::filesystem::path& path);
+
+/// The same on a file's bytes (`name` labels messages), under `limits`.
+MeshFile read_mesh_bytes(const std::string& bytes, MeshFormat format, const std::string& name,
+                         const IsolationLimits& limits);
 
 }  // namespace tumble::scene

@@ -110,11 +110,11 @@ void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext&
   const std::string file = s.string("file").value_or("");
   const std::string units = s.string("units").value_or("m");
   const auto scale = unit_scale(units);
-  if (!scale) s.error("units", "expected \"m\", \"cm\", \"mm\" or \"in\" (the file's length unit), found \"" + units + "\"");
+  if (!scale) s.error("units", "expected \"m\", \"cm\", \"mm\" or \"in\" (the file's length unit), found " + quote_token(units));
   Request q;
   q.fill = s.string("fill").value_or("volume");
   if (q.fill != "volume" && q.fill != "surface" && q.fill != "vertices")
-    s.error("fill", "expected \"volume\", \"surface\" or \"vertices\", found \"" + q.fill + "\"");
+    s.error("fill", "expected \"volume\", \"surface\" or \"vertices\", found " + quote_token(q.fill));
   if (s.has("mass") && s.has("density")) s.error("density", "give mass or density, not both");
   if (s.has("mass")) q.mass = s.number("mass", Range::positive());
   if (s.has("density")) q.density = s.number("density", Range::positive());

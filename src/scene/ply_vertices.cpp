@@ -257,10 +257,13 @@ class Data {
 };
 
 // Reads record `i` of `e`; scalar values go to `values` (by property index) when given.
-void read_record(Data& d, const Element& e, std::uint64_t i, const std::string& name, std::vector<double>* values) {
+// With `vertices` > 0, every list entry must be a vertex index below it (faces).
+void read_record(Data& d, const Element& e, std::uint64_t i, const std::string& name, std::vector<double>* values,
+                 std::uint64_t vertices = 0, bool after_vertices = false) {
   auto record = [&] {  // built only for a message
     return e.name == "vertex" ? "vertex " + std::to_string(i)
-                              : "element " + quote(e.name) + " record " + std::to_string(i) + " (before the vertices)";
+                              : "element " + quote(e.name) + " record " + std::to_string(i) +
+                                    (after_vertices ? "" : " (before the vertices)");
   };
   auto check = [&](Read r, const Property& p) {
     if (r == Read::end)
@@ -286,13 +289,20 @@ void read_record(Data& d, const Element& e, std::uint64_t i, const std::string& 
     if (!(n >= 0 && n <= 0x1p53 && n == std::floor(n)))
       throw InputError(name + d.at() + ": " + record() + ": list " + quote(p.name) + " has length " + format_number(n, 6) +
                        "; expected a whole number >= 0");
-    check(d.skip(*p.type, static_cast<std::uint64_t>(n)), p);
+    if (!vertices) {
+      check(d.skip(*p.type, static_cast<std::uint64_t>(n)), p);
+      continue;
+    }
+    for (std::uint64_t k2 = 0; k2 < static_cast<std::uint64_t>(n); ++k2) {
+      const double v = get(*p.type, p);
+      if (!(v >= 0 && v < static_cast<double>(vertices) && v == std::floor(v)))
+        throw InputError(name + d.at() + ": " + record() + ": list " + quote(p.name) + " holds " + format_number(v, 6) +
+                         "; expected a vertex index in [0, " + std::to_string(vertices) + ")");
+    }
   }
 }
 
-}  // namespace
-
-PlyVertices read_ply_vertices(std::istream& in, const std::string& name) {
+PlyVertices read_ply(std::istream& in, const std::string& name, bool whole) {
   PlyVertices out;
   const Header h(in, name, out.warnings);
   const auto vertex = std::find_if(h.elements.begin(), h.elements.end(), [](const Element& e) { return e.name == "vertex"; });
@@ -328,12 +338,21 @@ PlyVertices read_ply_vertices(std::istream& in, const std::string& name) {
     if (m < 0) throw InputError(at + "mass " + format_number(m, 6) + " kg is negative");
     out.masses.push_back(m);
   }
+  for (auto e = vertex + 1; whole && e != h.elements.end(); ++e)
+    for (std::uint64_t i = 0; i < e->count; ++i)
+      read_record(d, *e, i, name, nullptr, e->name == "face" ? vertex->count : 0, true);
   double total = 0;
   for (double m : out.masses) total += m;
   if (mass >= 0 && !(total > 0 && std::isfinite(total)))
     throw InputError(name + ": the vertex masses sum to " + format_number(total, 6) + " kg; expected a positive, finite total");
   return out;
 }
+
+}  // namespace
+
+PlyVertices read_ply_vertices(std::istream& in, const std::string& name) { return read_ply(in, name, false); }
+
+void check_ply_mesh(std::istream& in, const std::string& name) { (void)read_ply(in, name, true); }
 
 PlyVertices read_ply_vertices(const std::filesystem::path& path) {
   std::error_code ec;

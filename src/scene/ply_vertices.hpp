@@ -26,6 +26,10 @@ struct PlyVertices {
 /// "<name>: ..." when the masses do not sum to a positive finite total.
 PlyVertices read_ply_vertices(std::istream& in, const std::string& name);
 
+/// The whole file checked before assimp sees it: header, every element's
+/// records, and every `face` list entry a vertex index in range. Throws as above.
+void check_ply_mesh(std::istream& in, const std::string& name);
+
 /// The file at `path` (InputError naming it when it cannot be opened).
 PlyVertices read_ply_vertices(const std::filesystem::path& path);
 

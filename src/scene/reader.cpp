@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/quote.hpp"
+
 namespace tumble::scene::detail {
 
 namespace {
@@ -73,7 +75,7 @@ bool Range::contains(double v) const {
 }
 
 std::string describe(const toml::node& n) {
-  if (auto s = n.as_string()) return "the string \"" + s->get() + "\"";
+  if (auto s = n.as_string()) return "the string " + quote_token(s->get());
   if (auto i = n.as_integer()) return std::to_string(i->get());
   if (auto f = n.as_floating_point()) return format_number(f->get());
   if (auto b = n.as_boolean()) return b->get() ? "true" : "false";
@@ -138,7 +140,12 @@ TableReader::TableReader(const toml::table& t, std::string path, Diagnostics& d,
 }
 
 std::string TableReader::key_path(std::string_view key) const {
-  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  // A key is any TOML string: a long or binary one is shown quoted and cut.
+  const bool plain = key.size() <= kQuoteChars && std::all_of(key.begin(), key.end(), [](char c) {
+    return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+  });
+  const std::string k = plain ? std::string(key) : quote_token(key);
+  return path_.empty() ? k : path_ + "." + k;
 }
 
 void TableReader::error(std::string_view key, std::string message) {

@@ -1,6 +1,7 @@
 // Render sections: parsed and validated with the scene, used by `tumble render`.
 #include <algorithm>
 
+#include "core/camera_up.hpp"
 #include "scene/internal.hpp"
 
 namespace tumble::scene::detail {
@@ -21,7 +22,7 @@ void read_output(TableReader& r, Scene& s) {
   }
   if (auto a = r.string("aa")) {
     if (const std::optional<Antialias> aa = parse_antialias(*a)) o.aa = *aa;
-    else r.error("aa", "expected " + antialias_choices('"') + ", found \"" + *a + "\"");
+    else r.error("aa", "expected " + antialias_choices('"') + ", found " + quote_token(*a));
     if (o.aa == Antialias::msaa && m && *m == 0) r.error("msaa", "aa = \"msaa\" needs msaa = 2 or 4, found 0");
   } else if (m) {
     // Scenes written before `aa` existed: msaa = N meant N samples, 0 none.
@@ -31,7 +32,7 @@ void read_output(TableReader& r, Scene& s) {
   s.render.explain.time_scale = r.number("time_scale", Range::closed(1e-4, 1e4)).value_or(1.0);
   if (auto v = r.string("video")) {
     if (const std::optional<VideoFormat> f = parse_video_format(*v)) o.video = *f;
-    else r.error("video", "expected " + video_format_choices('"') + ", found \"" + *v + "\"");
+    else r.error("video", "expected " + video_format_choices('"') + ", found " + quote_token(*v));
   }
   if (o.fps * s.simulation.duration / s.render.explain.time_scale > kMaxFrames)
     r.error("fps", "duration × fps exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));
@@ -50,10 +51,15 @@ void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
   c.fov_y_deg = r.number("fov_y", {1, 170, false, "an angle in [1, 170] degrees"}).value_or(c.fov_y_deg);
   if (!c.automatic && (c.position - c.target).norm() < 1e-12)
     r.error("target", "camera position and target coincide");
+  else if (const Eigen::Vector3d up = usable_up(c.up, c.target - c.position); !c.automatic && c.up.norm() >= 1e-12 && up != c.up) {
+    r.diag().warning(r.node("up") ? r.node("up")->source() : r.where(), r.key_path("up"), "parallel to the view direction (position to target), which leaves the image's up undefined; "
+                    "using up = [" + format_number(up.x()) + ", " + format_number(up.y()) + ", " + format_number(up.z()) + "] (+y, or +x when looking along y)");
+    c.up = up;
+  }
   if (auto f = r.string("follow")) {
     const std::vector<std::string_view> names(ctx.body_names.begin(), ctx.body_names.end());
     if (std::find(names.begin(), names.end(), *f) == names.end()) {
-      std::string msg = "expected the name of a body, found \"" + *f + "\"";
+      std::string msg = "expected the name of a body, found " + quote_token(*f);
       const std::string hint = closest(*f, names);
       if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
       r.error("follow", msg);
@@ -79,13 +85,14 @@ void read_draw(TableReader& r, Scene& s) {
       else if (item == "method") d.overlay_items.method = true;
       else if (item == "step") d.overlay_items.step = true;
       else if (item == "energy") d.overlay_items.energy = true;
-      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", found \"" + item + "\"");
+      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", found " + quote_token(item));
     }
     d.overlay = d.overlay_items.any();
   } else {
     d.overlay = r.boolean("overlay").value_or(d.overlay);
   }
   s.render.explain.labels = r.boolean("labels").value_or(false);
+  s.render.explain.key = r.boolean("key").value_or(true);
   d.legend = r.boolean("legend").value_or(d.legend);
 }
 
@@ -103,7 +110,7 @@ void read_compare(TableReader& r, Scene& s) {
     const std::string& n = (*names)[i];
     auto m = parse_method(n);
     if (!m) {
-      r.error("methods", "entry " + std::to_string(i) + ": expected one of " + method_list() + ", found \"" + n + "\"");
+      r.error("methods", "entry " + std::to_string(i) + ": expected one of " + method_list() + ", found " + quote_token(n));
       continue;
     }
     if (std::find(s.render.compare_methods.begin(), s.render.compare_methods.end(), *m) !=
@@ -129,7 +136,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   }
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
-                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels"});
+                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key"});
     read_draw(r, scene);
   }
   if (auto t = root.subtable("compare")) {

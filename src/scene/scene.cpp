@@ -11,6 +11,7 @@
 #include "core/input_file.hpp"
 
 #include "scene/internal.hpp"
+#include "scene/toml_limits.hpp"
 
 namespace tumble::scene {
 
@@ -30,7 +31,7 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
     else {
       std::vector<std::string_view> names{"auto"};
       for (Method k : kAllMethods) names.push_back(method_name(k));
-      std::string msg = "expected \"auto\" or one of " + method_list() + ", found \"" + *m + "\"";
+      std::string msg = "expected \"auto\" or one of " + method_list() + ", found " + quote_token(*m);
       const std::string hint = detail::closest(*m, names);
       if (!hint.empty()) msg += "; did you mean \"" + hint + "\"?";
       r.error("method", msg);
@@ -99,6 +100,7 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
   std::vector<std::pair<std::string, std::string>> options;  // key -> option, for messages
   for (const Override& o : overrides) options.emplace_back(o.key, o.option);
   detail::Diagnostics diag(source_name, std::move(options));
+  check_toml_limits(text, source_name);
   toml::table root;
   try {
     root = toml::parse(text, source_name);
@@ -122,8 +124,7 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
                                 c == '_' || c == '-' || c == '.';
                        });
   if (!name_ok) {
-    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-] (it names the output folder), found \"" +
-                        s.name + "\"");
+    r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-] (it names the output folder), found " + quote_token(s.name));
     s.name = "scene";
   }
   read_simulation(r, ctx, s);

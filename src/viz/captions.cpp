@@ -5,6 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "viz/palette.hpp"
+#include "viz/text_layout.hpp"
+
 namespace tumble::viz {
 
 LabelMetrics view_label_metrics(float height_px) {
@@ -22,7 +25,7 @@ float fade_alpha(double tau, double start, double end, double fade) {
 
 bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out) {
   const double aspect = width_px / std::max(height_px, 1.0);
-  const glm::dmat4 view = glm::lookAt(cam.position, cam.target, cam.up);
+  const glm::dmat4 view = glm::lookAt(cam.position, cam.target, view_up(cam));
   const double hh = cam.ortho_half_height;
   const glm::dmat4 proj = hh > 0 ? glm::ortho(-hh * aspect, hh * aspect, -hh, hh, cam.near_m, cam.far_m)
                                  : glm::perspective(glm::radians(cam.fov_y_deg), aspect, cam.near_m, cam.far_m);
@@ -33,30 +36,73 @@ bool project_to_viewport(const Camera& cam, double width_px, double height_px, c
   return true;
 }
 
-float approx_text_width(const std::string& text, float size_px) {
-  // UTF-8 continuation bytes do not advance.
-  const auto glyphs = std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; });
-  return 0.52f * size_px * static_cast<float>(glyphs);
+float approx_text_width(const std::string& text, float size_px) { return text_width(text, size_px); }
+
+namespace {
+
+// `text` wrapped to `max_w` (0: 90 % of the frame), each line centred in a
+// frame `frame_w` wide with its first line's top at `top`; one backdrop behind them all.
+std::vector<TextItem> centred_lines(const std::string& text, float size, Color color, Color backdrop, float frame_w,
+                                    float top, const std::string& name, float max_w = 0) {
+  const std::string wrapped = wrap_text(text, size, max_w > 0 ? max_w : 0.9f * frame_w);
+  std::vector<TextItem> out;
+  std::size_t start = 0;
+  float y = top, widest = 0;
+  while (true) {
+    const std::size_t end = wrapped.find('\n', start);
+    TextItem t{wrapped.substr(start, end - start), {0, y}, size, color, name};
+    const float w = text_width(t.text, size);
+    widest = std::max(widest, w);
+    t.position_px.x = std::max(0.02f * frame_w, 0.5f * (frame_w - w));
+    out.push_back(std::move(t));
+    y += size;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  const float pad = 0.35f * size;
+  out.front().backdrop = backdrop;
+  out.front().backdrop_px = {std::max(0.0f, 0.5f * (frame_w - widest) - 2 * pad), top - pad,
+                             std::min(frame_w, 0.5f * (frame_w + widest) + 2 * pad), y + pad};
+  return out;
+}
+
+}  // namespace
+
+std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px) {
+  const float size = text_px(TextRole::caption, frame_h), fh = static_cast<float>(frame_h);
+  const float fw = static_cast<float>(frame_w);
+  // Centred, so lines no wider than this leave `side_px` (and the backdrop's pad) free at each side.
+  const float max_w = side_px > 0 ? std::max(0.3f * fw, fw - 2 * (side_px + 0.7f * size)) : 0.9f * fw;
+  const int lines = text_lines(wrap_text(text, size, max_w));
+  const float top = fh - static_cast<float>(lines) * size - 0.6f * size;
+  return centred_lines(text, size, color_of(Meaning::ink, alpha), {0.99f, 0.99f, 1.0f, 0.92f * alpha}, fw, top,
+                       "caption", max_w);
 }
 
 TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h) {
-  const float size = std::clamp(static_cast<float>(frame_h) / 26.0f, 12.0f, 34.0f);
-  const float w = approx_text_width(text, size);
-  const float x = std::max(8.0f, 0.5f * (static_cast<float>(frame_w) - w));
-  return {text, {x, static_cast<float>(frame_h) - 2.4f * size}, size, {0.08f, 0.09f, 0.12f, alpha}};
+  return caption_items(text, alpha, frame_w, frame_h).front();
 }
 
 std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
                                   int frame_h) {
-  std::vector<TextItem> out;
-  const float big = std::clamp(static_cast<float>(frame_h) / 12.0f, 16.0f, 72.0f), small = big * 0.5f;
+  const float big = text_px(TextRole::title, frame_h), small = text_px(TextRole::subtitle, frame_h);
   const float fw = static_cast<float>(frame_w), fh = static_cast<float>(frame_h);
-  out.push_back({title, {std::max(8.0f, 0.5f * (fw - approx_text_width(title, big))), 0.38f * fh}, big,
-                 {0.08f, 0.09f, 0.12f, alpha}});
+  // On the title card's own backdrop (kTitleCardBackground, the whole frame), light text.
+  std::vector<TextItem> out = centred_lines(title, big, {0.97f, 0.97f, 0.98f, alpha}, {0, 0, 0, 0}, fw, 0.36f * fh, "title");
+  const float below = out.back().position_px.y + 1.4f * big;
   if (!subtitle.empty())
-    out.push_back({subtitle, {std::max(8.0f, 0.5f * (fw - approx_text_width(subtitle, small))), 0.38f * fh + 1.5f * big},
-                   small, {0.25f, 0.27f, 0.32f, alpha}});
+    for (TextItem& t : centred_lines(subtitle, small, {0.78f, 0.82f, 0.90f, alpha}, {0, 0, 0, 0}, fw, below, "subtitle"))
+      out.push_back(std::move(t));
   return out;
+}
+
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h) {
+  if (speed.empty()) return std::nullopt;
+  const std::string text = speed + (slow ? " slow motion" : " fast");
+  const float size = std::max(12.0f, static_cast<float>(frame_h) / 36.0f);
+  // Bottom-right; captions shown with it keep clear of it (caption_items' side_px).
+  const float x = static_cast<float>(frame_w) - approx_text_width(text, size) - 0.8f * size;
+  return TextItem{text, {x, static_cast<float>(frame_h) - 1.3f * size}, size, {0.70f, 0.12f, 0.10f, 1.0f}, "speed"};
 }
 
 }  // namespace tumble::viz

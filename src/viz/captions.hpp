@@ -3,6 +3,7 @@
 // projected position) and the overlay line built from switchable items.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,14 +27,25 @@ float fade_alpha(double tau, double start, double end, double fade = 0.4);
 /// width × height viewport, as the renderer projects it; false when behind the camera.
 bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out);
 
-/// A caption line centred near the bottom of a frame_w × frame_h frame.
+/// A caption centred near the bottom of a frame_w × frame_h frame, on a
+/// backdrop: one item per line ('\n' breaks and wrapping at 90 % of the width,
+/// or narrower to keep `side_px` free at each side, e.g. for the speed badge).
+std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px = 0);
+/// Its first line (with the backdrop of them all).
 TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h);
 
-/// Title (and subtitle) centred in the frame, with opacity `alpha`.
+/// The title card's own backdrop (the whole frame; no views are drawn on it).
+inline constexpr Color kTitleCardBackground{0.12f, 0.15f, 0.21f, 1.0f};
+
+/// Title (and subtitle) centred in the frame, light on kTitleCardBackground, with opacity `alpha`.
 std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
                                   int frame_h);
 
-/// Approximate width of `text` at `size_px` (the UI font's average advance), px.
+/// The speed badge in the frame's bottom-right corner, beside the caption, while the video does not
+/// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h);
+
+/// Width of `text` at `size_px` (viz::text_width), px.
 float approx_text_width(const std::string& text, float size_px);
 
 }  // namespace tumble::viz

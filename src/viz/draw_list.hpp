@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "core/camera_up.hpp"
+
 namespace tumble::viz {
 
 /// Linear RGBA colour, components in [0, 1].
@@ -33,6 +35,7 @@ struct ArrowItem {
   glm::dvec3 vector;
   double radius;            ///< shaft radius, m (head scales with it)
   Color color;
+  std::string name = {};    ///< in the layout report (empty: not reported)
 };
 
 /// A particle drawn as a small sphere/point sprite.
@@ -40,6 +43,7 @@ struct PointItem {
   glm::dvec3 position;      ///< world, m
   double radius;            ///< m
   Color color;
+  std::string name = {};    ///< in the layout report, e.g. "momentum_point" (empty: not reported)
 };
 
 /// A mesh as flat-shaded triangles, 3 vertices each, in its own (cloud) axes, m.
@@ -87,6 +91,7 @@ struct PolylineItem {
   Color color;
   float width_px;
   bool fade = true;                ///< false: one alpha along the line (curves, plots)
+  std::string name = {};           ///< in the layout report (empty: not reported)
 };
 
 /// Ground grid in the plane through `origin` with normal +z (world).
@@ -98,11 +103,18 @@ struct GridItem {
 };
 
 /// Screen-space text, pixel coordinates from the viewport's top-left corner.
+/// '\n' breaks lines; each line is `size_px` high (viz/text_layout.hpp).
 struct TextItem {
   std::string text;
-  glm::vec2 position_px;
+  glm::vec2 position_px;    ///< top-left corner of the first line
   float size_px;
   Color color;
+  std::string name = {};    ///< in the layout report ("text" when empty)
+  /// Filled rectangle drawn just before the text (alpha 0: none), over
+  /// `backdrop_px` = x0, y0, x1, y1 in the viewport's pixels.
+  Color backdrop{0, 0, 0, 0};
+  glm::vec4 backdrop_px{0};
+  bool key = false;         ///< part of a key (the layout report's kind "key")
 };
 
 /// Perspective camera (GLM lookAt/perspective conventions).
@@ -116,6 +128,14 @@ struct Camera {
   double ortho_half_height = 0;
 };
 
+/// The camera's up, or the fallback of core/camera_up.hpp when it is parallel
+/// to the view direction (a camera that follows a body can come to look along it).
+inline glm::dvec3 view_up(const Camera& c) {
+  const glm::dvec3 d = c.target - c.position;
+  const Eigen::Vector3d u = usable_up({c.up.x, c.up.y, c.up.z}, {d.x, d.y, d.z});
+  return {u.x(), u.y(), u.z()};
+}
+
 /// One viewport's content. Several of them form a comparison grid.
 struct View {
   Camera camera;
@@ -128,6 +148,7 @@ struct View {
   std::vector<GridItem> grids;
   std::vector<TextItem> texts;   ///< overlay, drawn last, in this viewport
   std::string label;             ///< e.g. the method name in a comparison
+  std::string name;              ///< in the layout report, e.g. "momentum_sphere" (empty: its index)
   /// x, y, width, height as fractions of the frame from its top-left corner;
   /// unset = the view's cell of the DrawList's grid.
   std::optional<glm::dvec4> viewport;

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "viz/captions.hpp"
+#include "viz/key.hpp"
 #include "viz/scene_view.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::viz {
 
@@ -61,32 +64,68 @@ std::vector<std::vector<Eigen::Vector3d>> polhodes(const Eigen::Vector3d& I, dou
   return around(2, I, L, two_E, n);                     // near the largest moment's axis
 }
 
-void build_momentum_sphere(View& view, const MomentumSphereInput& in, float font_px) {
-  const Eigen::Vector3d& I = in.inertia;
-  const double L = in.momentum.norm();
-  view.camera = Camera{};
-  // From the -e1, +e2, +e3 side: +e2 (where a near-intermediate spin starts)
-  // and the separatrix arcs towards ±e3 face the viewer.
-  view.camera.position = glm::dvec3(-2.9, 3.2, 2.9);
-  // Aimed 0.15 above the centre, with 33° of field: the +e3 arrow (1.35)
-  // ends below the title band instead of crossing the title.
-  view.camera.target = {0, 0, 0.15};
-  view.camera.up = {0, 0, 1};
-  view.camera.fov_y_deg = 33;
-  view.camera.near_m = 0.5;
-  view.camera.far_m = 20;
-  // An opaque ball a hair inside the sphere hides the curves on its far side.
-  view.points.push_back({{0, 0, 0}, 0.985, {0.93f, 0.94f, 0.97f, 1.0f}});
+namespace {
+
+// The axes through the sphere, +e_i arrows and −e_i lines, each +tip named e_i
+// where the ball does not hide it.
+void add_axes(View& view, const MomentumSphereInput& in) {
+  static const char* const kNames[3] = {"e\u2081", "e\u2082", "e\u2083"};  // e₁ e₂ e₃
+  const float size = text_px(TextRole::label, in.frame_h);
   for (int i = 0; i < 3; ++i) {
     glm::dvec3 e(0);
     e[i] = 1.35;
-    view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i]});
+    view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
+    view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.6f), 1.5f, false});
+    const glm::dvec3 tip = e * (1.47 / 1.35);
+    glm::vec2 px;
+    if (hidden_by_ball(view.camera.position, tip, kSphereBall) ||
+        !project_to_viewport(view.camera, in.width_px, in.height_px, tip, px))
+      continue;
+    TextItem t{kNames[i], {0, 0}, size, kAxisColors[i]};
+    t.position_px = px - 0.5f * glm::vec2(text_width(t.text, size), size);
+    t.name = std::string("axis_label_e") + char('1' + i);
+    view.texts.push_back(std::move(t));
   }
+}
+
+std::vector<KeyEntry> sphere_key() {
+  return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
+          key_entry(Meaning::momentum_point, "\u03a0: L in body axes"),
+          key_entry(Meaning::polhode, "polhode (\u03a0's path)"),
+          key_entry(Meaning::separatrix, "separatrix"),
+          key_entry(Meaning::other_levels, "other energies")};
+}
+
+}  // namespace
+
+void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
+  const Eigen::Vector3d& I = in.inertia;
+  const double L = in.momentum.norm();
+  view.name = "momentum_sphere";
+  view.camera = sphere_camera(in.pose, in.camera);
+  const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
+  if (in.key) {
+    // Bottom-left, the sphere moved right by half the key's width so they part.
+    const float size = text_px(TextRole::key, in.frame_h);
+    const std::vector<KeyEntry> entries = sphere_key();
+    const glm::vec2 k = key_size(entries, size);
+    add_key(view, entries, {0.5f * size, std::max(top, in.height_px - k.y - 0.5f * size)}, size);
+    const double world_per_px = 2 * std::tan(glm::radians(view.camera.fov_y_deg) / 2) * in.camera.distance / in.height_px;
+    const glm::dvec3 eye_dir = glm::normalize(view.camera.position - view.camera.target);
+    const glm::dvec3 right = glm::normalize(glm::cross(view.camera.up, eye_dir));
+    // The sphere's radius is a third of the height (fov: ±1.5 |L|); it keeps its right margin.
+    const double room = 0.5 * in.width_px - in.height_px / 3.0 - 0.02 * in.height_px;
+    const double shift = std::clamp(0.5 * static_cast<double>(k.x), 0.0, std::max(0.0, room)) * world_per_px;
+    view.camera.target -= shift * right;
+    view.camera.position -= shift * right;
+  }
+  // An opaque ball a hair inside the sphere hides the curves on its far side.
+  view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
+  add_axes(view, in);
   if (L <= 0) return;
-  const Color family{0.45f, 0.47f, 0.55f, 0.55f}, sep_color{0.85f, 0.1f, 0.1f, 0.95f};
-  auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w) {
+  auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
-      PolylineItem p{{}, c, w, false};
+      PolylineItem p{{}, c, w, false, name};
       for (const Eigen::Vector3d& x : curve) p.points.push_back(g(x / L));
       view.polylines.push_back(std::move(p));
     }
@@ -96,29 +135,16 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in, float font
   constexpr int kLevels = 10;
   for (int j = 1; j < kLevels; ++j) {
     const double two_E = lo + (hi - lo) * j / kLevels;
-    if (std::abs(two_E - L * L / I[1]) > 1e-3 * (hi - lo)) add(polhodes(I, L, two_E, 96), family, 1.0f);
-  }
-  // The energy ellipsoid Σ Π_i²/I_i = 2E: its three principal sections.
-  const Eigen::Vector3d semi = (in.two_E * I).cwiseSqrt() / L;
-  for (int a = 0; a < 3; ++a) {
-    PolylineItem e{{}, {0.95f, 0.6f, 0.05f, 0.35f}, 1.0f, false};
-    const int b = (a + 1) % 3, c = (a + 2) % 3;
-    for (int i = 0; i <= 96; ++i) {
-      glm::dvec3 x(0);
-      x[b] = semi[b] * std::cos(2 * kPi * i / 96);
-      x[c] = semi[c] * std::sin(2 * kPi * i / 96);
-      e.points.push_back(x);
-    }
-    view.polylines.push_back(std::move(e));
+    if (std::abs(two_E - L * L / I[1]) > 1e-3 * (hi - lo))
+      add(polhodes(I, L, two_E, 96), color_of(Meaning::other_levels, 0.5f), 1.0f, "");
   }
   // The body's own polhode under the separatrix, which stays visible on top of it.
-  add(polhodes(I, L, in.two_E, 192), {0.95f, 0.6f, 0.05f, 0.9f}, 1.5f);
-  add(separatrix(I, L, 192), sep_color, 2.5f);
-  PolylineItem path{{}, {0.1f, 0.1f, 0.15f, 1.0f}, 2.5f, true};
+  add(polhodes(I, L, in.two_E, 192), color_of(Meaning::polhode, 0.9f), 2.0f, "polhode");
+  add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
+  PolylineItem path{{}, color_of(Meaning::momentum_point), 2.5f, true, "momentum_path"};
   for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
   if (path.points.size() >= 2) view.polylines.push_back(std::move(path));
-  view.points.push_back({g(in.momentum / L), 0.045, {0.1f, 0.1f, 0.15f, 1.0f}});
-  if (!in.title.empty()) view.texts.push_back({in.title, {10.0f, 8.0f}, font_px, {0.12f, 0.13f, 0.16f, 1.0f}});
+  view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
 }
 
 }  // namespace tumble::viz

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "viz/draw_list.hpp"
+#include "viz/sphere_camera.hpp"
 
 namespace tumble::viz {
 
@@ -30,9 +31,19 @@ struct MomentumSphereInput {
   std::vector<Eigen::Vector3d> history;     ///< past Π, oldest first
   double two_E = 0;                         ///< 2 × rotational energy, J
   std::string title;
+  SpherePose pose = {};                     ///< the camera's followed direction now (follow_track)
+  SphereCameraSettings camera = {};
+  bool key = true;                          ///< the key of colours and meanings
+  float width_px = 640, height_px = 360;    ///< the viewport
+  int frame_h = 360;                        ///< the frame's height (text sizes)
 };
 
+/// Radius of the opaque ball inside the sphere that hides the far side, in |L|.
+inline constexpr double kSphereBall = 0.985;
+
 /// Fills `view` (camera included): drawn in units of |L| (sphere of radius 1).
-void build_momentum_sphere(View& view, const MomentumSphereInput& in, float font_px);
+/// The Π dot is the point named "momentum_point"; e₁, e₂, e₃ label the axes'
+/// tips that the ball does not hide.
+void build_momentum_sphere(View& view, const MomentumSphereInput& in);
 
 }  // namespace tumble::viz

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "viz/key.hpp"
 #include "viz/scene_view.hpp"
+#include "viz/surfaces.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::viz {
 
@@ -35,58 +38,85 @@ PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vecto
   return p;
 }
 
-void build_poinsot(View& view, const PoinsotInput& in, float font_px) {
+namespace {
+
+std::vector<KeyEntry> poinsot_key() {
+  return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
+          key_entry(Meaning::ellipsoid, "inertia ellipsoid (body)"),
+          key_entry(Meaning::L, "L: \u22a5 the plane"),
+          key_entry(Meaning::omega, "\u03c9: to the contact"),
+          key_entry(Meaning::polhode, "polhode: \u03c9 on the body"),
+          key_entry(Meaning::herpolhode, "herpolhode: \u03c9 on the plane"),
+          key_entry(Meaning::plane, "invariable plane")};
+}
+
+}  // namespace
+
+void build_poinsot(View& view, const PoinsotInput& in) {
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
   const double scale = 1.0 / std::max(p.semi_axes.maxCoeff(), 1e-300);
-  // Camera: the plane below the ellipsoid (up = -L̂), seen slightly from above.
+  // Camera: the plane below the ellipsoid (up = -L̂), seen from in.camera
+  // (by default 40° above it, so the herpolhode opens up instead of lying edge-on).
   Eigen::Vector3d u, v;
   plane_basis(p.normal, u, v);
   const Eigen::Vector3d up = -p.normal;
-  const Eigen::Vector3d target = 0.5 * p.plane_distance * scale * p.normal;
+  const Eigen::Vector3d foot = p.plane_distance * scale * p.normal;
+  const Eigen::Vector3d target = 0.3 * foot + 0.25 * up;  // the key above the ellipsoid
   view.camera = Camera{};
+  view.name = "poinsot";
   view.camera.target = g(target);
-  view.camera.position = g(target + 4.2 * (0.85 * u + 0.25 * v) + 1.6 * up);
+  const double az = glm::radians(in.camera.azimuth_deg), el = glm::radians(in.camera.elevation_deg);
+  view.camera.position =
+      g(target + in.camera.distance * (std::cos(el) * (std::cos(az) * u + std::sin(az) * v) + std::sin(el) * up));
   view.camera.up = g(up);
-  view.camera.fov_y_deg = 35;
+  view.camera.fov_y_deg = 38;
   view.camera.near_m = 0.3;
   view.camera.far_m = 30;
   const double pi = std::numbers::pi;
-  // The ellipsoid as a wireframe fixed to the body: rings around each axis.
-  auto ellipsoid_point = [&](double th, double ph) {
-    const Eigen::Vector3d e(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
-    return Eigen::Vector3d(p.axes * p.semi_axes.cwiseProduct(e) * scale);
-  };
-  const Color wire{0.35f, 0.45f, 0.7f, 0.55f};
-  for (int ring = 1; ring < 8; ++ring) {
-    PolylineItem lat{{}, wire, 1.0f, false}, lon{{}, wire, 1.0f, false};
-    for (int i = 0; i <= 72; ++i) {
-      lat.points.push_back(g(ellipsoid_point(pi * ring / 8, 2 * pi * i / 72)));
-      lon.points.push_back(g(ellipsoid_point(pi * i / 72 * 2, pi * ring / 8)));
+  // The ellipsoid: a shaded translucent surface fixed to the body, with its
+  // three principal sections drawn on it so its turning shows.
+  glm::dmat3 axes;
+  for (int i = 0; i < 3; ++i) axes[i] = g(p.axes.col(i));
+  view.surfaces.push_back(ellipsoid({0, 0, 0}, axes, g(p.semi_axes * scale), color_of(Meaning::ellipsoid, 0.32f)));
+  const Color ring = color_of(Meaning::ellipsoid, 0.6f);
+  for (int a = 0; a < 3; ++a) {
+    PolylineItem section{{}, ring, 1.0f, false};
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    for (int i = 0; i <= 96; ++i) {
+      const double ph = 2 * pi * i / 96;
+      section.points.push_back(g((p.axes.col(b) * p.semi_axes[b] * std::cos(ph) +
+                                  p.axes.col(c) * p.semi_axes[c] * std::sin(ph)) * scale * 1.003));
     }
-    view.polylines.push_back(std::move(lat));
-    view.polylines.push_back(std::move(lon));
+    view.polylines.push_back(std::move(section));
   }
   for (int i = 0; i < 3; ++i)
     view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * scale * 1.15), 0.012, kAxisColors[i]});
-  // The invariable plane: a square grid centred on the foot of L.
-  const Eigen::Vector3d foot = p.plane_distance * scale * p.normal;
-  const Color plane{0.45f, 0.47f, 0.52f, 0.5f};
-  const double half = 1.6;
+  // The invariable plane: opaque, centred on the foot of L, with a faint grid
+  // a hair above it (towards the ellipsoid) so nothing fights its depth.
+  const double half = 1.6, lift = 0.5 * kHerpolhodeLift;
+  view.surfaces.push_back(rectangle(g(foot), g(u * half), g(v * half), kPlaneColor));
+  const Color grid = color_of(Meaning::plane, 0.45f);
+  const Eigen::Vector3d on = foot - lift * p.normal;
   for (int i = -4; i <= 4; ++i) {
     const double s = half * i / 4;
-    view.polylines.push_back({{g(foot + s * u - half * v), g(foot + s * u + half * v)}, plane, 1.0f, false});
-    view.polylines.push_back({{g(foot - half * u + s * v), g(foot + half * u + s * v)}, plane, 1.0f, false});
+    view.polylines.push_back({{g(on + s * u - half * v), g(on + s * u + half * v)}, grid, 1.0f, false});
+    view.polylines.push_back({{g(on - half * u + s * v), g(on + half * u + s * v)}, grid, 1.0f, false});
   }
   // L, ω to the contact point, polhode (body-fixed, carried by R) and herpolhode (on the plane).
-  view.arrows.push_back({{0, 0, 0}, g(p.normal * 1.3 * std::max(1.0, p.plane_distance * scale)), 0.015, kLColor});
-  view.arrows.push_back({{0, 0, 0}, g(p.contact * scale), 0.015, kOmegaColor});
-  PolylineItem polhode{{}, {0.95f, 0.6f, 0.05f, 1.0f}, 2.5f, true}, herpolhode{{}, {0.1f, 0.1f, 0.15f, 1.0f}, 2.0f, true};
-  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * scale));
-  for (const Eigen::Vector3d& w : in.omega_world_history) herpolhode.points.push_back(g(w * scale));
+  // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
+  const Eigen::Vector3d L_tip = foot - 3 * kHerpolhodeLift * p.normal;
+  view.arrows.push_back({{0, 0, 0}, g(L_tip), 0.015, kLColor, "L"});
+  view.arrows.push_back({{0, 0, 0}, g(p.contact * scale), 0.015, kOmegaColor, "omega"});
+  PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f, false, "polhode"};
+  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f, false, "herpolhode"};
+  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * scale * 1.006));
+  for (const Eigen::Vector3d& w : in.omega_world_history) herpolhode.points.push_back(g(w * scale - kHerpolhodeLift * p.normal));
+  view.points.push_back({g(p.contact * scale), 0.035, color_of(Meaning::omega), "contact_point"});
   if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
-  view.points.push_back({g(p.contact * scale), 0.035, {0.1f, 0.1f, 0.15f, 1.0f}});
-  if (!in.title.empty()) view.texts.push_back({in.title, {10.0f, 8.0f}, font_px, {0.12f, 0.13f, 0.16f, 1.0f}});
+  const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
+  // Bottom-right, over the plane's near edge: the ellipsoid stands in the middle.
+  if (in.key) add_key_bottom_right(view, poinsot_key(), in.width_px, in.height_px, top, text_px(TextRole::key, in.frame_h));
 }
 
 }  // namespace tumble::viz

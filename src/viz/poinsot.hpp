@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "viz/draw_list.hpp"
+#include "viz/sphere_camera.hpp"
 
 namespace tumble::viz {
 
@@ -37,9 +38,26 @@ struct PoinsotInput {
   std::vector<Eigen::Vector3d> omega_principal_history;  ///< ω in the principal frame, oldest first (polhode)
   std::vector<Eigen::Vector3d> omega_world_history;      ///< ω in the world, oldest first (herpolhode)
   std::string title;
+  /// Azimuth (in the plane, from its first basis vector), elevation (above the
+  /// plane's far side) and distance (largest semi-axes) of the camera; follow is
+  /// unused. By default 40° above the plane, so the herpolhode opens up.
+  SphereCameraSettings camera = {16.4, 39.8, 4.69, false, 0, 0};
+  bool key = true;                          ///< the key of colours and meanings
+  float width_px = 640, height_px = 360;    ///< the viewport
+  int frame_h = 360;                        ///< the frame's height (text sizes)
 };
 
+/// The plane's surface: opaque and light, so the palette's curves show on it
+/// (its grid and key swatch use the palette's plane grey).
+inline constexpr Color kPlaneColor{0.84f, 0.85f, 0.88f, 1.0f};
+/// The herpolhode is drawn this far (scaled ω units) off the opaque plane,
+/// towards the ellipsoid, so the plane's depth does not hide it.
+inline constexpr double kHerpolhodeLift = 0.008;
+
 /// Fills `view` (camera included); ω-space scaled so the ellipsoid's largest semi-axis is 1.
-void build_poinsot(View& view, const PoinsotInput& in, float font_px);
+/// The ellipsoid is a shaded translucent surface resting on an opaque plane;
+/// the key (bottom-right) names the axes, L, ω, the curves and the plane.
+/// ω's tip is the point named "contact_point".
+void build_poinsot(View& view, const PoinsotInput& in);
 
 }  // namespace tumble::viz

@@ -9,6 +9,7 @@
 #include "core/particle_cloud.hpp"
 #include "viz/body_look.hpp"
 #include "viz/draw_list.hpp"
+#include "viz/palette.hpp"
 
 namespace tumble::viz {
 
@@ -33,9 +34,10 @@ struct DrawOptions {
   double grid_z = 0;              ///< m, height of the ground grid
 };
 
-inline const Color kAxisColors[3] = {{0.86f, 0.15f, 0.15f, 1}, {0.12f, 0.62f, 0.20f, 1}, {0.15f, 0.30f, 0.90f, 1}};
-inline const Color kLColor{0.95f, 0.60f, 0.05f, 1};
-inline const Color kOmegaColor{0.60f, 0.20f, 0.75f, 1};
+// From the one colour table (viz/palette.hpp).
+inline const Color kAxisColors[3] = {color_of(Meaning::axis1), color_of(Meaning::axis2), color_of(Meaning::axis3)};
+inline const Color kLColor = color_of(Meaning::L);
+inline const Color kOmegaColor = color_of(Meaning::omega);
 
 /// Axis arrows reach past the box face by this factor, so their heads stay visible.
 inline constexpr double kAxisOvershoot = 1.3;

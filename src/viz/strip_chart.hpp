@@ -10,8 +10,11 @@
 
 namespace tumble::viz {
 
+/// Tint of the slowed stretches (translucent, lit face-on).
+inline constexpr Color kSlowBandColor{0.35f, 0.55f, 0.95f, 0.22f};
+
 struct Series {
-  std::string name;
+  std::string name;            ///< as shown in the key, e.g. "ω₁"
   std::vector<double> values;  ///< one per sample of StripChartInput::times
   Color color;
 };
@@ -23,9 +26,19 @@ struct StripChartInput {
   double lo = -1, hi = 1;      ///< value axis (the caller's unit)
   double playhead = 0;         ///< s
   std::string title;
+  /// Stretches (s) played at another speed: shaded over the plot's height, `label` ("×1/8") on top.
+  struct Band {
+    double start, end;
+    std::string label;
+  };
+  std::vector<Band> shaded;
+  int frame_h = 0;             ///< frame height for the text roles' sizes (0: every text at font_px)
+  float top_px = 0;            ///< room above the plot for title and key, px (0: 2.6 font_px)
 };
 
-/// Fills `view` (camera included) for a viewport of `width_px` × `height_px`.
+/// Fills `view` (camera included) for a viewport of `width_px` × `height_px`:
+/// title top-left, the series' key (name in its colour) top-right or below the
+/// title when they do not fit side by side; ticks at `font_px`.
 void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px);
 
 /// Maps chart coordinates (t, value) to the world plane the chart is drawn in.

@@ -15,9 +15,10 @@ TEST_F(ExplainCli, FrameRangeOfLaidOutViewsIsByteIdenticalToTheFullRun) {
   ASSERT_EQ(run("render " + scene + " -o '" + dir_.string() + "/full' --progress none").code, 0);
   const Result r = run("render " + scene + " -o '" + dir_.string() + "/part' --frames 9:11 --progress none");
   ASSERT_EQ(r.code, 0) << r.err;
-  // 0.2 s at half speed (4 frames), 0.1 s at quarter speed (4), 0.3 s at half speed (6): 15 frames.
-  EXPECT_TRUE(fs::exists(dir_ / "full" / "frame_000014.png"));
-  EXPECT_FALSE(fs::exists(dir_ / "full" / "frame_000015.png"));
+  // The title card's hold 0.3 s (3 frames), then 0.2 s at half speed (4 frames),
+  // 0.1 s at quarter speed (4), 0.3 s at half speed (6): 18 frames.
+  EXPECT_TRUE(fs::exists(dir_ / "full" / "frame_000017.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "full" / "frame_000018.png"));
   for (int k = 9; k <= 11; ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%06d.png", k);

@@ -202,4 +202,75 @@ TEST_F(BadOption, BenchIntoAnUnwritableFolderSaysWhy) {
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
 }
 
+// ---- Issue 26: hostile inputs and environments ------------------------------
+
+TEST_F(HostileInput, CompareDiffThatIsAnInputIsRefusedBeforeAnyWork) {
+  const fs::path golden = kSource / "tests/golden/poinsot/poinsot_f000030_fxaa.png";
+  fs::copy_file(golden, dir_ / "a.png");
+  fs::copy_file(golden, dir_ / "b.png");
+  fs::create_directories(dir_ / "sub");
+  const std::string ab = "compare '" + (dir_ / "a.png").string() + "' '" + (dir_ / "b.png").string() + "'";
+  for (const fs::path& diff : {dir_ / "b.png", dir_ / "sub/../a.png"}) {
+    SCOPED_TRACE(diff.string());
+    const Result r = run(ab + " --diff '" + diff.string() + "'");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("--diff " + diff.string() + ": is the input "), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("same"), std::string::npos) << "compared before refusing: " << r.out;
+  }
+  EXPECT_EQ(slurp(dir_ / "b.png"), slurp(golden)) << "the expected image was overwritten";
+  const Result r = run(ab + " --diff '" + (dir_ / "no/such/folder/d.png").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("/no/such/folder/d.png: cannot write there: No such file or directory"), std::string::npos) << r.err;
+}
+
+TEST_F(HostileInput, DeeplyDottedTomlKeyIsExitTwoNamingTheLimit) {
+  std::string key = "a";
+  for (int i = 0; i < 50000; ++i) key += ".a";
+  std::ofstream(dir_ / "deep.toml") << key << " = 1\n";
+  const Result r = bounded("info '" + (dir_ / "deep.toml").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err.substr(0, 400);  // was a segfault in toml++ (-1 here)
+  EXPECT_NE(r.err.find("deep.toml:1:64: error: the scene has a key of more than 32 dotted parts (the key-depth limit)"),
+            std::string::npos) << r.err.substr(0, 400);
+}
+
+TEST_F(HostileInput, PlyWhoseHeaderNeverEndsFailsAtOnceForEveryFill) {
+  // assimp spun at 100 % CPU forever on this one (issue 26).
+  std::ofstream(dir_ / "endless.ply") << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\n";
+  for (const char* fill : {"volume", "surface", "vertices"}) {
+    SCOPED_TRACE(fill);
+    std::ofstream(dir_ / "m.toml") << "[[bodies]]\nshape = { type = \"mesh\", file = \"endless.ply\", fill = \"" << fill
+                                   << "\" }\n";
+    const Result r = bounded("info '" + (dir_ / "m.toml").string() + "'");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("endless.ply:5:1: the file ends before 'end_header'"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(HostileInput, CloudCsvWithAByteOrderMarkLoads) {
+  std::ofstream(dir_ / "excel.csv") << "\xEF\xBB\xBFx,y,z,m\r\n1,0,0,1\r\n-1,0,0,1\r\n0,1,0,0.5\r\n0,-1,0,0.5\r\n0,0,1,0.2\r\n";
+  const Result r = bounded("info " + cloud_scene("excel.csv"));
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
+TEST_F(HostileInput, InterruptedSimulateLeavesNoTempFileAndNoCsv) {
+  const std::string csv = (dir_ / "run.csv").string();
+  for (const char* sig : {"INT", "TERM"}) {
+    SCOPED_TRACE(sig);
+    // About 1e9 RK4 steps: minutes of work, stopped once its temp file exists
+    // (killed at 60 s if the signal is lost: exit 137, a failure).
+    const std::string cmd = "timeout -s KILL 60 '" + tumble_bin() + "' simulate " + scene("dzhanibekov.toml") +
+                            " --csv '" + csv + "' --method rk4 --dt 1e-6 --duration 900 2>'" + (dir_ / "err").string() +
+                            "' & p=$!; for i in $(seq 600); do ls '" + dir_.string() + "' | grep -q tmp- && break; sleep 0.05; done; "
+                            "pkill -" + sig + " -P $p; wait $p; echo $? >'" + (dir_ / "code").string() + "'";
+    std::ofstream(dir_ / "run.sh") << cmd << "\n";
+    ASSERT_EQ(std::system(("bash '" + (dir_ / "run.sh").string() + "'").c_str()), 0);
+    const std::string err = slurp(dir_ / "err");
+    EXPECT_EQ(std::stoi(slurp(dir_ / "code")), 128 + (std::string(sig) == "INT" ? 2 : 15)) << err;
+    EXPECT_NE(err.find(std::string("interrupted (SIG") + sig + "): no CSV written"), std::string::npos) << err;
+    for (const auto& e : fs::directory_iterator(dir_))
+      EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << "left behind: " << e.path();
+    EXPECT_FALSE(fs::exists(csv));
+  }
+}
+
 }  // namespace

@@ -66,6 +66,36 @@ TEST_F(RenderCli, FrameRangeIsByteIdenticalToTheFullRun) {
   EXPECT_NE(slurp(dir_ / "full" / "frame_000003.png"), slurp(dir_ / "full" / "frame_000004.png"));
 }
 
+// Issue 23: the frames do not depend on the thread count (--jobs,
+// TUMBLE_JOBS) nor on the GPU paths (PBO read-back one frame late, FXAA as
+// a GL pass): each frame is finished from its own read-back alone.
+TEST_F(RenderCli, FramesAreByteIdenticalWhateverTheJobs) {
+  TUMBLE_NEED_GL();
+  const std::string scene = data("tiny_render.toml") + " --aa fxaa --progress none -o '" + dir_.string();
+  const Result one = run("render " + scene + "/one' --jobs 1", "TUMBLE_GPU_PATHS=none");
+  ASSERT_EQ(one.code, 0) << one.err;
+  const Result three = run("render " + scene + "/three' --jobs 3", "TUMBLE_GPU_PATHS=none");
+  ASSERT_EQ(three.code, 0) << three.err;
+  const Result env = run("render " + scene + "/env'", "TUMBLE_JOBS=2 TUMBLE_GPU_PATHS=pbo,fxaa");
+  ASSERT_EQ(env.code, 0) << env.err;
+  for (int k = 0; k <= 6; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.png", k);
+    const std::string a = slurp(dir_ / "one" / name);
+    ASSERT_FALSE(a.empty()) << name;
+    EXPECT_TRUE(a == slurp(dir_ / "three" / name)) << name << " differs between --jobs 1 and --jobs 3";
+    EXPECT_TRUE(a == slurp(dir_ / "env" / name)) << name << " differs with TUMBLE_JOBS=2 and the GPU paths";
+  }
+  EXPECT_NE(slurp(dir_ / "one" / "frame_000003.png"), slurp(dir_ / "one" / "frame_000004.png"));
+  const std::string manifest = slurp(dir_ / "one" / "manifest.json");
+  EXPECT_NE(manifest.find("\"gl_device\": \""), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"hardware_gpu\": "), std::string::npos) << manifest;
+  EXPECT_NE(run("render " + scene + "/bad' --jobs 0").code, 0);
+  const Result bad_env = run("render " + scene + "/bad'", "TUMBLE_JOBS=many");
+  EXPECT_EQ(bad_env.code, 2) << bad_env.err;
+  EXPECT_NE(bad_env.err.find("TUMBLE_JOBS"), std::string::npos) << bad_env.err;
+}
+
 TEST_F(RenderCli, RenderRejectsABadFrameRange) {
   const Result r = run("render " + data("tiny_render.toml") + " -o '" + dir_.string() + "/x' --frames 5:99");
   EXPECT_EQ(r.code, 2);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "run/video.hpp"
 #include "render_fixture.hpp"
 
 namespace {
@@ -39,6 +40,32 @@ class VideoRender : public RobustRender {
     for (const std::string& n : names(out)) EXPECT_EQ(n.find(".tmp"), std::string::npos) << n;
   }
 };
+
+// Issue 23: the measured x264 settings at the CRF, and NVENC only for an
+// NVIDIA GPU whose ffmpeg can open it (a fake ffmpeg answers the trial).
+TEST_F(VideoRender, EncoderIsChosenByGpuAndTrialEncode) {
+  using tumble::run::choose_video_encoder;
+  auto args = [](const tumble::run::VideoEncoder& e) {
+    std::string s;
+    for (const std::string& a : tumble::run::ffmpeg_output_args(tumble::scene::VideoFormat::mp4, 18, "out.tmp", e)) s += a + " ";
+    return s;
+  };
+  const tumble::run::VideoEncoder x264 = tumble::run::x264_encoder(2);
+  EXPECT_NE(args(x264).find("-c:v libx264 -pix_fmt yuv420p -crf 18 -threads 1 -preset ultrafast"), std::string::npos) << args(x264);
+  EXPECT_EQ(tumble::run::x264_encoder(16).threads, 0);
+  const std::string old_path = std::getenv("PATH");
+  ::setenv("PATH", fake_ffmpeg("exit 0").c_str(), 1);
+  const tumble::run::VideoEncoder nvidia = choose_video_encoder("NVIDIA Corporation", 16);
+  const tumble::run::VideoEncoder mesa = choose_video_encoder("Mesa/X.org", 16);
+  ::setenv("PATH", fake_ffmpeg("exit 1").c_str(), 1);
+  const tumble::run::VideoEncoder broken = choose_video_encoder("NVIDIA Corporation", 16);
+  ::setenv("PATH", old_path.c_str(), 1);
+  EXPECT_EQ(nvidia.codec, "h264_nvenc");
+  EXPECT_NE(args(nvidia).find("-c:v h264_nvenc"), std::string::npos) << args(nvidia);
+  EXPECT_NE(args(nvidia).find("-cq 18"), std::string::npos) << args(nvidia);
+  EXPECT_EQ(mesa.codec, "libx264");
+  EXPECT_EQ(broken.codec, "libx264") << "NVENC listed but failing its trial must fall back";
+}
 
 TEST_F(VideoRender, InterruptedEncodeExits130ThenResumeMakesTheVideo) {
   TUMBLE_NEED_GL();
@@ -96,6 +123,9 @@ TEST_F(VideoRender, EncodeShowsProgress) {
   // A fake ffmpeg that reports progress as ffmpeg's -progress does and writes its output.
   const std::string path = fake_ffmpeg("for a; do last=$a; done; printf 'frame=3\\nprogress=continue\\nframe=7\\nprogress=end\\n'; "
                                        "echo video > \"$last\"");
+  // and an ffprobe that finds it whole (the video is checked before it counts as made)
+  std::ofstream(dir_ / "fakebin/ffprobe") << "#!/bin/sh\nprintf 'codec_type=video\\nnb_read_frames=7\\nduration=0.7\\n'\n";
+  ::chmod((dir_ / "fakebin/ffprobe").c_str(), 0755);
   const fs::path out = dir_ / "progress";
   std::vector<std::string> extra = {"--video", "mp4", "--progress", "auto"};
   const pid_t pid = spawn_render(data("tiny_render.toml"), out, extra, path);
@@ -144,7 +174,7 @@ TEST_F(VideoRender, StreamedVideoHasEveryFrameAndNoPngs) {
                  "' --video mp4 --frames-out none --progress none");
   ASSERT_EQ(r.code, 0) << r.err;
   for (const std::string& n : names(streamed)) EXPECT_EQ(n.find("frame_"), std::string::npos) << n;
-  EXPECT_EQ(names(streamed), (std::vector<std::string>{"manifest.json", "tiny_render.mp4"}));
+  EXPECT_EQ(names(streamed), (std::vector<std::string>{".tumble.lock", "manifest.json", "tiny_render.mp4"}));
   EXPECT_EQ(frame_count(streamed / "tiny_render.mp4"), "7\n");
   const std::string m = slurp(streamed / "manifest.json");
   EXPECT_NE(m.find("\"complete\": true"), std::string::npos) << m;
@@ -182,7 +212,7 @@ TEST_F(VideoRender, StreamedRenderWithoutWorkingFfmpegExits1) {
     const pid_t pid = spawn_render(data("tiny_render.toml"), out, extra, path);
     EXPECT_EQ(wait_exit(pid), 1) << slurp(dir_ / "spawn.err");
     expect_incomplete_without_video(out);
-    EXPECT_EQ(names(out), std::vector<std::string>{"manifest.json"});
+    EXPECT_EQ(names(out), (std::vector<std::string>{".tumble.lock", "manifest.json"}));
   }
 }
 
@@ -202,7 +232,28 @@ TEST_F(VideoRender, InterruptedStreamExits130AndLeavesNoVideo) {
     EXPECT_EQ(wait_exit(pid), 128 + sig) << slurp(dir_ / "spawn.err");
     EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(20)) << "did not stop the stream";
     expect_incomplete_without_video(out);
-    EXPECT_EQ(names(out), std::vector<std::string>{"manifest.json"}) << "a half video or frames were left";
+    EXPECT_EQ(names(out), (std::vector<std::string>{".tumble.lock", "manifest.json"})) << "a half video or frames were left";
     EXPECT_NE(slurp(dir_ / "spawn.err").find("nothing to resume"), std::string::npos) << slurp(dir_ / "spawn.err");
   }
+}
+
+TEST_F(VideoRender, AVideoFfmpegCallsDoneIsCheckedAndNeverReplacesAGoodOne) {
+  TUMBLE_NEED_GL();
+  // Issue 26: on a full disk ffmpeg failed writing the trailer, yet its
+  // truncated mp4 was renamed into place and called complete.
+  const fs::path out = dir_ / "o";
+  ASSERT_EQ(wait_exit(spawn_render(data("tiny_render.toml"), out, {"--video", "mp4"})), 0) << slurp(dir_ / "spawn.err");
+  const std::string good = slurp(out / "tiny_render.mp4");
+  ASSERT_GT(good.size(), 100u);
+  // An ffmpeg that writes half a video and exits 0.
+  const std::string path = fake_ffmpeg("for a; do last=$a; done; /usr/bin/ffmpeg \"$@\" && head -c 300 \"$last\" > \"$last.h\" && mv \"$last.h\" \"$last\"");
+  fs::remove(out / "frame_000003.png");  // so the render has work and encodes again
+  const pid_t pid = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4", "--resume"}, path);
+  EXPECT_EQ(wait_exit(pid), 1) << slurp(dir_ / "spawn.err");
+  const std::string err = slurp(dir_ / "spawn.err");
+  EXPECT_NE(err.find("ffmpeg's tiny_render.mp4 failed its check ("), std::string::npos) << err;
+  EXPECT_NE(err.find("the earlier video is kept"), std::string::npos) << err;
+  EXPECT_EQ(slurp(out / "tiny_render.mp4"), good) << "a bad video replaced the good one";
+  EXPECT_NE(slurp(out / "manifest.json").find("\"complete\": false"), std::string::npos);
+  for (const std::string& n : names(out)) EXPECT_EQ(n.find(".tmp"), std::string::npos) << n;
 }

@@ -7,7 +7,7 @@
 namespace {
 
 // Two bodies: one torque-free (closed-form reference, peers run) and one
-// pushed off-centre (rk45 reference, no peers). Short, so --quick stays quick.
+// pushed off-centre (dop853 reference, odeint's body-frame peers only). Short, so --quick stays quick.
 constexpr const char* kScene = R"(name = "bench_pair"
 [simulation]
 method = "splitting"
@@ -64,9 +64,11 @@ TEST_F(BenchCli, SceneStudyWritesCsvChartsAndSummary) {
     EXPECT_TRUE(seen.count(std::string("free ") + m)) << m;
     EXPECT_TRUE(seen.count(std::string("pushed ") + m)) << m;
   }
-  // Peers need a torque-free body.
+  // odeint's body-frame peers take forces (core's right-hand side); the world-frame one and the engines do not.
   EXPECT_TRUE(seen.count("free odeint_rk4_body"));
-  EXPECT_FALSE(seen.count("pushed odeint_rk4_body"));
+  EXPECT_TRUE(seen.count("pushed odeint_rk4_body"));
+  EXPECT_TRUE(seen.count("pushed odeint_dopri5_body"));
+  EXPECT_FALSE(seen.count("pushed odeint_rk4_world"));
   const std::string md = slurp(out / "summary.md");
   EXPECT_NE(md.find("bench_pair"), std::string::npos);
   EXPECT_NE(md.find("**cheapest**"), std::string::npos);

@@ -112,7 +112,7 @@ TEST_F(BenchQuick, ExactIsBestAndErrorsFallWithDt) {
   for (const auto& [param, ex] : by["exact"])
     for (tumble::Method m : tumble::kAllMethods) {
       const std::string name(tumble::method_name(m));
-      if (name == "exact" || name == "rk45") continue;
+      if (name == "exact" || tumble::method_info(m).adaptive) continue;
       for (const auto& [p2, other] : by[name])
         if (std::abs(p2 / param - 1) < 1e-9 && std::isfinite(num(other, "angle_err_rad"))) {
           EXPECT_LE(num(ex, "angle_err_rad"), std::max(num(other, "angle_err_rad"), floor)) << name << " dt " << param;
@@ -123,10 +123,13 @@ TEST_F(BenchQuick, ExactIsBestAndErrorsFallWithDt) {
     std::sort(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.first > b.first; });
     for (size_t i = 0; i + 1 < pts.size(); ++i) {
       // In the asymptotic range (above round-off, below saturation) a smaller
-      // step (or tolerance) must not be less accurate.
+      // step must not be less accurate. An adaptive pair's error follows rtol
+      // within its band, not point by point (its step sequence changes with
+      // rtol; near the T-handle's flips half a decade of rtol can end 1.3× worse).
       const double big = num(pts[i].second, "angle_err_rad"), small = num(pts[i + 1].second, "angle_err_rad");
+      const bool adaptive = pts[i].second.at("param_name") == "rtol";
       if (method != "exact" && std::isfinite(big) && big > floor && big < 0.1) {
-        EXPECT_LE(small, 1.1 * big) << method << " at " << pts[i + 1].first;
+        EXPECT_LE(small, (adaptive ? 2.0 : 1.1) * big) << method << " at " << pts[i + 1].first;
       }
     }
     const double e_first = num(pts.front().second, "energy_rel_err"), e_last = num(pts.back().second, "energy_rel_err");
@@ -180,7 +183,7 @@ TEST_F(BenchQuick, CheapestTableHasOneWinnerPerTolerance) {
   ASSERT_EQ(rc_, 0);
   std::map<std::pair<std::string, double>, std::vector<Row>> by;
   for (const Row& r : read_csv(dir_ / "cheapest.csv")) by[{r.at("problem"), num(r, "tolerance_rad")}].push_back(r);
-  ASSERT_EQ(by.size(), 3u * 8u);  // 3 problems × 1e-3 … 1e-10
+  ASSERT_EQ(by.size(), 6u * 8u);  // 6 problems × 1e-3 … 1e-10
   for (const auto& [key, rows] : by) {
     int winners = 0;
     double best = INFINITY, win_cpu = NAN;
@@ -213,20 +216,27 @@ TEST_F(BenchQuick, EulerEnergyGrowsMidpointDoesNot) {
   for (const Row& r : by["implicit_midpoint"]) EXPECT_LT(num(r, "energy_rel_err"), 1e-12) << r.at("step");
 }
 
-// auto's picks meet their tolerance when run, and it predicted their error
-// within a factor of 30 (the prediction is an estimate, the check is not).
+// auto's picks meet their tolerance when run on every bench problem, and it
+// predicted their error within a factor of 30 (the prediction is an estimate,
+// the check is not); each row names the cheapest configuration it is set against.
 TEST_F(BenchQuick, AutoPicksMeetTheirTolerance) {
   ASSERT_EQ(rc_, 0);
   const auto rows = read_csv(dir_ / "auto.csv");
-  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows.size(), 6u * 3u);  // 6 problems × 1e-3, 1e-5, 1e-8
+  std::set<std::string> problems;
   for (const Row& r : rows) {
+    problems.insert(r.at("problem"));
     EXPECT_TRUE(tumble::parse_method(r.at("method")).has_value()) << r.at("method");
-    EXPECT_LE(num(r, "error"), num(r, "tolerance")) << r.at("method");
+    EXPECT_LE(num(r, "error"), num(r, "tolerance")) << r.at("problem") << " " << r.at("method");
     EXPECT_LE(num(r, "predicted_error"), num(r, "tolerance"));
-    EXPECT_LT(num(r, "error"), 30 * num(r, "predicted_error")) << r.at("method");
+    if (num(r, "predicted_error") > 0) {
+      EXPECT_LT(num(r, "error"), 30 * num(r, "predicted_error")) << r.at("problem") << " " << r.at("method");
+    }
     EXPECT_GT(num(r, "cpu_s"), 0);
-    EXPECT_GT(num(r, "pilot_cpu_s"), 0);
+    EXPECT_GE(num(r, "pilot_cpu_s"), 0);
+    EXPECT_FALSE(r.at("cheapest").empty()) << r.at("problem") << " " << r.at("tolerance");
   }
+  EXPECT_EQ(problems.size(), 6u);
 }
 
 }  // namespace

@@ -108,5 +108,24 @@ TEST(CloudFile, CsvErrorsNameTheLine) {
   expect_error("x,y,z,m\n1,2,,4\n", "parts.xyz:2:", "expected a number, found ''");
 }
 
+TEST(CloudFile, CsvWithAUtf8ByteOrderMarkReadsItsHeader) {
+  // Excel's "CSV UTF-8" export starts with EF BB BF (issue 26: "no column named 'x'").
+  const ParticleCloud c = parse_cloud_text("\xEF\xBB\xBFx,y,z,m\n1,2,3,4\n", "excel.csv");
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].mass, 4.0);
+}
+
+TEST(CloudFile, AHugeTokenIsQuotedShortInTheMessage) {
+  try {
+    (void)parse_cloud_text("1 2 3 " + std::string(1000000, '7') + "x\n", "big.xyz");
+    FAIL() << "parsed";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_LT(m.size(), 200u) << m.substr(0, 300);
+    EXPECT_NE(m.find("big.xyz:1: expected a number, found '" + std::string(80, '7') + "'... (1000001 bytes)"),
+              std::string::npos) << m.substr(0, 300);
+  }
+}
+
 }  // namespace
 }  // namespace tumble

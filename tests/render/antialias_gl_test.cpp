@@ -14,25 +14,13 @@
 #include "io/image.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
+#include "gl_test.hpp"
 #include "test_scenes.hpp"
 
 namespace tumble::render {
 namespace {
 
-class AntialiasTest : public testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      context_ = create_gl_context(default_gl_backend());
-    } catch (const std::runtime_error& e) {
-      const char* req = std::getenv("TUMBLE_REQUIRE_GL");
-      if (req && std::string(req) == "1") FAIL() << "TUMBLE_REQUIRE_GL=1: " << e.what();
-      GTEST_SKIP() << "no GL: " << e.what();
-    }
-    context_->make_current();
-  }
-  std::unique_ptr<GlContext> context_;
-};
+class AntialiasTest : public test::GlTest {};
 
 int soft_pixels(const io::Image& img) {
   std::set<int> levels;

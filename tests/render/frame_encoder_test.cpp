@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include "render/frame_encoder.hpp"
+#include "render/worker_threads.hpp"
 #include "io/png.hpp"
 
 namespace tumble::render {
@@ -39,6 +41,19 @@ TEST(FrameEncoder, WritesEveryFrameInOrderOfContent) {
     EXPECT_EQ(img.rgb[0], i * 10);
   }
   fs::remove_all(dir);
+}
+
+TEST(FrameEncoder, ThreadsAndQueueFollowTheJobs) {
+  const FrameEncoder three(3);
+  EXPECT_EQ(three.threads(), 3);
+  EXPECT_EQ(three.capacity(), 6u);  // two frames a worker
+  EXPECT_EQ(FrameEncoder(2, 5).capacity(), 5u);
+  ::setenv("TUMBLE_JOBS", "4", 1);
+  const FrameEncoder from_env;
+  ::unsetenv("TUMBLE_JOBS");
+  EXPECT_EQ(from_env.threads(), 4);
+  EXPECT_EQ(from_env.capacity(), 8u);
+  EXPECT_EQ(FrameEncoder().threads(), worker_threads());
 }
 
 TEST(FrameEncoder, PropagatesWriteErrors) {

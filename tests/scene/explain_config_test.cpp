@@ -67,7 +67,7 @@ labels = true
 overlay = ["time", "energy"]
 [title]
 text = "Flip"
-duration = 2
+hold = 2
 [[views]]
 kind = "world"
 viewport = [0, 0, 0.5, 1]
@@ -98,7 +98,34 @@ time_scale = 0.1
   EXPECT_EQ(e.captions[0].text, "spin");
   ASSERT_EQ(e.slow_motion.size(), 1u);
   EXPECT_EQ(e.title.text, "Flip");
-  EXPECT_EQ(frame_clock(s, 30).count(), 1 + 30 * (1.0 / 0.5 + 0.5 / 0.1 + 0.5 / 0.5));
+  EXPECT_EQ(frame_clock(s, 30).count(), 1 + 30 * (2 + 1.0 / 0.5 + 0.5 / 0.1 + 0.5 / 0.5));  // hold, then the run
+}
+
+// Issue 22: a view's camera, the keys' switch and the principal-axis series.
+TEST(ExplainConfig, ReadsViewCamerasKeysAndPrincipalSeries) {
+  const Scene s = load(R"(
+[draw]
+key = false
+[[views]]
+kind = "momentum_sphere"
+camera = { azimuth = 40, elevation = 10, distance = 6, follow = false }
+[[views]]
+kind = "plot"
+)");
+  const ExplainConfig& e = s.render.explain;
+  EXPECT_FALSE(e.key);
+  ASSERT_EQ(e.views.size(), 2u);
+  EXPECT_EQ(e.views[0].camera.azimuth_deg, 40.0);
+  EXPECT_EQ(e.views[0].camera.elevation_deg, 10.0);
+  EXPECT_EQ(e.views[0].camera.distance, 6.0);
+  EXPECT_EQ(e.views[0].camera.follow, false);
+  EXPECT_EQ(e.views[1].series, (std::vector<std::string>{"w1", "w2", "w3"}));  // ω₁ ω₂ ω₃ by default
+  EXPECT_TRUE(load("[[views]]\nkind = \"world\"\n").render.explain.key);   // keys on by default
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ncamera = { azimuth = 3 }\n").find("views[0].camera"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"poinsot\"\ncamera = { elevation = 95 }\n").find("elevation"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"body_frame\"\ncamera = { zoom = 2 }\n").find("zoom"), std::string::npos);
 }
 
 TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {
@@ -113,7 +140,7 @@ TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {
             std::string::npos);
   EXPECT_NE(error_of("[output]\ntime_scale = 0\n").find("output.time_scale"), std::string::npos);
   EXPECT_NE(error_of("[draw]\noverlay = [\"time\", \"fps\"]\n").find("draw.overlay"), std::string::npos);
-  EXPECT_NE(error_of("[title]\nduration = 2\n").find("title.text"), std::string::npos);
+  EXPECT_NE(error_of("[title]\nhold = 2\n").find("title.text"), std::string::npos);
 }
 
 }  // namespace

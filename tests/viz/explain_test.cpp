@@ -66,7 +66,7 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
     in.omega_world_history.push_back(omega_world(b.model, s));
   }
   View v;
-  build_poinsot(v, in, 14.0f);
+  build_poinsot(v, in);
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
   const double scale = 1.0 / p.semi_axes.maxCoeff();
   // The dot sits on the contact point; the herpolhode (last polyline) lies in the plane.
@@ -75,11 +75,56 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
   const PolylineItem& herpolhode = v.polylines.back();
   ASSERT_EQ(herpolhode.points.size(), states.size());
   for (const glm::dvec3& x : herpolhode.points)
-    EXPECT_NEAR(Eigen::Vector3d(x.x, x.y, x.z).dot(p.normal), p.plane_distance * scale, 1e-9);
+    EXPECT_NEAR(Eigen::Vector3d(x.x, x.y, x.z).dot(p.normal), p.plane_distance * scale - kHerpolhodeLift, 1e-9);
   bool omega_arrow = false;
   for (const ArrowItem& a : v.arrows)
     if (a.color == kOmegaColor) omega_arrow = glm::length(a.vector - dot) < 1e-12;
   EXPECT_TRUE(omega_arrow);
+}
+
+// Issue 22 §6: a shaded translucent ellipsoid on an opaque plane, seen from
+// well above the plane, with its curves named inside the view.
+TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
+  const Tumbler b;
+  const auto states = b.run(40, 0.05);
+  PoinsotInput in{states.back().q, b.model.inertia, states.back().L, {}, {}, ""};
+  for (const BodyState& s : states) {
+    in.omega_principal_history.push_back(omega_principal(b.model, s));
+    in.omega_world_history.push_back(omega_world(b.model, s));
+  }
+  in.width_px = 640, in.height_px = 360;
+  View v;
+  build_poinsot(v, in);
+  const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
+  const double scale = 1.0 / p.semi_axes.maxCoeff();
+  ASSERT_EQ(v.surfaces.size(), 2u);
+  const SurfaceItem &ellipsoid = v.surfaces[0], &plane = v.surfaces[1];
+  EXPECT_LT(ellipsoid.color.a, 0.6f);
+  EXPECT_EQ(plane.color.a, 1.0f);
+  // The ellipsoid's model maps the unit sphere onto it: the contact point is on it.
+  const Eigen::Vector3d touch = p.contact * scale;
+  const glm::dvec4 unit = glm::inverse(ellipsoid.model) * glm::dvec4(touch.x(), touch.y(), touch.z(), 1);
+  EXPECT_NEAR(glm::length(glm::dvec3(unit)), 1.0, 1e-9);
+  // The plane's centre is the foot of L, its normal L̂.
+  const glm::dvec3 n = glm::normalize(glm::dvec3(plane.model[2]));
+  EXPECT_LT(glm::length(n - glm::dvec3(p.normal.x(), p.normal.y(), p.normal.z())), 1e-12);
+  EXPECT_NEAR(glm::dot(glm::dvec3(plane.model[3]), n), p.plane_distance * scale, 1e-12);
+  // The camera looks down on the plane from at least 30° above it.
+  const glm::dvec3 eye = glm::normalize(v.camera.position - v.camera.target);
+  EXPECT_GT(glm::dot(eye, -n), std::sin(30.0 * 3.14159265 / 180));
+  // The key's entries (the plane's included), inside the viewport.
+  for (const std::string name : {"L:", "ω:", "polhode:", "herpolhode:", "invariable plane"}) {
+    bool found = false;
+    for (const TextItem& t : v.texts)
+      if (t.text.rfind(name, 0) == 0) {
+        found = true;
+        EXPECT_GE(t.position_px.x, 0.0f) << name;
+        EXPECT_LE(t.position_px.x + approx_text_width(t.text, t.size_px), 640.0f) << name;
+        EXPECT_GE(t.position_px.y, 0.0f) << name;
+        EXPECT_LE(t.position_px.y + t.size_px, 360.0f) << name;
+      }
+    EXPECT_TRUE(found) << name;
+  }
 }
 
 TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
@@ -89,7 +134,7 @@ TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
   for (const BodyState& s : b.run(80, 0.05)) {
     MomentumSphereInput in{I, momentum_body(s), {}, two_E, ""};
     View v;
-    build_momentum_sphere(v, in, 14.0f);
+    build_momentum_sphere(v, in);
     const glm::dvec3 d = v.points.back().position;  // in units of |L|
     const Eigen::Vector3d pi = L * Eigen::Vector3d(d.x, d.y, d.z);
     EXPECT_NEAR(pi.norm() / L, 1.0, 1e-9);
@@ -127,13 +172,17 @@ TEST(MomentumSphere, SeparatrixPassesThroughTheIntermediateAxis) {
     }
     EXPECT_TRUE(plus && minus);
   }
-  // The view draws it: a red polyline through +e2 (units of |L|).
+  // The view draws it: a polyline through +e2 (units of |L|) in the separatrix's colour, not e1's.
   View v;
-  build_momentum_sphere(v, {I, Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""}, 14.0f);
+  build_momentum_sphere(v, {I, Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""});
   int through = 0;
   for (const PolylineItem& p : v.polylines)
-    if (p.color.r > 0.8f && p.color.g < 0.2f)
-      for (const glm::dvec3& x : p.points) through += glm::length(x - glm::dvec3(0, 1, 0)) < 1e-12;
+    if (p.name == "separatrix")
+      for (const glm::dvec3& x : p.points) {
+        through += glm::length(x - glm::dvec3(0, 1, 0)) < 1e-12;
+        EXPECT_EQ(p.color, color_of(Meaning::separatrix, p.color.a));
+        EXPECT_NE(glm::vec3(p.color), glm::vec3(kAxisColors[0]));
+      }
   EXPECT_EQ(through, 2);
 }
 
@@ -172,6 +221,40 @@ TEST(Captions, FadeInHoldFadeOut) {
   const TextItem c = caption_item("hello", 0.5f, 1280, 720);
   EXPECT_EQ(c.color.a, 0.5f);
   EXPECT_GT(c.position_px.y, 600.0f);
+}
+
+TEST(Captions, SpeedBadgeSitsInTheCornerClearOfTheCaption) {
+  EXPECT_FALSE(speed_badge("", true, 1280, 720));
+  const auto b = speed_badge("×1/8", true, 1280, 720);
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->text, "×1/8 slow motion");
+  EXPECT_LE(b->position_px.y + b->size_px, 720.0f);
+  EXPECT_LE(b->position_px.x + approx_text_width(b->text, b->size_px), 1280.0f);
+  EXPECT_GT(b->position_px.x, 640.0f);
+  // A long caption shown with it wraps narrower, its lines and backdrop left of the badge.
+  std::string text = "a long caption";
+  for (int i = 0; i < 40; ++i) text += " with words";
+  const std::vector<TextItem> lines = caption_items(text, 1.0f, 1280, 720, 1280.0f - b->position_px.x);
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_LT(lines.front().backdrop_px.z, b->position_px.x);
+  for (const TextItem& t : lines) EXPECT_LT(t.position_px.x + approx_text_width(t.text, t.size_px), b->position_px.x);
+}
+
+TEST(StripChart, SlowedStretchesAreShadedBandsWithTheirSpeed) {
+  StripChartInput in;
+  in.t0 = 0, in.t1 = 6, in.lo = -1, in.hi = 1;
+  in.shaded = {{1.5, 2.5, "×1/8"}};
+  View v;
+  build_strip_chart(v, in, 800, 200, 14.0f);
+  ASSERT_EQ(v.surfaces.size(), 1u);
+  const ChartMap m(in, 800, 200, 14.0f);
+  const glm::dvec3 centre(v.surfaces[0].model[3]), half_t(v.surfaces[0].model[0]);
+  EXPECT_NEAR(centre.x - half_t.x, m.at(1.5, 0).x, 1e-12);
+  EXPECT_NEAR(centre.x + half_t.x, m.at(2.5, 0).x, 1e-12);
+  EXPECT_LT(v.surfaces[0].color.a, 0.5f);
+  bool label = false;
+  for (const TextItem& t : v.texts) label = label || t.text == "×1/8";
+  EXPECT_TRUE(label);
 }
 
 }  // namespace

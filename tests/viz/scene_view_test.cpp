@@ -109,3 +109,20 @@ TEST(SceneView, AutoCameraSeesEverything) {
 
 }  // namespace
 }  // namespace tumble::viz
+
+namespace {
+
+TEST(ViewUp, AnUpAlongTheViewFallsBackAndAnyOtherIsKept) {
+  tumble::viz::Camera c;
+  c.position = {0, 0, 5};
+  c.target = {0, 0, 0};
+  c.up = {0, 0, 1};  // a camera following a body from straight above
+  EXPECT_EQ(tumble::viz::view_up(c), glm::dvec3(0, 1, 0));
+  c.position = {0, 3, 0};
+  c.up = {0, -1, 0};
+  EXPECT_EQ(tumble::viz::view_up(c), glm::dvec3(1, 0, 0));
+  c.up = {0.3, 1, 0};
+  EXPECT_EQ(tumble::viz::view_up(c), glm::dvec3(0.3, 1, 0));
+}
+
+}  // namespace

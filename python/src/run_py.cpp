@@ -1,0 +1,115 @@
+// tumble.simulate (scene::sample_run: the loop of `tumble simulate`) and
+// tumble.export_gltf. Trajectory arrays are views of the C++ vectors.
+#include <memory>
+#include <optional>
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "bindings.hpp"
+#include "core/format.hpp"
+#include "core/integrator.hpp"
+#include "core/propagator.hpp"
+#include "scene/sampled_run.hpp"
+#ifdef TUMBLE_HAVE_GLTF
+#include "gltf/gltf_export.hpp"
+#endif
+
+namespace tumble::py_bind {
+
+namespace {
+
+using scene::Trajectory;
+
+/// A (n, cols) read-only view of one of the trajectory's columns.
+template <std::vector<double> Trajectory::*member, std::size_t cols>
+py::array_t<double> column(py::object self) {
+  const Trajectory& t = self.cast<const Trajectory&>();
+  return view((t.*member).data(), t.size(), cols, cols ? cols * sizeof(double) : sizeof(double), self);
+}
+
+/// The scene's [simulation] with simulate()'s method and dt, checked as the scene reader checks them.
+scene::SimulationConfig run_config(const scene::Scene& s, const std::optional<std::string>& method,
+                                   std::optional<double> dt) {
+  scene::SimulationConfig sim = s.simulation;
+  if (method && *method == "auto") {
+    sim.automatic = true;
+  } else if (method) {
+    const std::optional<Method> m = parse_method(*method);
+    if (!m) throw InputError("method: expected auto or " + method_list() + ", found \"" + *method + "\"");
+    sim.automatic = false;
+    sim.step.method = *m;
+    sim.tolerance.reset();  // as `simulate --method NAME`: the named method wins
+  }
+  if (dt) {
+    if (!std::isfinite(*dt) || *dt <= 0) throw InputError("dt: expected a finite number > 0 (s)");
+    if (*dt > sim.duration) throw InputError("dt: expected at most the duration (" + std::to_string(sim.duration) + " s)");
+    sim.step.dt = *dt;
+  }
+  if (sim.duration / sim.step.dt > kMaxRunSteps) throw InputError("dt: the run would take more than " + format_number(kMaxRunSteps, 3) + " steps");
+  return sim;
+}
+
+}  // namespace
+
+void add_run(py::module_& m) {
+  py::class_<Trajectory, std::shared_ptr<Trajectory>>(
+      m, "Trajectory",
+      "One body's samples in the CSV's units and frames (read-only numpy views): t (n,) s; c (n, 3) m; q (n, 4) "
+      "world ← cloud (w, x, y, z); v (n, 3) m/s; omega_world, omega_body (n, 3) rad/s; L (n, 3) kg·m²/s; energy "
+      "(n,) J.")
+      .def_readonly("body", &Trajectory::body)
+      .def_readonly("method", &Trajectory::method)
+      .def_readonly("step", &Trajectory::step)
+      .def_readonly("steps", &Trajectory::steps)
+      .def_readonly("auto_reason", &Trajectory::auto_reason)
+      .def_property_readonly("t", column<&Trajectory::t, 0>)
+      .def_property_readonly("c", column<&Trajectory::c, 3>)
+      .def_property_readonly("q", column<&Trajectory::q, 4>)
+      .def_property_readonly("v", column<&Trajectory::v, 3>)
+      .def_property_readonly("omega_world", column<&Trajectory::omega_world, 3>)
+      .def_property_readonly("omega_body", column<&Trajectory::omega_body, 3>)
+      .def_property_readonly("L", column<&Trajectory::L, 3>)
+      .def_property_readonly("energy", column<&Trajectory::energy, 0>)
+      .def("__len__", &Trajectory::size)
+      .def("__repr__", [](const Trajectory& t) {
+        return "<tumble.Trajectory '" + t.body + "': " + std::to_string(t.size()) + " samples, " + t.method + ", " +
+               t.step + ">";
+      });
+
+  m.def(
+      "simulate",
+      [](const scene::Scene& s, const std::optional<std::string>& method, std::optional<double> dt,
+         const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& times) {
+        const scene::SimulationConfig sim = run_config(s, method, dt);
+        std::vector<double> t;
+        if (times) t.assign(times->data(), times->data() + times->size());
+        else t = scene::sample_times(sim.duration, sim.fps);
+        std::vector<Trajectory> out;
+        {
+          py::gil_scoped_release nogil;
+          out = scene::sample_run(s, sim, t, check_signals);
+        }
+        std::vector<std::shared_ptr<Trajectory>> list;
+        for (Trajectory& x : out) list.push_back(std::make_shared<Trajectory>(std::move(x)));
+        return list;
+      },
+      py::arg("scene"), py::arg("method") = py::none(), py::arg("dt") = py::none(), py::arg("times") = py::none(),
+      "Integrates every body (method and dt default to the scene's) and samples it at `times` (s; default "
+      "k/fps up to the duration, as `tumble simulate`). Returns one Trajectory per body, equal to the CSV's rows. "
+      "Releases the GIL; Ctrl-C raises KeyboardInterrupt.");
+
+#ifdef TUMBLE_HAVE_GLTF
+  m.def(
+      "export_gltf",
+      [](const scene::Scene& s, const std::filesystem::path& path, std::optional<double> fps) {
+        if (fps && (!std::isfinite(*fps) || *fps <= 0)) throw InputError("fps: expected a finite number > 0");
+        py::gil_scoped_release nogil;
+        gltf::export_gltf(s, path, fps.value_or(0), "path");
+      },
+      py::arg("scene"), py::arg("path"), py::arg("fps") = py::none(),
+      "Writes the simulated scene as glTF 2.0 (.glb or .gltf), as `tumble export --gltf`.");
+#endif
+}
+
+}  // namespace tumble::py_bind

@@ -1,0 +1,63 @@
+#include "scene/sampled_run.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/dynamics.hpp"
+#include "core/propagator.hpp"
+
+namespace tumble::scene {
+
+namespace {
+
+void append(std::vector<double>& to, const Eigen::Vector3d& x) { to.insert(to.end(), {x.x(), x.y(), x.z()}); }
+
+/// The columns of io::append_trajectory_row and `simulate`'s extra ω_body, from the same functions.
+void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const BodyState& s) {
+  const Eigen::Quaterniond q = cloud_orientation(m, s);
+  tr.t.push_back(t);
+  append(tr.c, s.c);
+  tr.q.insert(tr.q.end(), {q.w(), q.x(), q.y(), q.z()});
+  append(tr.v, velocity(m, s));
+  append(tr.omega_world, omega_world(m, s));
+  append(tr.omega_body, omega_body(m, s));
+  append(tr.L, s.L);
+  tr.energy.push_back(total_energy(m, s));
+}
+
+}  // namespace
+
+void check_sample_times(std::span<const double> times) {
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    if (!std::isfinite(times[k]) || times[k] < 0)
+      throw InputError("times[" + std::to_string(k) + "]: expected a finite time >= 0 s, found " +
+                       std::to_string(times[k]));
+    if (k > 0 && times[k] < times[k - 1])
+      throw InputError("times[" + std::to_string(k) + "]: expected times in increasing order, found " +
+                       std::to_string(times[k]) + " after " + std::to_string(times[k - 1]));
+  }
+}
+
+std::vector<Trajectory> sample_run(const Scene& s, const SimulationConfig& sim, std::span<const double> times,
+                                   const std::function<void()>& poll) {
+  check_sample_times(times);
+  std::vector<Trajectory> out;
+  for (const Body& b : s.bodies) {
+    const MethodPlan plan = plan_method(sim, b);
+    Propagator p(b.model, b.initial, plan.config);
+    Trajectory tr;
+    tr.body = b.name;
+    tr.method = std::string(method_name(plan.config.method));
+    tr.step = step_label(plan.config, b.model);
+    tr.auto_reason = plan.reason;
+    for (double t : times) {
+      append_sample(tr, t, b.model, t <= p.time() ? p.state() : p.advance_to(t));
+      if (poll) poll();
+    }
+    tr.steps = p.steps();
+    out.push_back(std::move(tr));
+  }
+  return out;
+}
+
+}  // namespace tumble::scene

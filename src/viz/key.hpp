@@ -1,0 +1,56 @@
+// A view's key: each drawn element with its colour and meaning, stacked in a
+// column on a pale backdrop (GL-free: text items the renderer draws as is).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "viz/draw_list.hpp"
+#include "viz/palette.hpp"
+#include "viz/text_layout.hpp"
+
+namespace tumble::viz {
+
+/// How an element looks in the key: a line (curves, arrows), a dot or a block (bodies).
+enum class Swatch { line, dot, block };
+
+struct KeyEntry {
+  Swatch swatch;
+  std::vector<Color> colors;  ///< one swatch each (e.g. the three axes on one line)
+  std::string text;           ///< its meaning, e.g. "L, angular momentum"
+};
+
+/// The entry of a palette meaning (its colour, its usual swatch), with `text`.
+KeyEntry key_entry(Meaning m, std::string text);
+
+struct DrawOptions;
+
+/// The key of a view of bodies: the axes, L and ω as drawn (`d`), then each
+/// body by name in its colour.
+std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pair<std::string, Color>>& bodies);
+
+/// Size of the key's backdrop for `entries` at `size_px`, px.
+glm::vec2 key_size(const std::vector<KeyEntry>& entries, float size_px);
+
+/// Adds the key with its backdrop's top-left corner at `top_left` (viewport
+/// px) and returns the backdrop's box.
+Box add_key(View& view, const std::vector<KeyEntry>& entries, glm::vec2 top_left, float size_px);
+
+/// Adds the key at the top-right corner of a `width_px` wide view, `top_px`
+/// below its top, and returns its box.
+Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float top_px, float size_px);
+
+/// Adds the key at the bottom-right corner of a `width_px` × `height_px` view,
+/// never above `top_px`, and returns its box.
+Box add_key_bottom_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px,
+                         float top_px, float size_px);
+
+/// Adds the key in the first corner of a `width_px` × `height_px` view
+/// (bottom-right, bottom-left, top-right, each below `top_px`) where it covers
+/// none of the `avoid` boxes (the bodies on screen, the view's text), else
+/// where it covers the least of them; returns its box.
+Box add_key_clear(View& view, const std::vector<KeyEntry>& entries, float width_px, float height_px, float top_px,
+                  float size_px, const std::vector<Box>& avoid);
+
+}  // namespace tumble::viz

@@ -1,0 +1,60 @@
+// One colour per meaning, in every view and in the plot (docs/colours.md
+// holds the same table for readers; tests/viz/palette_test checks they agree).
+// Principal axes follow the moments' order: e₁ (smallest moment) red, e₂
+// green, e₃ (largest) blue; nothing else uses those hues.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+enum class Meaning {
+  axis1, axis2, axis3,   ///< principal axes e₁, e₂, e₃ (I₁ < I₂ < I₃) and ω₁, ω₂, ω₃ in the plot
+  L,                     ///< angular momentum (world), and the invariable plane's normal
+  omega,                 ///< angular velocity ω
+  momentum_point,        ///< Π = Rᵀ L on the momentum sphere and its path
+  polhode,               ///< this body's polhode (and its energy ellipsoid)
+  herpolhode,            ///< ω's tip on the invariable plane
+  separatrix,            ///< the level 2E = |L|²/I₂ through ±e₂
+  other_levels,          ///< polhodes of other energies
+  plane,                 ///< the invariable plane
+  ellipsoid,             ///< Poinsot's inertia ellipsoid
+  ink,                   ///< text, frames, playhead
+  count
+};
+
+struct MeaningColor {
+  Meaning meaning;
+  std::string_view name;      ///< as in docs/colours.md
+  std::string_view colour;    ///< the colour's common name
+  Color rgba;
+};
+
+/// The table, in Meaning order.
+inline const std::array<MeaningColor, static_cast<std::size_t>(Meaning::count)> kPalette = {{
+    {Meaning::axis1, "e1", "red", {0.86f, 0.15f, 0.15f, 1}},
+    {Meaning::axis2, "e2", "green", {0.12f, 0.62f, 0.20f, 1}},
+    {Meaning::axis3, "e3", "blue", {0.15f, 0.30f, 0.90f, 1}},
+    {Meaning::L, "L", "orange", {0.95f, 0.60f, 0.05f, 1}},
+    {Meaning::omega, "omega", "purple", {0.60f, 0.20f, 0.75f, 1}},
+    {Meaning::momentum_point, "momentum_point", "near-black", {0.10f, 0.10f, 0.15f, 1}},
+    {Meaning::polhode, "polhode", "teal", {0.00f, 0.55f, 0.58f, 1}},
+    {Meaning::herpolhode, "herpolhode", "brown", {0.50f, 0.30f, 0.12f, 1}},
+    {Meaning::separatrix, "separatrix", "magenta", {0.85f, 0.10f, 0.65f, 1}},
+    {Meaning::other_levels, "other_levels", "light grey", {0.55f, 0.56f, 0.60f, 1}},
+    {Meaning::plane, "plane", "grey", {0.45f, 0.47f, 0.52f, 1}},
+    {Meaning::ellipsoid, "ellipsoid", "slate", {0.38f, 0.44f, 0.62f, 1}},
+    {Meaning::ink, "ink", "near-black", {0.12f, 0.13f, 0.16f, 1}},
+}};
+
+/// The colour of `m`, with opacity `alpha`.
+inline Color color_of(Meaning m, float alpha = 1.0f) {
+  Color c = kPalette[static_cast<std::size_t>(m)].rgba;
+  c.a = alpha;
+  return c;
+}
+
+}  // namespace tumble::viz

@@ -1,0 +1,97 @@
+#include "viz/sphere_camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+namespace tumble::viz {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// Unit vector ⊥ `d` nearest `preferred` (or, when preferred ∥ d, nearest e1).
+Eigen::Vector3d perpendicular(const Eigen::Vector3d& d, const Eigen::Vector3d& preferred) {
+  Eigen::Vector3d u = preferred - preferred.dot(d) * d;
+  if (u.norm() < 1e-3) u = Eigen::Vector3d::UnitX() - d.x() * d;
+  return u.normalized();
+}
+
+// Turns unit `a` towards unit `b` by the fraction `f` of the angle between them.
+Eigen::Vector3d slerp(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double f) {
+  const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+  if (angle < 1e-12) return b;
+  const Eigen::Vector3d axis = a.cross(b);
+  if (axis.norm() < 1e-12) return a;  // opposite: no preferred turn; the lag clamp below cannot be hit
+  return Eigen::AngleAxisd(f * angle, axis.normalized()) * a;
+}
+
+}  // namespace
+
+std::vector<SpherePose> follow_track(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pi,
+                                     const SphereCameraSettings& s) {
+  std::vector<SpherePose> out;
+  out.reserve(pi.size());
+  const Eigen::Vector3d e3 = Eigen::Vector3d::UnitZ();
+  const double max_lag = s.max_lag_deg * kDeg;
+  for (std::size_t j = 0; j < pi.size(); ++j) {
+    const Eigen::Vector3d target = pi[j].norm() > 0 ? Eigen::Vector3d(pi[j].normalized()) : Eigen::Vector3d::UnitY();
+    SpherePose p;
+    if (j == 0) {
+      p.dir = target;
+      p.up = perpendicular(target, e3);
+      out.push_back(p);
+      continue;
+    }
+    const SpherePose& prev = out.back();
+    const double dt = std::max(0.0, t[j] - t[j - 1]);
+    const double f = s.follow_s > 0 ? 1 - std::exp(-dt / s.follow_s) : 1.0;
+    p.dir = slerp(prev.dir, target, f);
+    // Never more than max_lag behind Π̂: keeps Π on the near side at any speed.
+    const double lag = std::acos(std::clamp(p.dir.dot(target), -1.0, 1.0));
+    if (lag > max_lag) p.dir = slerp(p.dir, target, 1 - max_lag / lag);
+    // Up carried by the smallest rotation, then relaxed (1 s) towards +e3 as far as e3 ⊥ dir exists.
+    const Eigen::Vector3d carried = Eigen::Quaterniond::FromTwoVectors(prev.dir, p.dir) * prev.up;
+    const Eigen::Vector3d e3_perp = e3 - e3.dot(p.dir) * p.dir;
+    const double weight = std::min(1.0, dt / 1.0) * e3_perp.squaredNorm();
+    p.up = perpendicular(p.dir, carried + weight * e3_perp);
+    out.push_back(p);
+  }
+  return out;
+}
+
+Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s) {
+  const double az = s.azimuth_deg * kDeg, el = s.elevation_deg * kDeg;
+  Eigen::Vector3d dir, up;
+  if (s.follow) {
+    const Eigen::Vector3d side = pose.up.cross(pose.dir);
+    dir = std::cos(el) * (std::cos(az) * pose.dir + std::sin(az) * side) + std::sin(el) * pose.up;
+    up = pose.up;
+  } else {
+    dir = {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+    up = Eigen::Vector3d::UnitZ();
+  }
+  Camera c;
+  const Eigen::Vector3d eye = s.distance * dir.normalized();
+  c.position = {eye.x(), eye.y(), eye.z()};
+  c.target = {0, 0, 0};
+  c.up = {up.x(), up.y(), up.z()};
+  c.fov_y_deg = 2 * std::atan(1.5 / s.distance) / kDeg;  // the sphere and its axes (1.35) fill the height
+  c.near_m = 0.1 * s.distance;
+  c.far_m = 4 * s.distance;
+  return c;
+}
+
+bool hidden_by_ball(const glm::dvec3& eye, const glm::dvec3& p, double r) {
+  const glm::dvec3 d = p - eye;
+  const double len2 = glm::dot(d, d);
+  if (len2 <= 0) return false;
+  // Closest approach of the segment to the origin.
+  const double s = std::clamp(-glm::dot(eye, d) / len2, 0.0, 1.0);
+  const glm::dvec3 closest = eye + s * d;
+  return s < 1.0 && glm::dot(closest, closest) < r * r;
+}
+
+}  // namespace tumble::viz

@@ -1,0 +1,47 @@
+// The momentum sphere's camera: it follows Π so that Π and its recent path
+// stay on the near hemisphere. Its direction is Π̂ low-pass filtered in
+// simulated time (an exponential slerp with time constant `follow_s`) and
+// never more than `max_lag_deg` behind; its up vector is carried along by the
+// smallest rotation (parallel transport) and relaxes towards +e₃ where that is
+// defined. Each step is a continuous function of the samples, so the camera
+// turns smoothly and never snaps, and pose j depends only on samples 0…j: a
+// frame rendered alone equals the same frame of a full run.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+/// Where the camera looks from, principal frame: unit `dir` (centre → camera's
+/// reference point) and unit `up` ⊥ dir.
+struct SpherePose {
+  Eigen::Vector3d dir{-0.6, 0.6, 0.55};
+  Eigen::Vector3d up{0, 0, 1};
+};
+
+/// [[views]] camera of the momentum_sphere (and poinsot) views.
+struct SphereCameraSettings {
+  double azimuth_deg = 25;     ///< around `up`, from the followed direction (or from +e1 when fixed)
+  double elevation_deg = 20;   ///< above it, towards `up`
+  double distance = 5.2;       ///< in sphere radii (|L|)
+  bool follow = true;          ///< false: fixed at azimuth/elevation in the principal frame, up = +e3
+  double follow_s = 0.15;      ///< time constant of the filter, simulated s
+  double max_lag_deg = 35;     ///< the followed direction stays this close to Π̂
+};
+
+/// Poses at each sample (times `t`, s, ascending; Π in the principal frame).
+std::vector<SpherePose> follow_track(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pi,
+                                     const SphereCameraSettings& s);
+
+/// The camera at `pose` (follow) or at the fixed direction (no follow).
+Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s);
+
+/// True when the segment from `eye` to `p` passes through the ball of radius
+/// `r` at the origin (p itself outside it): p is hidden behind the ball.
+bool hidden_by_ball(const glm::dvec3& eye, const glm::dvec3& p, double r);
+
+}  // namespace tumble::viz

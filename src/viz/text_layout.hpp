@@ -1,0 +1,65 @@
+// Text sizes and boxes, GL-free: the sizes of the text roles in proportion to
+// the frame's height (a 1080p frame looks like the 540p one, scaled), line
+// widths from DejaVu Sans' advances (the renderer's font), greedy wrapping and
+// the box a TextItem covers, so layout can be checked without a GL context.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "viz/draw_list.hpp"
+#include "viz/palette.hpp"
+
+namespace tumble::viz {
+
+/// What a piece of text is for; one size per role in every view kind.
+enum class TextRole { title, subtitle, caption, view_title, key, label, tick };
+
+/// Height of `role`'s text, px, in a frame `frame_h` px high (fractions of it).
+float text_px(TextRole role, int frame_h);
+
+/// Width of the widest line of `text` at `size_px`, px (DejaVu Sans advances;
+/// '\n' breaks lines). Matches render::FontAtlas::measure to < 1 % for ASCII.
+float text_width(std::string_view text, float size_px);
+
+/// Number of lines of `text` ('\n' separated).
+int text_lines(std::string_view text);
+
+/// `text` with line breaks added between words so that no line is wider than
+/// `max_width_px` (a single word wider than that stays whole); '\n' kept.
+std::string wrap_text(std::string_view text, float size_px, float max_width_px);
+
+/// An axis-aligned box in pixels: x0, y0 top-left, x1, y1 bottom-right.
+struct Box {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  float area() const { return (x1 - x0) * (y1 - y0); }
+};
+
+/// The box `t` covers at its size (one line = size_px high).
+Box text_box(const TextItem& t);
+
+}  // namespace tumble::viz
+
+namespace tumble::viz {
+
+/// Adds `title` at the top-left of a view `width_px` wide, at the view-title
+/// size of a frame `frame_h` high, wrapped to the view's width. Returns the y
+/// (px) just below it, where the view's other text may start (0: no title).
+float add_view_title(View& view, const std::string& title, float width_px, int frame_h);
+
+}  // namespace tumble::viz
+
+namespace tumble::viz {
+
+/// True for text that names a moving thing (names starting "label" or
+/// "axis_label"): it may move to stay clear of the view's other text.
+bool is_label(const TextItem& t);
+
+/// Moves each label of `view` (width × height px) up or down by up to two
+/// lines so that it overlaps no other text, backdrop, named point (the Π
+/// dot, ± 3 % of the view's height) or earlier label and
+/// stays inside the view; a label with no such place is left out.
+void settle_labels(View& view, float width_px, float height_px);
+
+}  // namespace tumble::viz

@@ -1,0 +1,27 @@
+// Issue 22 §5: `tumble info` lists each body's flips (the events "flip N"
+// counts) and the frames with the simulated time each shows.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace {
+
+class InfoCli : public Cli {};
+
+// `tumble info` lists the flips and the frames with the time each shows.
+TEST_F(InfoCli, ListsFlipsAndTheFramesClock) {
+  const Result r = run("info " + scene("dzhanibekov_explained.toml"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("flips (e2 ⊥ L)     1.7999, 5.0887 s in 6 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("frames 616 at 30 fps"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0-74     video   0.000-2.467   s  title card, t = 0 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("t = 1.2999-2.2958 s  ×1/8"), std::string::npos) << r.out;
+  const Result j = run("info --json " + scene("dzhanibekov_explained.toml"));
+  ASSERT_EQ(j.code, 0) << j.err;
+  EXPECT_NE(j.out.find("\"flip_times\": ["), std::string::npos) << j.out;
+  EXPECT_NE(j.out.find("\"count\": 616"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,98 @@
+// The adaptive pairs (rk45 = Dormand–Prince 5(4), dop853) through their own
+// integrators, against the closed form: the delivered orientation error stays
+// within 10× of rtol from 1e-4 to 1e-10 (tolerance proportionality) and falls
+// with it; one evaluation per stage (FSAL) and none for outputs on step ends;
+// dense output that neither moves the steps nor loses accuracy.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/embedded_rk.hpp"
+#include "core/free_rotation_exact.hpp"
+#include "core/integrator.hpp"
+#include "core/quaternion.hpp"
+#include "reference_problem.hpp"
+#include "test_helpers.hpp"
+
+namespace tumble {
+namespace {
+
+struct PairCase {
+  Method method;
+  long evals_per_try;  // stages after the first, the FSAL one included
+  long dense_evals;    // extra stages for a step's dense output
+};
+
+class EmbeddedRk : public ::testing::TestWithParam<PairCase> {
+ protected:
+  std::unique_ptr<AdaptiveIntegrator> make(const RigidBodyModel& m, const BodyState& s0, double rtol, double t_stop) const {
+    AdaptiveOptions o;
+    o.rtol = rtol;
+    o.atol = rtol;
+    o.t_stop = t_stop;
+    return method_info(GetParam().method).adaptive(m, s0, 0.0, o);
+  }
+  void check_proportional(const RigidBodyModel& m, const BodyState& s0, double t_end) const {
+    const Eigen::Quaterniond exact = FreeRotationExact(m.inertia, s0.q, s0.L).orientation(t_end);
+    double prev = INFINITY;
+    for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+      const double e = rotation_angle_between(make(m, s0, rtol, t_end)->advance_to(t_end).q, exact);
+      std::printf("%s t_end=%g rtol=%.0e: error %.3e rad (%.2f x rtol)\n", testing::name_of(GetParam().method).c_str(),
+                  t_end, rtol, e, e / rtol);
+      EXPECT_LT(e, prev) << "rtol=" << rtol;
+      EXPECT_LT(e, 10 * rtol) << "rtol=" << rtol;
+      EXPECT_GT(e, 0.1 * rtol) << "rtol=" << rtol;
+      prev = e;
+    }
+  }
+};
+
+TEST_P(EmbeddedRk, ToleranceProportionalOnTheTHandle) {
+  const RigidBodyModel m = testing::reference_model();
+  check_proportional(m, testing::reference_state(m), 10.0);
+}
+
+TEST_P(EmbeddedRk, ToleranceProportionalOnAGenericBody) {
+  const RigidBodyModel m = testing::body_with_moments({0.7, 1.3, 2.2});
+  const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond(0.3, -0.5, 0.7, 0.2), {0.3, 0.5, 4.0});
+  check_proportional(m, s0, 10.0);
+}
+
+// First-same-as-last: k1 of a step is the last stage of the one before, so a
+// run costs 2 evaluations to start (k1, the initial-step probe) and then
+// evals_per_try per step tried; an output on a step's end costs none.
+TEST_P(EmbeddedRk, OneEvaluationPerStageAndNoneForOutputsOnStepEnds) {
+  const RigidBodyModel m = testing::reference_model();
+  const auto r = make(m, testing::reference_state(m), 1e-8, 10.0);
+  r->advance_to(10.0);
+  EXPECT_GT(r->accepted(), 10);
+  EXPECT_EQ(r->evaluations(), 2 + GetParam().evals_per_try * (r->accepted() + r->rejected()));
+}
+
+// Sampling many times in between must not change where the integrator ends up
+// (dense output never shortens a step), every sample is accurate, and only a
+// step holding samples pays for its dense output.
+TEST_P(EmbeddedRk, DenseOutputDoesNotPerturbSteps) {
+  const RigidBodyModel m = testing::reference_model();
+  const BodyState s0 = testing::reference_state(m);
+  const auto direct = make(m, s0, 1e-10, INFINITY), sampled = make(m, s0, 1e-10, INFINITY);
+  const FreeRotationExact ex(m.inertia, s0.q, s0.L);
+  for (int k = 1; k <= 60; ++k) {
+    const double t = k / 60.0;
+    const BodyState s = sampled->advance_to(t);
+    EXPECT_LT(rotation_angle_between(s.q, ex.orientation(t)), 1e-8) << "t=" << t;
+  }
+  const BodyState a = direct->advance_to(1.0), b = sampled->advance_to(1.0);
+  EXPECT_EQ(direct->accepted(), sampled->accepted());
+  EXPECT_EQ(a.q.coeffs(), b.q.coeffs());
+  EXPECT_EQ(a.L, b.L);
+  EXPECT_LE(sampled->evaluations() - direct->evaluations(), GetParam().dense_evals * sampled->accepted());
+}
+
+INSTANTIATE_TEST_SUITE_P(Pairs, EmbeddedRk,
+                         ::testing::Values(PairCase{Method::rk45, 6, 0}, PairCase{Method::dop853, 12, 3}),
+                         [](const auto& info) { return testing::name_of(info.param.method); });
+
+}  // namespace
+}  // namespace tumble

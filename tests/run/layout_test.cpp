@@ -1,0 +1,162 @@
+// Issue 22 §9: what a viewer sees, from the layout report (no GL, no pixels).
+// Every frame of each shipped explanatory scene (every scenes/*.toml with
+// [[views]]) at 640×360, 960×540 and 1920×1080: Π always visible (but under
+// the title card, which covers the animation on purpose), no two
+// visible text boxes overlap, no text under 1.8 % of the frame height, and
+// text at 1080p twice its 540p height (± 15 %).
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "run/render_job.hpp"
+#include "render/layout_report.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using tumble::render::LayoutItem;
+
+struct Size {
+  int w, h;
+};
+constexpr Size kSizes[] = {{640, 360}, {960, 540}, {1920, 1080}};
+
+// The shipped scenes with laid-out views; at least the two of issue 22.
+std::vector<fs::path> explained_scenes() {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(fs::path(TUMBLE_SOURCE_DIR) / "scenes")) {
+    if (e.path().extension() != ".toml") continue;
+    std::ifstream in(e.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    if (text.str().find("[[views]]") != std::string::npos) out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Per scene and size: every frame's layout.
+struct Layouts {
+  std::vector<std::vector<LayoutItem>> frames;
+};
+
+const std::map<std::string, std::map<int, Layouts>>& all_layouts() {
+  static const auto layouts = [] {
+    std::map<std::string, std::map<int, Layouts>> out;
+    for (const fs::path& p : explained_scenes()) {
+      const tumble::scene::Scene s = tumble::scene::load_scene(p);
+      const double fps = s.render.output.fps;
+      const long count = tumble::scene::frame_clock(s, fps).count();
+      const std::vector<tumble::run::Run> runs = tumble::run::simulate_runs(s, count, fps);
+      for (const Size& z : kSizes) {
+        const tumble::run::FrameBuilder fb(s, runs, fps, z.w, z.h);
+        Layouts& l = out[p.stem().string()][z.h];
+        for (long k = 0; k < count; ++k) l.frames.push_back(tumble::render::layout_items(fb.build(k), z.w, z.h));
+      }
+    }
+    return out;
+  }();
+  return layouts;
+}
+
+bool is_text(const LayoutItem& i) { return i.kind == "text" || i.kind == "key"; }
+
+void covers_the_shipped_scenes() {
+  const auto& l = all_layouts();
+  EXPECT_TRUE(l.count("dzhanibekov_explained"));
+  EXPECT_TRUE(l.count("poinsot"));
+}
+
+void momentum_point_always_visible() {
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      int hidden = 0, seen = 0;
+      std::string first;
+      for (std::size_t k = 0; k < layouts.frames.size(); ++k) {
+        // The title card hides the animation on purpose while it is up.
+        const auto& f = layouts.frames[k];
+        if (std::any_of(f.begin(), f.end(), [](const LayoutItem& i) { return i.name == "title" && i.visible; })) continue;
+        for (const LayoutItem& i : f)
+          if (i.name == "momentum_point") {
+            ++seen;
+            if (!i.visible && hidden++ == 0) first = "frame " + std::to_string(k) + " in " + i.view;
+          }
+      }
+      EXPECT_EQ(hidden, 0) << scene << " at " << h << "p: Π hidden in " << hidden << " of " << seen
+                           << " frames, first " << first;
+    }
+}
+
+void no_two_visible_text_boxes_overlap() {
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      int bad = 0;
+      for (std::size_t k = 0; k < layouts.frames.size(); ++k) {
+        std::vector<const LayoutItem*> texts;
+        for (const LayoutItem& i : layouts.frames[k])
+          if (is_text(i) && i.visible) texts.push_back(&i);
+        for (std::size_t a = 0; a < texts.size(); ++a)
+          for (std::size_t b = a + 1; b < texts.size(); ++b) {
+            tumble::viz::Box x = texts[a]->box, y = texts[b]->box;
+            x.x0 += 0.5f, x.x1 -= 0.5f, x.y0 += 0.5f, x.y1 -= 0.5f;  // touching is fine
+            if (x.overlaps(y) && bad++ < 5)
+              ADD_FAILURE() << scene << " at " << h << "p frame " << k << ": \"" << texts[a]->text << "\" ("
+                            << texts[a]->view << ") overlaps \"" << texts[b]->text << "\" (" << texts[b]->view << ")";
+          }
+      }
+      EXPECT_EQ(bad, 0) << scene << " at " << h << "p";
+    }
+}
+
+void every_text_at_least_1_8_percent_high() {
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      float smallest = 1e9f;
+      std::string which;
+      for (const auto& frame : layouts.frames)
+        for (const LayoutItem& i : frame)
+          if (is_text(i) && i.size_px < smallest) smallest = i.size_px, which = i.name + " \"" + i.text + "\"";
+      EXPECT_GE(smallest, 0.018f * static_cast<float>(h)) << scene << " at " << h << "p: " << which;
+    }
+}
+
+void text_at_1080p_twice_its_540p_height() {
+  for (const auto& [scene, sizes] : all_layouts()) {
+    const Layouts &small = sizes.at(540), &big = sizes.at(1080);
+    if (small.frames.size() != big.frames.size()) return ADD_FAILURE() << scene << ": frame counts differ";
+    // Per frame, each role (view and name) by its largest size: the same text at both sizes.
+    int checked = 0;
+    for (std::size_t k = 0; k < small.frames.size(); ++k) {
+      std::map<std::string, float> a, b;
+      for (const LayoutItem& i : small.frames[k])
+        if (is_text(i)) a[i.view + "/" + i.name] = std::max(a[i.view + "/" + i.name], i.size_px);
+      for (const LayoutItem& i : big.frames[k])
+        if (is_text(i)) b[i.view + "/" + i.name] = std::max(b[i.view + "/" + i.name], i.size_px);
+      for (const auto& [role, size] : a) {
+        if (!b.count(role)) continue;
+        ++checked;
+        const float ratio = b[role] / size;
+        EXPECT_TRUE(ratio > 1.7f && ratio < 2.3f) << scene << " frame " << k << " " << role << ": 1080p/540p = " << ratio;
+        if (ratio <= 1.7f || ratio >= 2.3f) return;  // one report is enough
+      }
+    }
+    EXPECT_GT(checked, 100) << scene;
+  }
+}
+
+// One test: ctest runs each test in its own process, and the layouts (every
+// frame of every scene at three sizes, a few seconds) are made once.
+TEST(Layout, ShippedExplanatoryScenesReadAsAViewerNeeds) {
+  covers_the_shipped_scenes();
+  momentum_point_always_visible();
+  no_two_visible_text_boxes_overlap();
+  every_text_at_least_1_8_percent_high();
+  text_at_1080p_twice_its_540p_height();
+}
+
+}  // namespace
