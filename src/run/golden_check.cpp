@@ -11,7 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
 #include "io/png.hpp"
-#include "io/trajectory_csv.hpp"
+#include "core/format.hpp"
 
 namespace tumble::run {
 
@@ -90,7 +90,7 @@ std::vector<long> golden_frames(const std::string& at, const std::string& frames
     }
     if (k >= static_cast<double>(count))
       throw InputError(std::string(opt) + " " + item + ": past the end of the scene (last frame " +
-                       std::to_string(count - 1) + ", t = " + io::format_double(clock.time(count - 1)) + " s)");
+                       std::to_string(count - 1) + ", t = " + format_number(clock.time(count - 1)) + " s)");
     ks.insert(static_cast<long>(k));
   }
   return {ks.begin(), ks.end()};
