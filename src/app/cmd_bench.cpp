@@ -1,10 +1,6 @@
 // `tumble bench`: the method studies (src/bench); with --scene the
 // work-precision study on a user's scene; with --readme-table the README's
 // accuracy table; with --render the frame throughput of the demo.
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,15 +18,6 @@
 namespace tumble::app {
 
 namespace {
-/// Creates `dir` (and parents) now, so an unwritable folder fails before minutes of work.
-void check_output_folder(const std::string& option, const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw io::IoError(option + " " + dir.string() + ": cannot create the folder: " + ec.message());
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw io::IoError(option + " " + dir.string() + ": cannot write in the folder: " + std::strerror(errno));
-}
-
 struct BenchCliOptions {
   bench::BenchOptions studies;
   bool render = false;
@@ -110,7 +97,7 @@ void add_bench_command(CLI::App& app, Action& action) {
         if (!o->scene.empty()) throw InputError("--readme-table and --scene: choose one");
         return rewrite_readme(o->readme);
       }
-      check_output_folder("bench -o", o->studies.out_dir);
+      io::check_output_folder("bench -o", o->studies.out_dir);
       if (!o->render) {
         if (!o->body.empty() && o->scene.empty()) throw InputError("--body needs --scene");
         return o->scene.empty() ? bench::run(o->studies, std::cout) : run_scene_study(*o);

@@ -25,16 +25,6 @@ struct CompareCliOptions {
   golden::CompareOptions cmp;
 };
 
-void check_tolerance(const golden::CompareOptions& c) {
-  if (c.max_delta < 0 || c.max_delta > 255) throw InputError("--max-delta: expected 0..255, found " + std::to_string(c.max_delta));
-  if (!(c.max_fraction >= 0 && c.max_fraction <= 1))
-    throw InputError("--max-fraction: expected a number in [0, 1], found " + format_number(c.max_fraction));
-  if (c.max_region < 0) throw InputError("--max-region: expected an integer >= 0, found " + std::to_string(c.max_region));
-  if (c.window < 1 || c.window > 255) throw InputError("--window: expected 1..255 px, found " + std::to_string(c.window));
-  if (!(c.max_window_mean >= 0 && c.max_window_mean <= 255))
-    throw InputError("--max-window-mean: expected a number in [0, 255], found " + format_number(c.max_window_mean));
-}
-
 std::string box_text(const golden::Box& b) {
   if (b.empty()) return "none";
   return "(" + std::to_string(b.x0) + "," + std::to_string(b.y0) + ")-(" + std::to_string(b.x1) + "," +
@@ -61,7 +51,7 @@ void check_diff_path(const CompareCliOptions& o) {
 }
 
 int run_compare(const CompareCliOptions& o) {
-  check_tolerance(o.cmp);
+  golden::check_compare_options(o.cmp);
   if (!o.diff.empty()) check_diff_path(o);
   io::Image a, b;
   try {
@@ -110,8 +100,6 @@ void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c) {
                   "Fail when the mean difference over some window exceeds this, levels 0..255 (default " +
                       format_number(golden::CompareOptions{}.max_window_mean, kShortestDigits) + ")");
 }
-
-void check_golden_tolerance(const golden::CompareOptions& c) { check_tolerance(c); }
 
 void add_compare_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "compare",

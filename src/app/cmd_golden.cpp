@@ -20,7 +20,6 @@ namespace tumble::app {
 
 // Shared with `tumble compare` (cmd_compare.cpp).
 void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c);
-void check_golden_tolerance(const golden::CompareOptions& c);
 
 namespace {
 
@@ -38,7 +37,7 @@ struct GoldenOptions {
 };
 
 int run_golden(const GoldenOptions& o) {
-  check_golden_tolerance(o.cmp);
+  golden::check_compare_options(o.cmp);
   if (!(o.tol.rtol >= 0) || !(o.tol.atol >= 0)) throw InputError("--rtol/--atol: expected numbers >= 0");
   if (o.every < 1) throw InputError("--every: expected an integer >= 1");
   // GL is set up like an option, before any file is written: an unknown

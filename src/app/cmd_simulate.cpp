@@ -1,9 +1,5 @@
 // `tumble simulate SCENE --csv FILE`: one CSV row per body per sample.
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -12,7 +8,6 @@
 
 #include "app/commands.hpp"
 #include "app/stop_signals.hpp"
-#include "core/dynamics.hpp"
 #include "core/propagator.hpp"
 #include "io/atomic_file.hpp"
 #include "io/trajectory_csv.hpp"
@@ -28,21 +23,7 @@ struct SimulateOptions {
   CLI::Option *method_opt = nullptr, *dt_opt = nullptr, *duration_opt = nullptr, *every_opt = nullptr;
 };
 
-// After the golden trajectory columns (appended, so readers by position keep
-// working): ω in the cloud's own axes and the angle of each principal axis to L.
-constexpr const char* kExtraColumns = ",wbx,wby,wbz,axis1_L,axis2_L,axis3_L";
 constexpr double kMaxRows = 1e8;  // guards --every 1 with a tiny dt
-
-void append_row(std::string& out, double t, const RigidBodyModel& m, const BodyState& s) {
-  io::append_trajectory_row(out, t, m.name, m, s);
-  out.pop_back();  // its '\n'
-  const Eigen::Vector3d wb = omega_body(m, s), a = principal_axis_angles_to_L(s);
-  for (double c : {wb.x(), wb.y(), wb.z(), a.x(), a.y(), a.z()}) {
-    out += ',';
-    out += format_number(c);
-  }
-  out += '\n';
-}
 
 /// --method, --dt and --duration are scene keys: they go into the scene before
 /// it is validated, so the loader's checks (dt <= duration, step cap, auto
@@ -71,22 +52,8 @@ void check_sampling(const SimulateOptions& o, const scene::Scene& s) {
     throw InputError("the run would write more than 1e8 rows; raise --every or lower the scene's fps");
 }
 
-/// --csv must name a file in an existing folder: found now, not after the run
-/// (and the message names the file asked for, not its temp name).
-void check_csv_path(const std::string& csv) {
-  const std::filesystem::path p(csv);
-  const std::filesystem::path parent = p.parent_path().empty() ? "." : p.parent_path();
-  std::error_code ec;
-  if (p.filename().empty() || std::filesystem::is_directory(p, ec))
-    throw InputError("--csv " + csv + ": expected a file name, found a folder");
-  if (!std::filesystem::is_directory(parent, ec))
-    throw io::IoError("--csv " + csv + ": cannot write there: folder '" + parent.string() + "' does not exist");
-  if (::access(parent.c_str(), W_OK) != 0)
-    throw io::IoError("--csv " + csv + ": cannot write in folder '" + parent.string() + "': " + std::strerror(errno));
-}
-
 int run_simulate(const SimulateOptions& o) {
-  check_csv_path(o.csv);
+  io::check_output_file("--csv", o.csv);
   scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
   check_sampling(o, s);
   std::vector<std::unique_ptr<Propagator>> props;
@@ -105,14 +72,14 @@ int run_simulate(const SimulateOptions& o) {
     if (stop.received()) throw Stopped{};
   };
   io::AtomicFile out(o.csv);
-  std::string buf = std::string(io::kTrajectoryHeader) + kExtraColumns + "\n";
+  std::string buf = std::string(io::kTrajectoryHeader) + io::kSimulateExtraColumns + "\n";
   auto flush = [&] {
     out.write(buf);
     buf.clear();
   };
   const double duration = s.simulation.duration, dt = s.simulation.step.dt;
   try {
-    for (auto& p : props) append_row(buf, 0.0, p->model(), p->state());
+    for (auto& p : props) io::append_simulate_row(buf, 0.0, p->model(), p->state());
     if (o.every_opt->count()) {
       // Every N steps; the block that ends within round-off of the end lands on it exactly.
       const double n = static_cast<double>(o.every);
@@ -121,7 +88,7 @@ int run_simulate(const SimulateOptions& o) {
         const bool last = static_cast<double>(b) * n * dt >= duration * (1 - 1e-12);
         for (auto& p : props) {
           const BodyState& st = last ? p->advance_to(duration) : p->advance_steps(o.every);
-          append_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
+          io::append_simulate_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
         }
         if (buf.size() > (1u << 20)) flush();
         check_stop();
@@ -130,7 +97,7 @@ int run_simulate(const SimulateOptions& o) {
     } else {
       const std::vector<double> times = scene::sample_times(duration, s.simulation.fps);
       for (std::size_t k = 1; k < times.size(); ++k) {
-        for (auto& p : props) append_row(buf, times[k], p->model(), p->advance_to(times[k]));
+        for (auto& p : props) io::append_simulate_row(buf, times[k], p->model(), p->advance_to(times[k]));
         if (buf.size() > (1u << 20)) flush();
         check_stop();
       }

@@ -9,7 +9,20 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+#include "core/format.hpp"
+
 namespace tumble::golden {
+
+void check_compare_options(const CompareOptions& c) {
+  if (c.max_delta < 0 || c.max_delta > 255) throw InputError("--max-delta: expected 0..255, found " + std::to_string(c.max_delta));
+  if (!(c.max_fraction >= 0 && c.max_fraction <= 1))
+    throw InputError("--max-fraction: expected a number in [0, 1], found " + format_number(c.max_fraction));
+  if (c.max_region < 0) throw InputError("--max-region: expected an integer >= 0, found " + std::to_string(c.max_region));
+  if (c.window < 1 || c.window > 255) throw InputError("--window: expected 1..255 px, found " + std::to_string(c.window));
+  if (!(c.max_window_mean >= 0 && c.max_window_mean <= 255))
+    throw InputError("--max-window-mean: expected a number in [0, 255], found " + format_number(c.max_window_mean));
+}
 
 namespace {
 

@@ -25,6 +25,10 @@ struct CompareOptions {
   double max_window_mean = 4;    ///< 0..255 levels: pass when the largest window mean of D <= this
 };
 
+/// Throws InputError naming the option (--max-delta, --max-fraction,
+/// --max-region, --window, --max-window-mean) of a value out of its range.
+void check_compare_options(const CompareOptions& c);
+
 /// Inclusive pixel rectangle; empty when x1 < x0.
 struct Box {
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;

@@ -5,6 +5,8 @@
 
 #include <unistd.h>
 
+#include "core/error.hpp"
+
 namespace tumble::io {
 
 namespace {
@@ -72,6 +74,26 @@ void atomic_write_file(const std::filesystem::path& path, std::string_view conte
   AtomicFile f(path, d);
   f.write(contents);
   f.commit();
+}
+
+void check_output_file(const std::string& option, const std::filesystem::path& file) {
+  const std::string what = option + " " + file.string();
+  const std::filesystem::path parent = file.parent_path().empty() ? "." : file.parent_path();
+  std::error_code ec;
+  if (file.filename().empty() || std::filesystem::is_directory(file, ec))
+    throw InputError(what + ": expected a file name, found a folder");
+  if (!std::filesystem::is_directory(parent, ec))
+    throw IoError(what + ": cannot write there: folder '" + parent.string() + "' does not exist");
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw IoError(what + ": cannot write in folder '" + parent.string() + "': " + std::strerror(errno));
+}
+
+void check_output_folder(const std::string& option, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw IoError(option + " " + dir.string() + ": cannot create the folder: " + ec.message());
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw IoError(option + " " + dir.string() + ": cannot write in the folder: " + std::strerror(errno));
 }
 
 }  // namespace tumble::io

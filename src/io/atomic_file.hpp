@@ -17,6 +17,15 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An output file named by command-line `option` (e.g. "--csv"), checked before
+/// any work: a file name (not a folder) in an existing, writable folder.
+/// Throws InputError or IoError naming the option and the path.
+void check_output_file(const std::string& option, const std::filesystem::path& file);
+
+/// An output folder named by `option`, created now (with its parents) and
+/// checked writable, so it fails before minutes of work. Throws IoError.
+void check_output_folder(const std::string& option, const std::filesystem::path& dir);
+
 /// `<path>.tmp-<pid>`: where an atomic write of `path` goes first.
 std::filesystem::path temp_path_for(const std::filesystem::path& path);
 

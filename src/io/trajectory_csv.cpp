@@ -21,4 +21,15 @@ void append_trajectory_row(std::string& out, double t, std::string_view label, c
   out += '\n';
 }
 
+void append_simulate_row(std::string& out, double t, const RigidBodyModel& m, const BodyState& s) {
+  append_trajectory_row(out, t, m.name, m, s);
+  out.pop_back();  // its '\n'
+  const Eigen::Vector3d wb = omega_body(m, s), a = principal_axis_angles_to_L(s);
+  for (double c : {wb.x(), wb.y(), wb.z(), a.x(), a.y(), a.z()}) {
+    out += ',';
+    out += format_number(c);
+  }
+  out += '\n';
+}
+
 }  // namespace tumble::io

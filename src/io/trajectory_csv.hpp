@@ -19,4 +19,12 @@ inline constexpr const char* kTrajectoryHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx
 void append_trajectory_row(std::string& out, double t, std::string_view label, const RigidBodyModel& m,
                            const BodyState& s);
 
+/// `tumble simulate`'s columns after the trajectory's (appended, so readers by
+/// position keep working): omega in the cloud's own axes (rad/s) and the angle
+/// of each principal axis to L (rad).
+inline constexpr const char* kSimulateExtraColumns = ",wbx,wby,wbz,axis1_L,axis2_L,axis3_L";
+
+/// The trajectory row of `m` (its name in the body column) plus kSimulateExtraColumns.
+void append_simulate_row(std::string& out, double t, const RigidBodyModel& m, const BodyState& s);
+
 }  // namespace tumble::io
