@@ -1,6 +1,7 @@
 // `tumble simulate SCENE --csv FILE`: one CSV row per body per sample.
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -52,56 +53,68 @@ void check_sampling(const SimulateOptions& o, const scene::Scene& s) {
     throw InputError("the run would write more than 1e8 rows; raise --every or lower the scene's fps");
 }
 
-int run_simulate(const SimulateOptions& o) {
-  io::check_output_file("--csv", o.csv);
-  scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
-  check_sampling(o, s);
-  std::vector<std::unique_ptr<Propagator>> props;
+using Propagators = std::vector<std::unique_ptr<Propagator>>;
+
+/// Each body's propagator with the method the scene (or auto) picks, saying why.
+Propagators make_propagators(const scene::Scene& s) {
+  Propagators props;
   for (const scene::Body& b : s.bodies) {
     const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
     if (!plan.reason.empty()) std::cerr << "tumble: body '" << b.name << "': auto picked " << plan.reason << "\n";
     if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) std::cerr << "tumble: warning: " << *w << "\n";
     props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
   }
+  return props;
+}
 
+/// The rows after t = 0 into `buf`: every N steps (--every) or at the scene's
+/// sample times; `after_sample` runs after each sample. Throws Diverged.
+void step_rows(const SimulateOptions& o, const scene::Scene& s, Propagators& props, std::string& buf,
+               const std::function<void()>& after_sample) {
+  const double duration = s.simulation.duration, dt = s.simulation.step.dt;
+  if (o.every_opt->count()) {
+    // Every N steps; the block that ends within round-off of the end lands on it exactly.
+    const double n = static_cast<double>(o.every);
+    const long blocks = static_cast<long>(std::floor(duration / (dt * n) * (1 + 1e-12)));
+    for (long b = 1; b <= blocks + 1; ++b) {
+      const bool last = static_cast<double>(b) * n * dt >= duration * (1 - 1e-12);
+      for (auto& p : props) {
+        const BodyState& st = last ? p->advance_to(duration) : p->advance_steps(o.every);
+        io::append_simulate_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
+      }
+      after_sample();
+      if (last) break;
+    }
+  } else {
+    const std::vector<double> times = scene::sample_times(duration, s.simulation.fps);
+    for (std::size_t k = 1; k < times.size(); ++k) {
+      for (auto& p : props) io::append_simulate_row(buf, times[k], p->model(), p->advance_to(times[k]));
+      after_sample();
+    }
+  }
+}
+
+int run_simulate(const SimulateOptions& o) {
+  io::check_output_file("--csv", o.csv);
+  scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  check_sampling(o, s);
+  Propagators props = make_propagators(s);
   // Ctrl-C / SIGTERM: stop at the next row, write nothing (the temp file goes
   // with `out`), and leave an existing CSV as it was.
   const StopSignals stop;
   struct Stopped {};
-  auto check_stop = [&] {
-    if (stop.received()) throw Stopped{};
-  };
   io::AtomicFile out(o.csv);
   std::string buf = std::string(io::kTrajectoryHeader) + io::kSimulateExtraColumns + "\n";
   auto flush = [&] {
     out.write(buf);
     buf.clear();
   };
-  const double duration = s.simulation.duration, dt = s.simulation.step.dt;
   try {
     for (auto& p : props) io::append_simulate_row(buf, 0.0, p->model(), p->state());
-    if (o.every_opt->count()) {
-      // Every N steps; the block that ends within round-off of the end lands on it exactly.
-      const double n = static_cast<double>(o.every);
-      const long blocks = static_cast<long>(std::floor(duration / (dt * n) * (1 + 1e-12)));
-      for (long b = 1; b <= blocks + 1; ++b) {
-        const bool last = static_cast<double>(b) * n * dt >= duration * (1 - 1e-12);
-        for (auto& p : props) {
-          const BodyState& st = last ? p->advance_to(duration) : p->advance_steps(o.every);
-          io::append_simulate_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
-        }
-        if (buf.size() > (1u << 20)) flush();
-        check_stop();
-        if (last) break;
-      }
-    } else {
-      const std::vector<double> times = scene::sample_times(duration, s.simulation.fps);
-      for (std::size_t k = 1; k < times.size(); ++k) {
-        for (auto& p : props) io::append_simulate_row(buf, times[k], p->model(), p->advance_to(times[k]));
-        if (buf.size() > (1u << 20)) flush();
-        check_stop();
-      }
-    }
+    step_rows(o, s, props, buf, [&] {
+      if (buf.size() > (1u << 20)) flush();
+      if (stop.received()) throw Stopped{};
+    });
   } catch (const Stopped&) {
     const int sig = stop.received();
     std::cerr << "tumble: interrupted (" << (sig == SIGINT ? "SIGINT" : "SIGTERM") << "): no CSV written; "
