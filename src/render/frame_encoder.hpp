@@ -38,7 +38,7 @@ class FrameEncoder {
   /// else the cores this process may use); `capacity` queued frames, 0 = two
   /// per worker, so each has the next frame waiting while the GL thread draws.
   explicit FrameEncoder(int threads = 0, std::size_t capacity = 0, OnWritten on_written = {});
-  /// The same workers and queue feeding `sink` (submit(RawFrame) only).
+  /// The same workers and queue feeding `sink` (submit(RawFrame); a path is ignored).
   FrameEncoder(int threads, std::size_t capacity, OrderedSink sink);
   int threads() const { return static_cast<int>(workers_.size()); }
   std::size_t capacity() const { return capacity_; }
