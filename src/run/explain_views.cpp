@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/dynamics.hpp"
 #include "scene/frame_clock.hpp"
@@ -131,9 +133,125 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
     }
     slots_.push_back(std::move(slot));
   }
+  place_keys();
 }
 
-viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
+std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
+  switch (scene_.render.explain.views[i].kind) {
+    case scene::ViewKind::momentum_sphere: return viz::sphere_key();
+    case scene::ViewKind::poinsot: return viz::poinsot_key();
+    case scene::ViewKind::plot: return {};  // the chart has its own legend
+    case scene::ViewKind::world:
+    case scene::ViewKind::body_frame: break;
+  }
+  std::vector<std::pair<std::string, viz::Color>> bodies;
+  for (const scene::Body& b : scene_.bodies) {
+    const Eigen::Vector3f c = 0.75f * b.color.cast<float>();
+    bodies.emplace_back(b.name, viz::Color(c.x(), c.y(), c.z(), 1.0f));
+  }
+  const scene::DrawConfig& d = scene_.render.draw;
+  return viz::bodies_key({d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0}, bodies);
+}
+
+namespace {
+
+viz::Box moved(viz::Box b, float dx, float dy) { return {b.x0 + dx, b.y0 + dy, b.x1 + dx, b.y1 + dy}; }
+
+std::string px_text(float px) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f px", static_cast<double>(px));
+  return s;
+}
+
+}  // namespace
+
+// Issue 22: a key covers nothing that matters. Each view's key is placed once
+// for the whole video in the first corner clear of what that view shows in
+// any frame (viz::keep_clear) and of the frame's captions and badge; a sphere
+// moves aside for it. A view with no such corner sends its entries to one
+// frame key, placed in a corner of any view clear of every view's content.
+void ExplainViews::place_keys() {
+  if (!scene_.render.explain.key || runs_.empty()) return;
+  const float size = viz::text_px(viz::TextRole::key, height_), margin = 0.5f * size;
+  if (size < viz::kMinKeyPx) {
+    notes_.push_back("keys left out: their text would be " + px_text(size) + " high, under the " +
+                     px_text(viz::kMinKeyPx) + " a key needs to be read");
+    return;
+  }
+  const long count = fb_.clock().count();
+  std::vector<viz::Box> overlay;  // captions and the badge over the whole video, frame px
+  for (long k = 0; k < count; ++k) {
+    viz::DrawList dl;
+    add_text(dl, k);
+    for (const viz::TextItem& t : dl.texts) {
+      const viz::Box b = viz::text_box(t);
+      const auto same = [&](const viz::Box& o) { return o.x0 == b.x0 && o.y0 == b.y0 && o.x1 == b.x1 && o.y1 == b.y1; };
+      if (std::none_of(overlay.begin(), overlay.end(), same)) overlay.push_back(b);
+    }
+  }
+  std::vector<viz::Box> taken;  // every view's content and keys, frame px
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    Slot& slot = slots_[i];
+    const scene::ViewConfig& vc = scene_.render.explain.views[i];
+    const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
+    const float ox = static_cast<float>(f[0] * width_), oy = static_cast<float>(f[1] * height_);
+    const float w = static_cast<float>(slot.width_px), h = static_cast<float>(slot.height_px);
+    if (vc.kind == scene::ViewKind::plot) {
+      taken.push_back({ox, oy, ox + w, oy + h});
+      continue;
+    }
+    std::vector<viz::Box> content, texts;
+    for (long k = 0; k < count; ++k) viz::keep_clear(view_at(i, k, false), w, h, content, texts);
+    for (const viz::Box& b : overlay) texts.push_back(moved(b, -ox, -oy));
+    // A sphere or Poinsot's construction moves aside for its key; bodies in space do not.
+    const bool sphere = vc.kind == scene::ViewKind::momentum_sphere || vc.kind == scene::ViewKind::poinsot;
+    if (!sphere) texts.insert(texts.end(), content.begin(), content.end());
+    viz::View head;
+    const float top = viz::add_view_title(head, vc.title, w, height_);
+    const std::vector<viz::KeyEntry> entries = key_entries(i);
+    const glm::vec2 ks = viz::key_size(entries, size);
+    slot.key = viz::find_key_spot(ks, w, h, top, margin, texts, sphere ? content : std::vector<viz::Box>{},
+                                  !sphere ? 0.0f : vc.kind == scene::ViewKind::poinsot ? w : viz::sphere_shift_room(w, h));
+    const float shift = slot.key ? slot.key->shift_px : 0.0f;
+    for (const viz::Box& b : content) taken.push_back(moved(b, ox + shift, oy));
+    for (const viz::Box& b : texts) taken.push_back(moved(b, ox, oy));
+    if (slot.key) {
+      taken.push_back(moved({slot.key->top_left.x, slot.key->top_left.y, slot.key->top_left.x + ks.x,
+                             slot.key->top_left.y + ks.y}, ox, oy));
+    } else {
+      viz::merge_entries(frame_key_, entries);
+      notes_.push_back("view " + std::to_string(i) + " (" + (vc.title.empty() ? "untitled" : vc.title) +
+                       "): its key joins the frame key, no corner of the view is clear of what it shows");
+    }
+  }
+  place_frame_key(taken);
+}
+
+void ExplainViews::place_frame_key(const std::vector<viz::Box>& taken) {
+  if (frame_key_.empty()) return;
+  const float size = viz::text_px(viz::TextRole::key, height_);
+  const glm::vec2 ks = viz::key_size(frame_key_, size);
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    const scene::ViewConfig& vc = scene_.render.explain.views[i];
+    if (vc.kind == scene::ViewKind::plot) continue;
+    const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
+    const float ox = static_cast<float>(f[0] * width_), oy = static_cast<float>(f[1] * height_);
+    std::vector<viz::Box> here;
+    for (const viz::Box& b : taken) here.push_back(moved(b, -ox, -oy));
+    viz::View head;
+    const float top = viz::add_view_title(head, vc.title, static_cast<float>(slots_[i].width_px), height_);
+    if (const auto spot = viz::find_key_spot(ks, static_cast<float>(slots_[i].width_px),
+                                             static_cast<float>(slots_[i].height_px), top, 0.5f * size, here, {}, 0)) {
+      frame_key_at_ = spot->top_left + glm::vec2(ox, oy);
+      notes_.push_back("the frame key is in view " + std::to_string(i) + "'s corner");
+      return;
+    }
+  }
+  notes_.push_back("the frame key is left out: no corner of any view is clear of what the views show");
+  frame_key_.clear();
+}
+
+viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const Run& run = runs_[0];
@@ -159,50 +277,11 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
   viz::View v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, top);
   v.name = vc.kind == scene::ViewKind::world ? "world" : "body_frame";
   for (viz::TextItem& t : head.texts) v.texts.push_back(std::move(t));
-  if (scene_.render.explain.key) {
-    std::vector<std::pair<std::string, viz::Color>> bodies;
-    for (const scene::Body& b : scene_.bodies)
-      bodies.emplace_back(b.name, viz::Color(0.75f * b.color.cast<float>().x(), 0.75f * b.color.cast<float>().y(),
-                                             0.75f * b.color.cast<float>().z(), 1.0f));
-    const scene::DrawConfig& d = scene_.render.draw;
-    const viz::DrawOptions opt{d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
-    // In a corner clear of the bodies on screen and of the view's text.
-    const float h = static_cast<float>(slot.height_px);
-    std::vector<viz::Box> avoid;
-    for (const viz::TextItem& t : v.texts) avoid.push_back(viz::text_box(t));
-    if (kk >= 0)
-      for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
-        const glm::dvec3 c = to_glm(run.frames[static_cast<std::size_t>(kk)][b].c);
-        const double r = viz::box_radius(scene_.bodies[b].model);
-        glm::vec2 p0, p1;
-        if (!viz::project_to_viewport(v.camera, w, h, c, p0) ||
-            !viz::project_to_viewport(v.camera, w, h, c + r * glm::normalize(v.camera.up), p1))
-          continue;
-        const float rp = glm::length(p1 - p0);
-        avoid.push_back({p0.x - rp, p0.y - rp, p0.x + rp, p0.y + rp});
-      }
-    // And of the speed badge over the frame's corner (frame px to this view's px).
-    const double rate = fb_.clock().rate(k);
-    if (const auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_)) {
-      const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
-      const viz::Box b = viz::text_box(*badge);
-      const float dx = static_cast<float>(f[0] * width_), dy = static_cast<float>(f[1] * height_);
-      avoid.push_back({b.x0 - dx, b.y0 - dy, b.x1 - dx, b.y1 - dy});
-    }
-    const std::size_t texts = v.texts.size(), text_boxes = texts;
-    const viz::Box kb =
-        viz::add_key_clear(v, viz::bodies_key(opt, bodies), w, h, top, viz::text_px(viz::TextRole::key, height_), avoid);
-    // A view too small for it (no corner clear of its own text) goes without the key.
-    for (std::size_t i = 0; i < text_boxes; ++i)
-      if (avoid[i].overlaps(kb)) {
-        v.texts.resize(texts);
-        break;
-      }
-  }
+  if (key && slot.key) viz::add_key(v, key_entries(i), slot.key->top_left, viz::text_px(viz::TextRole::key, height_));
   return v;
 }
 
-viz::View ExplainViews::view_at(std::size_t i, long k) const {
+viz::View ExplainViews::view_at(std::size_t i, long k, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const Run& run = runs_[0];
@@ -214,7 +293,7 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   viz::View v;
   switch (vc.kind) {
     case scene::ViewKind::world:
-    case scene::ViewKind::body_frame: v = bodies_view(i, k); break;
+    case scene::ViewKind::body_frame: v = bodies_view(i, k, key); break;
     case scene::ViewKind::momentum_sphere: {
       if (kk < 0) break;
       viz::MomentumSphereInput in;
@@ -225,7 +304,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       in.title = vc.title;
       if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
       in.camera = slot.sphere;
-      in.key = scene_.render.explain.key;
+      in.key = key && slot.key;
+      in.key_spot = slot.key;
       in.width_px = w, in.height_px = h, in.frame_h = height_;
       viz::build_momentum_sphere(v, in);
       break;
@@ -260,7 +340,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       }
       in.title = vc.title;
       in.camera = slot.sphere;
-      in.key = scene_.render.explain.key;
+      in.key = key && slot.key;
+      in.key_spot = slot.key;
       in.width_px = w, in.height_px = h, in.frame_h = height_;
       viz::build_poinsot(v, in);
       break;
@@ -290,6 +371,12 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
       for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, side)) dl.texts.push_back(std::move(t));
   }
   if (badge) dl.texts.push_back(*badge);
+  if (!frame_key_.empty()) {
+    viz::View key;
+    viz::add_key(key, frame_key_, frame_key_at_, viz::text_px(viz::TextRole::key, height_));
+    for (viz::TextItem& t : key.texts) dl.texts.push_back(std::move(t));
+  }
+  dl.notes = notes_;
 }
 
 bool ExplainViews::title_card(viz::DrawList& dl, long k) const {
