@@ -23,8 +23,11 @@ constexpr float kLine = 1.3f;   // line pitch, in sizes
 constexpr float kPad = 0.45f;   // backdrop margin, in sizes
 constexpr float kGap = 0.4f;    // between swatch and text, in sizes
 
+// One swatch per colour, a small gap apart so that three axis colours read as three dashes.
+float swatch_step(Swatch s, float size_px) { return text_width(swatch_glyphs(s), size_px) + 0.15f * size_px; }
+
 float swatch_width(const KeyEntry& e, float size_px) {
-  return static_cast<float>(e.colors.size()) * text_width(swatch_glyphs(e.swatch), size_px);
+  return static_cast<float>(e.colors.size()) * swatch_step(e.swatch, size_px);
 }
 
 float swatch_column(const std::vector<KeyEntry>& entries, float size_px) {
@@ -67,7 +70,7 @@ Box add_key(View& view, const std::vector<KeyEntry>& entries, glm::vec2 top_left
   const Color ink = color_of(Meaning::ink);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const float y = top_left.y + (kPad + kLine * static_cast<float>(i)) * size_px;
-    const float step = text_width(swatch_glyphs(entries[i].swatch), size_px);
+    const float step = swatch_step(entries[i].swatch, size_px);
     for (std::size_t c = 0; c < entries[i].colors.size(); ++c) {
       TextItem swatch{swatch_glyphs(entries[i].swatch), {x_swatch + step * static_cast<float>(c), y}, size_px,
                       entries[i].colors[c]};

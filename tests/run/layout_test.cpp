@@ -103,7 +103,10 @@ void no_two_visible_text_boxes_overlap() {
         for (std::size_t a = 0; a < texts.size(); ++a)
           for (std::size_t b = a + 1; b < texts.size(); ++b) {
             tumble::viz::Box x = texts[a]->box, y = texts[b]->box;
-            x.x0 += 0.5f, x.x1 -= 0.5f, x.y0 += 0.5f, x.y1 -= 0.5f;  // touching is fine
+            // Touching is fine, but two axis labels (e₁, e₂, e₃) keep a fifth of a line apart, or they read as one.
+            const bool axes = texts[a]->name.rfind("axis_label", 0) == 0 && texts[b]->name.rfind("axis_label", 0) == 0;
+            const float g = axes ? 0.2f * texts[a]->size_px : -0.5f;
+            x.x0 -= g, x.x1 += g, x.y0 -= g, x.y1 += g;
             if (x.overlaps(y) && bad++ < 5)
               ADD_FAILURE() << scene << " at " << h << "p frame " << k << ": \"" << texts[a]->text << "\" ("
                             << texts[a]->view << ") overlaps \"" << texts[b]->text << "\" (" << texts[b]->view << ")";
