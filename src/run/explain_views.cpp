@@ -190,6 +190,7 @@ void ExplainViews::place_keys() {
     }
   }
   std::vector<viz::Box> taken;  // every view's content and keys, frame px
+  std::vector<viz::KeyEntry> shown;  // by the views' own keys
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     Slot& slot = slots_[i];
     const scene::ViewConfig& vc = scene_.render.explain.views[i];
@@ -216,6 +217,7 @@ void ExplainViews::place_keys() {
     for (const viz::Box& b : content) taken.push_back(moved(b, ox + shift, oy));
     for (const viz::Box& b : texts) taken.push_back(moved(b, ox, oy));
     if (slot.key) {
+      viz::merge_entries(shown, entries);
       taken.push_back(moved({slot.key->top_left.x, slot.key->top_left.y, slot.key->top_left.x + ks.x,
                              slot.key->top_left.y + ks.y}, ox, oy));
     } else {
@@ -224,6 +226,15 @@ void ExplainViews::place_keys() {
                        "): its key joins the frame key, no corner of the view is clear of what it shows");
     }
   }
+  // One colour means one thing in every view: what a view's key shows already is not repeated.
+  std::vector<viz::KeyEntry> rest;
+  for (const viz::KeyEntry& e : frame_key_) {
+    std::vector<viz::KeyEntry> one{e};
+    const std::size_t n = shown.size();
+    viz::merge_entries(shown, one);
+    if (shown.size() > n) rest.push_back(e);
+  }
+  frame_key_ = std::move(rest);
   place_frame_key(taken);
 }
 
