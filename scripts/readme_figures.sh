@@ -1,5 +1,7 @@
 #!/bin/sh
 # Regenerates the README's figures from the code, so none is copied by hand:
+#  - the method table between <!-- BEGIN/END methods --> in README.md
+#    (`tumble methods --readme`, from core's method table; instant);
 #  - the accuracy table between <!-- BEGIN/END bench:accuracy-table --> in
 #    README.md (`tumble bench --readme-table`, about a minute);
 #  - docs/bench_work_precision_t_handle.png and docs/bench_stability_map.png
@@ -28,4 +30,5 @@ if [ "${1:-}" != "--table-only" ]; then
   mv docs/bench_stability_map.png.tmp docs/bench_stability_map.png
   "$tumble" bench --render --frames 120 -o "$out" --readme-table README.md
 fi
+"$tumble" methods --readme README.md
 "$tumble" bench --readme-table README.md

@@ -7,7 +7,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
+#include "core/format.hpp"
 #include "core/integrator.hpp"
+#include "core/propagator.hpp"
 #include "scene/sampled_run.hpp"
 #ifdef TUMBLE_HAVE_GLTF
 #include "gltf/gltf_export.hpp"
@@ -31,19 +33,20 @@ scene::SimulationConfig run_config(const scene::Scene& s, const std::optional<st
                                    std::optional<double> dt) {
   scene::SimulationConfig sim = s.simulation;
   if (method && *method == "auto") {
-    sim.method.reset();
+    sim.automatic = true;
   } else if (method) {
     const std::optional<Method> m = parse_method(*method);
     if (!m) throw InputError("method: expected auto or " + method_list() + ", found \"" + *method + "\"");
-    sim.method = *m;
+    sim.automatic = false;
+    sim.step.method = *m;
     sim.tolerance.reset();  // as `simulate --method NAME`: the named method wins
   }
   if (dt) {
     if (!std::isfinite(*dt) || *dt <= 0) throw InputError("dt: expected a finite number > 0 (s)");
     if (*dt > sim.duration) throw InputError("dt: expected at most the duration (" + std::to_string(sim.duration) + " s)");
-    sim.dt = *dt;
+    sim.step.dt = *dt;
   }
-  if (sim.duration / sim.dt > scene::kMaxSteps) throw InputError("dt: the run would take more than 1e9 steps");
+  if (sim.duration / sim.step.dt > kMaxRunSteps) throw InputError("dt: the run would take more than " + format_number(kMaxRunSteps, 3) + " steps");
   return sim;
 }
 

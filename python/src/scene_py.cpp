@@ -117,20 +117,21 @@ void add_settings(py::module_& m) {
   py::class_<scene::SimulationConfig>(m, "SimulationConfig", "[simulation]: method, dt (s), duration (s), fps, ...")
       .def_property(
           "method",
-          [](const scene::SimulationConfig& s) { return s.method ? std::string(method_name(*s.method)) : "auto"; },
+          [](const scene::SimulationConfig& s) { return s.automatic ? std::string("auto") : std::string(method_name(s.step.method)); },
           [](scene::SimulationConfig& s, const std::string& name) {
             if (name == "auto") {
-              s.method.reset();
+              s.automatic = true;
               return;
             }
             const std::optional<Method> mt = parse_method(name);
             if (!mt) throw py::value_error("method: expected auto or " + method_list() + ", found \"" + name + "\"");
-            s.method = *mt;
+            s.automatic = false;
+            s.step.method = *mt;
             s.tolerance.reset();  // as --method does: a named method needs no tolerance
           })
       .def_property(
-          "dt", [](const scene::SimulationConfig& s) { return s.dt; },
-          [](scene::SimulationConfig& s, double v) { s.dt = positive(v, "dt"); })
+          "dt", [](const scene::SimulationConfig& s) { return s.step.dt; },
+          [](scene::SimulationConfig& s, double v) { s.step.dt = positive(v, "dt"); })
       .def_property(
           "duration", [](const scene::SimulationConfig& s) { return s.duration; },
           [](scene::SimulationConfig& s, double v) { s.duration = positive(v, "duration"); })
@@ -138,11 +139,11 @@ void add_settings(py::module_& m) {
           "fps", [](const scene::SimulationConfig& s) { return s.fps; },
           [](scene::SimulationConfig& s, double v) { s.fps = positive(v, "fps"); })
       .def_property(
-          "rtol", [](const scene::SimulationConfig& s) { return s.rtol; },
-          [](scene::SimulationConfig& s, double v) { s.rtol = positive(v, "rtol"); })
+          "rtol", [](const scene::SimulationConfig& s) { return s.step.rtol; },
+          [](scene::SimulationConfig& s, double v) { s.step.rtol = positive(v, "rtol"); })
       .def_property(
-          "atol", [](const scene::SimulationConfig& s) { return s.atol; },
-          [](scene::SimulationConfig& s, double v) { s.atol = positive(v, "atol"); })
+          "atol", [](const scene::SimulationConfig& s) { return s.step.atol; },
+          [](scene::SimulationConfig& s, double v) { s.step.atol = positive(v, "atol"); })
       .def_readwrite("tolerance", &scene::SimulationConfig::tolerance);
 
   py::class_<scene::OutputConfig>(m, "OutputConfig", "[output]: width, height (px), fps, aa")

@@ -28,11 +28,11 @@ struct CompareCliOptions {
 void check_tolerance(const golden::CompareOptions& c) {
   if (c.max_delta < 0 || c.max_delta > 255) throw InputError("--max-delta: expected 0..255, found " + std::to_string(c.max_delta));
   if (!(c.max_fraction >= 0 && c.max_fraction <= 1))
-    throw InputError("--max-fraction: expected a number in [0, 1], found " + format_double(c.max_fraction));
+    throw InputError("--max-fraction: expected a number in [0, 1], found " + format_number(c.max_fraction));
   if (c.max_region < 0) throw InputError("--max-region: expected an integer >= 0, found " + std::to_string(c.max_region));
   if (c.window < 1 || c.window > 255) throw InputError("--window: expected 1..255 px, found " + std::to_string(c.window));
   if (!(c.max_window_mean >= 0 && c.max_window_mean <= 255))
-    throw InputError("--max-window-mean: expected a number in [0, 255], found " + format_double(c.max_window_mean));
+    throw InputError("--max-window-mean: expected a number in [0, 255], found " + format_number(c.max_window_mean));
 }
 
 std::string box_text(const golden::Box& b) {
@@ -99,7 +99,7 @@ void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c) {
                       std::to_string(golden::CompareOptions{}.max_delta) + ")");
   cmd->add_option("--max-fraction", c.max_fraction,
                   "Fail when more than this fraction of pixels differ (default " +
-                      format_short(golden::CompareOptions{}.max_fraction) + ")");
+                      format_number(golden::CompareOptions{}.max_fraction, kShortestDigits) + ")");
   cmd->add_option("--max-region", c.max_region,
                   "Fail when a connected region of differing pixels is larger than this, px (default " +
                       std::to_string(golden::CompareOptions{}.max_region) + ")");
@@ -108,7 +108,7 @@ void add_golden_tolerance_options(CLI::App* cmd, golden::CompareOptions& c) {
                       std::to_string(golden::CompareOptions{}.window) + ")");
   cmd->add_option("--max-window-mean", c.max_window_mean,
                   "Fail when the mean difference over some window exceeds this, levels 0..255 (default " +
-                      format_short(golden::CompareOptions{}.max_window_mean) + ")");
+                      format_number(golden::CompareOptions{}.max_window_mean, kShortestDigits) + ")");
 }
 
 void check_golden_tolerance(const golden::CompareOptions& c) { check_tolerance(c); }

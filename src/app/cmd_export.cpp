@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "core/format.hpp"
 #ifdef TUMBLE_HAVE_GLTF
 #include "gltf/gltf_export.hpp"
 #endif
@@ -25,7 +26,7 @@ int run_export(const ExportOptions& o) {
   const scene::Scene s = load_scene_verbose(o.scene, overrides);
   const std::vector<scene::Trajectory> tracks = gltf::export_gltf(s, o.gltf, 0, "--gltf");
   std::cerr << "tumble: wrote " << o.gltf << ": " << tracks.size() << " bodies, "
-            << (tracks.empty() ? 0 : tracks[0].size()) << " keyframes at " << format_short(s.render.output.fps)
+            << (tracks.empty() ? 0 : tracks[0].size()) << " keyframes at " << format_number(s.render.output.fps, kShortestDigits)
             << " fps\n";
   return kOk;
 #else

@@ -98,7 +98,7 @@ std::vector<long> golden_frames(const std::string& at, const std::string& frames
     }
     if (k >= static_cast<double>(count))
       throw InputError(std::string(opt) + " " + item + ": past the end of the scene (last frame " +
-                       std::to_string(count - 1) + ", t = " + format_double(clock.time(count - 1)) + " s)");
+                       std::to_string(count - 1) + ", t = " + format_number(clock.time(count - 1)) + " s)");
     ks.insert(static_cast<long>(k));
   }
   return {ks.begin(), ks.end()};

@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_info.hpp"
+#include "core/format.hpp"
 #include "io/json.hpp"
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
@@ -47,7 +48,7 @@ BodyInfo world_info(const scene::Body& b) {
 
 /// [x, y, z] as text, for the table of to_text.
 std::string vec_text(const Eigen::Vector3d& v) {
-  return "[" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) + "]";
+  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) + "]";
 }
 
 io::Json vec_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
@@ -65,15 +66,15 @@ std::string flips_text(const scene::Scene& s, std::size_t body) {
     std::snprintf(t, sizeof t, "%s%.4f", i ? ", " : "", flips[i]);
     out += t;
   }
-  return out + (flips.empty() ? "none" : " s") + " in " + format_double(s.simulation.duration) + " s\n";
+  return out + (flips.empty() ? "none" : " s") + " in " + format_number(s.simulation.duration) + " s\n";
 }
 
 // The frames and the simulated time each shows: one line per stretch of one speed.
 std::string frames_text(const scene::Scene& s) {
   const scene::FrameClock c = scene::frame_clock(s, s.render.output.fps);
   std::ostringstream o;
-  o << "\nframes " << c.count() << " at " << format_double(c.fps()) << " fps (video "
-    << format_double(static_cast<double>(c.count() - 1) / c.fps()) << " s; frame k at video k/fps s)\n";
+  o << "\nframes " << c.count() << " at " << format_number(c.fps()) << " fps (video "
+    << format_number(static_cast<double>(c.count() - 1) / c.fps()) << " s; frame k at video k/fps s)\n";
   char line[200];
   for (const scene::ClockSpan& sp : scene::clock_spans(c)) {
     const double v0 = static_cast<double>(sp.first) / c.fps(), v1 = static_cast<double>(sp.last) / c.fps();
@@ -122,7 +123,7 @@ std::string to_text(const scene::Scene& s) {
   for (const scene::Body& b : s.bodies) {
     const BodyInfo i = world_info(b);
     o << "\nbody " << i.name << " (" << i.particles << " particles)\n"
-      << "  mass              " << format_double(i.mass) << " kg\n"
+      << "  mass              " << format_number(i.mass) << " kg\n"
       << "  centre of mass    " << row(i.com) << " m\n"
       << "  inertia about c   " << row(i.inertia.row(0).transpose()) << " kg m^2 (world, t = 0)\n"
       << "                    " << row(i.inertia.row(1).transpose()) << "\n"

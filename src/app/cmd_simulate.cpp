@@ -39,7 +39,7 @@ void append_row(std::string& out, double t, const RigidBodyModel& m, const BodyS
   const Eigen::Vector3d wb = omega_body(m, s), a = principal_axis_angles_to_L(s);
   for (double c : {wb.x(), wb.y(), wb.z(), a.x(), a.y(), a.z()}) {
     out += ',';
-    out += io::format_double(c);
+    out += format_number(c);
   }
   out += '\n';
 }
@@ -61,11 +61,11 @@ std::vector<scene::Override> scene_overrides(const SimulateOptions& o) {
 /// What only `simulate` has: --every and the row cap.
 void check_sampling(const SimulateOptions& o, const scene::Scene& s) {
   const scene::SimulationConfig& sim = s.simulation;
-  if (o.every_opt->count() && !sim.method && sim.tolerance)
+  if (o.every_opt->count() && sim.automatic && sim.tolerance)
     throw InputError("--every counts steps of the scene's dt, but method \"auto\" with a tolerance picks each body's dt; "
                      "drop --every (rows at the scene's fps) or add --method NAME");
   if (o.every_opt->count() && o.every < 1) throw InputError("--every: expected an integer >= 1, found " + std::to_string(o.every));
-  const double samples = o.every_opt->count() ? sim.duration / (sim.dt * static_cast<double>(o.every))
+  const double samples = o.every_opt->count() ? sim.duration / (sim.step.dt * static_cast<double>(o.every))
                                               : sim.duration * sim.fps;
   if (samples * static_cast<double>(s.bodies.size()) > kMaxRows)
     throw InputError("the run would write more than 1e8 rows; raise --every or lower the scene's fps");
@@ -110,7 +110,7 @@ int run_simulate(const SimulateOptions& o) {
     out.write(buf);
     buf.clear();
   };
-  const double duration = s.simulation.duration, dt = s.simulation.dt;
+  const double duration = s.simulation.duration, dt = s.simulation.step.dt;
   try {
     for (auto& p : props) append_row(buf, 0.0, p->model(), p->state());
     if (o.every_opt->count()) {

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/format.hpp"
 #include "io/trajectory_csv.hpp"
 #include "scene/scene.hpp"
 
@@ -28,7 +29,12 @@ void add_assemble_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_golden_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
+void add_methods_command(CLI::App& app, Action& action);
 void add_export_command(CLI::App& app, Action& action);
+
+/// The README's "Integration methods" table (markdown), one row per row of
+/// core's method table: name, order, description.
+std::string methods_markdown();
 
 /// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
 /// naming the option for an unknown name, so it fails before any work.
@@ -39,10 +45,5 @@ int run_action(const Action& action);
 
 /// load_scene (with command-line overrides) plus its warnings printed to stderr.
 scene::Scene load_scene_verbose(const std::filesystem::path& path, const std::vector<scene::Override>& overrides = {});
-
-using io::format_double;
-
-/// The shortest text that reads back as `v` (0.0005, not 0.00050000000000000001): for help texts.
-std::string format_short(double v);
 
 }  // namespace tumble::app

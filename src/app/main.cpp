@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   tumble::app::add_golden_command(app, action);
 #endif
   tumble::app::add_bench_command(app, action);
+  tumble::app::add_methods_command(app, action);
   tumble::app::add_export_command(app, action);
   if (argc < 2) {  // no command: say what there is
     std::cout << app.help();

@@ -11,13 +11,7 @@ namespace tumble::app {
 namespace {
 
 std::string vec(const Eigen::Vector3d& v) {
-  return "[" + format_double(v.x()) + ", " + format_double(v.y()) + ", " + format_double(v.z()) + "]";
-}
-
-std::string short_num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
+  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) + "]";
 }
 
 std::string yes_no(bool b) { return b ? "yes" : "no"; }
@@ -27,22 +21,22 @@ std::string yes_no(bool b) { return b ? "yes" : "no"; }
 std::string mesh_text(const scene::MeshSource& m) {
   const MeshReport& r = m.report;
   std::ostringstream o;
-  o << "  mesh              " << m.file << " (fill " << m.fill << ", " << short_num(m.units) << " m per file unit)\n"
+  o << "  mesh              " << m.file << " (fill " << m.fill << ", " << format_number(m.units, 4) << " m per file unit)\n"
     << "    triangles       " << r.triangles << " (" << r.vertices << " vertices), " << r.degenerate_faces
     << " degenerate\n"
     << "    watertight      " << yes_no(r.watertight()) << " (" << r.boundary_edges << " boundary, "
     << r.non_manifold_edges << " non-manifold, " << r.misoriented_edges << " misoriented edges)\n"
-    << "    signed volume   " << short_num(r.signed_volume) << " m^3 ("
+    << "    signed volume   " << format_number(r.signed_volume, 4) << " m^3 ("
     << (m.flipped ? "inside out: flipped" : r.signed_volume >= 0 ? "outward" : "inward") << "), area "
-    << short_num(r.area) << " m^2\n"
+    << format_number(r.area, 4) << " m^2\n"
     << "    bounding box    " << vec(r.box_min) << " .. " << vec(r.box_max) << " m (file axes, scaled)\n";
   if (!m.inside_test.empty()) o << "    inside test     " << m.inside_test << "\n";
   o << "    particles       " << m.particles;
-  if (m.spacing > 0) o << " (spacing " << short_num(m.spacing) << " m)";
-  o << ", mass " << short_num(m.mass) << " kg\n";
+  if (m.spacing > 0) o << " (spacing " << format_number(m.spacing, 4) << " m)";
+  o << ", mass " << format_number(m.mass, 4) << " kg\n";
   if (m.file_mass > 0) {
-    o << "    masses          per vertex, the PLY's `mass` property (sum " << short_num(m.file_mass) << " kg";
-    if (std::abs(m.mass - m.file_mass) > 1e-12 * m.file_mass) o << ", scaled to the shape's " << short_num(m.mass) << " kg";
+    o << "    masses          per vertex, the PLY's `mass` property (sum " << format_number(m.file_mass, 4) << " kg";
+    if (std::abs(m.mass - m.file_mass) > 1e-12 * m.file_mass) o << ", scaled to the shape's " << format_number(m.mass, 4) << " kg";
     o << ")";
     if (m.massless_vertices > 0) o << "; " << m.massless_vertices << " vertices of mass 0 left out";
     o << "\n";
@@ -53,7 +47,7 @@ std::string mesh_text(const scene::MeshSource& m) {
   };
   if (m.has_exact) rows(m.fill == "surface" ? "exact (shell)   " : "exact (solid)   ", m.exact_inertia);
   rows("particle cloud  ", m.cloud_inertia);
-  if (m.has_exact) o << "    relative error  " << short_num(m.inertia_error()) << " (Frobenius norm)\n";
+  if (m.has_exact) o << "    relative error  " << format_number(m.inertia_error(), 4) << " (Frobenius norm)\n";
   return o.str();
 }
 

@@ -1,4 +1,3 @@
-#include <charconv>
 #include <filesystem>
 #include <iostream>
 
@@ -37,12 +36,6 @@ scene::Scene load_scene_verbose(const std::filesystem::path& path, const std::ve
   scene::Scene s = scene::load_scene(path, overrides);
   for (const std::string& w : s.warnings) std::cerr << w << "\n";
   return s;
-}
-
-std::string format_short(double v) {
-  char buf[40];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general);
-  return std::string(buf, r.ptr);
 }
 
 }  // namespace tumble::app

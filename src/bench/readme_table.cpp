@@ -8,6 +8,7 @@
 #include "bench/peers.hpp"
 #include "core/error.hpp"
 #include "core/embedded_rk.hpp"
+#include "core/format.hpp"
 
 namespace tumble::bench {
 
@@ -17,24 +18,15 @@ namespace {
 std::string sci(double v) {
   if (!std::isfinite(v)) return "diverged";
   if (v == 0) return "0";
-  char buf[32];
-  if (v >= 0.01) {
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-  }
-  std::snprintf(buf, sizeof buf, "%.2e", v);
-  std::string s = buf;  // 1.57e-03 -> 1.57e-3
+  if (v >= 0.01) return format_number(v, 3);
+  std::string s = format_number(v, 2, 'e');  // 1.57e-03 -> 1.57e-3
   const size_t e = s.find("e-0");
   if (e != std::string::npos) s.erase(e + 2, 1);
   return s;
 }
 
 // CPU figures: whole nanoseconds from 100 on (3.1e+02 reads badly).
-std::string ns(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, v < 100 ? "%.3g" : "%.0f", v);
-  return buf;
-}
+std::string ns(double v) { return v < 100 ? format_number(v, 3) : format_number(v, 0, 'f'); }
 
 constexpr double kDts[] = {1e-1, 1e-2, 1e-3};
 constexpr double kRtol = 1e-9;

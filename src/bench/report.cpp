@@ -7,16 +7,11 @@
 #include <sstream>
 
 #include "bench/charts.hpp"
+#include "core/format.hpp"
 
 namespace tumble::bench {
 
-std::string fmt(double v, int prec) {
-  if (!std::isfinite(v)) return "—";
-  std::ostringstream o;
-  o.precision(prec);
-  o << v;
-  return o.str();
-}
+std::string fmt(double v, int prec) { return std::isfinite(v) ? format_number(v, prec) : "—"; }
 
 std::vector<double> summary_tolerances() { return {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}; }
 

@@ -20,7 +20,7 @@ struct Derivative {
 
 /// q' = ½ ω_world ⊗ q for world L, ω_world = q I⁻¹ (q̄ L), evaluated in the
 /// body frame as ½ q ⊗ (0, ω_b), ω_b = I⁻¹ Π, Π = q̄ L — the product the seed's
-/// Q(q) forms, which is right exactly for this body-frame ω (README, erratum 1).
+/// Q(q) forms, which is right exactly for this body-frame ω (docs/model.md, erratum 1).
 /// One rotation fewer on the latency chain of an RK stage.
 ///
 /// RK stages are not unit quaternions, and Eigen's rotation q v = v + 2w(u×v) +

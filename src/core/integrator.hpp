@@ -49,6 +49,10 @@ using OrderedStepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s,
 struct MethodInfo {
   Method method;
   std::string_view name;
+  /// One line for people (markdown: `code`, no '|' escaping): what the method
+  /// is and what it integrates in. The README's method table is generated from
+  /// it (`tumble methods --readme README.md`).
+  std::string_view description;
   int order;                 ///< global order (adaptive pairs: of the solution they advance; exact: 0 = exact when torque-free)
   StepFn step;               ///< one fixed step (adaptive pairs: one uncontrolled step)
   CoordsStepFn coords_step;  ///< the same step in Euler's coordinates, or nullptr (steps on the seed's state)

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/quaternion.hpp"
 
 namespace tumble {
@@ -17,16 +17,8 @@ constexpr double kSafety = 0.5;           // aim at half the tolerance
 constexpr double kPilotBudgetS = 0.2;     // predicted CPU per candidate's pilot
 constexpr double kMaxPilotSteps = 1 << 22;
 constexpr double kRoundOff = 1e-13;       // end differences below this are round-off
-constexpr double kMaxRunSteps = 1e9;      // the scenes' step cap (scene::kMaxSteps)
 constexpr double kAdaptiveMargin = 10;    // adaptive pairs run at rtol = tolerance / this
 constexpr double kPriceWindows = 32;      // an adaptive pair is priced on 1/32 of the run
-
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // End state after `duration` with `cfg`, or nullopt when the run diverged.
 std::optional<BodyState> run(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg, double duration,
@@ -52,7 +44,8 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
                                    const ChoiceRequest& r, double budget_s) {
   MethodEstimate e;
   e.method = method;
-  const int p = method == Method::exact ? 2 : method_order(method);  // exact + kicks: Strang, order 2
+  const MethodInfo& info = method_info(method);
+  const int p = info.closed_form_if_free ? 2 : info.order;  // closed form + kicks: Strang, order 2
   const double ns = step_cost_ns(method, true);
   auto cfg = [&](double n) {
     StepConfig c;
@@ -103,15 +96,15 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
   }
   if (!e.usable) {
     const double last = d_k.empty() ? 0 : d_k.back();
-    e.note = d_k.empty() ? "pilot budget (" + fmt("%.2g", budget_s * 1e3) + " ms) too small for a second run" :
+    e.note = d_k.empty() ? "pilot budget (" + format_number(budget_s * 1e3, 2) + " ms) too small for a second run" :
              last <= kRoundOff ? "no change measured" :
-             "order " + std::to_string(p) + " not seen within the pilot's budget (" + fmt("%.2g", budget_s * 1e3) +
-             " ms: up to " + fmt("%.0f", n) + " steps; last difference " + fmt("%.1e", last) + ")";
+             "order " + std::to_string(p) + " not seen within the pilot's budget (" + format_number(budget_s * 1e3, 2) +
+             " ms: up to " + format_number(n, 0, 'f') + " steps; last difference " + format_number(last, 1, 'e') + ")";
     return e;
   }
   if (e.steps > kMaxRunSteps) {
     e.usable = false;
-    e.note = "needs " + fmt("%.2g", e.steps) + " steps, beyond the cap of 1e9";
+    e.note = "needs " + format_number(e.steps, 2) + " steps, beyond the cap of " + format_number(kMaxRunSteps);
     return e;
   }
   e.cost_s = e.steps * ns * 1e-9;
@@ -137,7 +130,7 @@ MethodEstimate adaptive_estimate(Method method, const ChoiceRequest& r, bool pri
   long steps = 0;
   if (!run(m, s0, e.config, r.duration / kPriceWindows, &steps)) {
     e.usable = false;
-    e.note = "diverged in the first 1/" + fmt("%.0f", kPriceWindows) + " of the run";
+    e.note = "diverged in the first 1/" + format_number(kPriceWindows, 0, 'f') + " of the run";
     return e;
   }
   e.steps = static_cast<double>(std::max(1L, steps)) * kPriceWindows;
@@ -158,9 +151,20 @@ double step_cost_ns(Method method, bool forced) {
   return forced ? i.cost_ns_forced : i.cost_ns_free;
 }
 
+bool auto_takes_closed_form(const RigidBodyModel& m) { return m.forces.empty(); }
+
+MethodChoice auto_without_tolerance(const RigidBodyModel& m, const StepConfig& asked) {
+  MethodChoice c;
+  c.config = asked;
+  if (auto_takes_closed_form(m)) c.config.method = Method::exact;
+  c.reason = std::string(method_name(c.config.method)) +
+             (auto_takes_closed_form(m) ? ": torque-free, closed form" : ": has forces (no tolerance given)");
+  return c;
+}
+
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
   MethodChoice c;
-  if (m.forces.empty()) {
+  if (auto_takes_closed_form(m)) {
     c.config.method = Method::exact;
     c.config.dt = r.duration;
     c.reason = "exact: torque-free, so the closed form (error at round-off)";
@@ -200,24 +204,24 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
   if (!best) {
     std::string why;
     for (const MethodEstimate& e : c.candidates) why += std::string(why.empty() ? "" : "; ") + std::string(method_name(e.method)) + ": " + e.note;
-    throw InputError("method = \"auto\": no method could be shown to meet tolerance " + fmt("%.3g", r.tolerance) +
+    throw InputError("method = \"auto\": no method could be shown to meet tolerance " + format_number(r.tolerance, 3) +
                      " rad on body '" + m.name + "' (" + why + "); pick a method and dt yourself");
   }
   c.config = best->config;
   c.error = best->error;
   c.cost_s = best->cost_s;
   c.reason = std::string(method_name(best->method)) +
-             (method_info(best->method).adaptive ? " at rtol " + fmt("%.0e", best->config.rtol)
-                                           : " at dt " + fmt("%.3g", best->config.dt) + " s") +
-             ": predicted end error " + fmt("%.1e", best->error) + " rad <= tolerance " + fmt("%.3g", r.tolerance) +
-             (best->steps > 0 ? ", " + fmt("%.0f", best->steps) + " steps, ~" + fmt("%.2g", best->cost_s * 1e3) + " ms"
+             (method_info(best->method).adaptive ? " at rtol " + format_number(best->config.rtol, 0, 'e')
+                                           : " at dt " + format_number(best->config.dt, 3) + " s") +
+             ": predicted end error " + format_number(best->error, 1, 'e') + " rad <= tolerance " + format_number(r.tolerance, 3) +
+             (best->steps > 0 ? ", " + format_number(best->steps, 0, 'f') + " steps, ~" + format_number(best->cost_s * 1e3, 2) + " ms"
                               : " (its rtol asks for the end error; no pilot)");
   const MethodEstimate* runner = nullptr;
   for (const MethodEstimate& e : c.candidates)
     if (e.usable && &e != best && (!runner || e.cost_s < runner->cost_s)) runner = &e;
   if (runner)
     c.reason += "; next cheapest " + std::string(method_name(runner->method)) + " ~" +
-                fmt("%.2g", runner->cost_s * 1e3) + " ms";
+                format_number(runner->cost_s * 1e3, 2) + " ms";
   return c;
 }
 

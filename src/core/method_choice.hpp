@@ -51,7 +51,16 @@ double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodySt
 /// choice does not depend on the load of the machine it runs on.
 double step_cost_ns(Method method, bool forced);
 
-/// Torque-free bodies get `exact` (the closed form, error at round-off). Other
+/// `method = "auto"`'s first rule, the one place it is decided: a torque-free
+/// body needs no measurement, as the closed form (`exact`) is exact for it.
+bool auto_takes_closed_form(const RigidBodyModel& m);
+
+/// `method = "auto"` without a tolerance: `exact` for a torque-free body, else
+/// `asked` as it is (dt, rtol, atol, and StepConfig's default method unless the
+/// caller set another), with the one-line reason. No candidates are measured.
+MethodChoice auto_without_tolerance(const RigidBodyModel& m, const StepConfig& asked);
+
+/// Torque-free bodies get `exact` (auto_takes_closed_form: the closed form, error at round-off). Other
 /// bodies, with `prune` (scenes): `exact` when no force torques the body and
 /// its pilot ladder qualifies, else the highest-order adaptive pair (dop853) at
 /// rtol = tolerance / 10 with no pilot (the pairs' rtol asks for the end error;

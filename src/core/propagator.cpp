@@ -1,10 +1,11 @@
 #include "core/propagator.hpp"
 
 #include <cmath>
-#include <sstream>
+#include <string>
 
 #include "core/dynamics.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/quaternion.hpp"
 
 namespace tumble {
@@ -30,12 +31,10 @@ std::optional<std::string> coarse_step_warning(const RigidBodyModel& m, const Bo
   if (info.adaptive || (info.closed_form_if_free && m.forces.empty())) return std::nullopt;
   const double turn = cfg.dt * rate(m, s0);
   if (!(turn > info.max_turn_per_step)) return std::nullopt;  // NaN too: no NaN in a message
-  std::ostringstream msg;
-  msg.precision(3);
-  msg << "body '" << m.name << "': dt = " << cfg.dt << " s turns or damps by " << turn << " rad per step, beyond the "
-      << info.max_turn_per_step << " that " << info.name << " follows; expect a wrong or diverging run (dt <= "
-      << info.max_turn_per_step / rate(m, s0) << " s follows it)";
-  return msg.str();
+  return "body '" + m.name + "': dt = " + format_number(cfg.dt, 3) + " s turns or damps by " + format_number(turn, 3) +
+         " rad per step, beyond the " + format_number(info.max_turn_per_step, 3) + " that " + std::string(info.name) +
+         " follows; expect a wrong or diverging run (dt <= " + format_number(info.max_turn_per_step / rate(m, s0), 3) +
+         " s follows it)";
 }
 
 Propagator::Propagator(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg)
@@ -93,14 +92,15 @@ void Propagator::check_free(const BodyState& s, double t, double h) {
 }
 
 void Propagator::diverged(bool finite, double t, double h) const {
-  std::ostringstream msg;
-  msg.precision(6);
-  msg << "diverged at t=" << t << " s, step " << steps_ << ", body '" << m_->name << "', method " << info_->name
-      << (finite ? " (energy grew beyond the work of the declared forces)" : "");
+  std::string msg = "diverged at t=" + format_number(t, 6) + " s, step " + std::to_string(steps_) + ", body '" +
+                    m_->name + "', method " + std::string(info_->name) +
+                    (finite ? " (energy grew beyond the work of the declared forces)" : "");
   const bool geometric = cfg_.method == Method::splitting || cfg_.method == Method::exact;
-  if (std::isfinite(h) && h > 0) msg << "; try dt <= " << h / 10 << " s" << (geometric ? "" : " or a geometric method (splitting, exact)");
-  else if (!geometric) msg << "; try a geometric method (splitting, exact)";
-  throw Diverged(msg.str(), t, steps_);
+  if (std::isfinite(h) && h > 0)
+    msg += "; try dt <= " + format_number(h / 10, 6) + " s" + (geometric ? "" : " or a geometric method (splitting, exact)");
+  else if (!geometric)
+    msg += "; try a geometric method (splitting, exact)";
+  throw Diverged(msg, t, steps_);
 }
 
 void Propagator::grid_step() {

@@ -15,12 +15,19 @@
 
 namespace tumble {
 
+/// How a body is stepped: the one config of the core, the scenes' [simulation]
+/// and the CLI. Its default method is the scenes' default: `splitting` keeps
+/// |L| exactly and the energy without drift at any dt, forces or not.
 struct StepConfig {
-  Method method = Method::rk4;
+  Method method = Method::splitting;
   double dt = 1e-3;         ///< s, fixed step (adaptive pairs: unused)
   double rtol = 1e-9;       ///< adaptive pairs (rk45, dop853) only
   double atol = 1e-12;      ///< adaptive pairs only (a fraction of the body's scales)
 };
+
+/// Most steps one run may take (duration / dt): scenes reject more, and
+/// `method = "auto"` never picks more.
+inline constexpr double kMaxRunSteps = 1e9;
 
 /// A warning when dt is too coarse for the method to follow the body's initial
 /// rotation: dt·(|ω| + damping rates) above MethodInfo::max_turn_per_step.

@@ -1,16 +1,9 @@
 #include "io/trajectory_csv.hpp"
 
-#include <cstdio>
-
 #include "core/dynamics.hpp"
+#include "core/format.hpp"
 
 namespace tumble::io {
-
-std::string format_double(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 void append_trajectory_row(std::string& out, double t, std::string_view label, const RigidBodyModel& m,
                            const BodyState& s) {
@@ -18,12 +11,12 @@ void append_trajectory_row(std::string& out, double t, std::string_view label, c
   const Eigen::Vector3d v = velocity(m, s), w = omega_world(m, s);
   const double cols[] = {s.c.x(), s.c.y(), s.c.z(), q.w(), q.x(), q.y(), q.z(), v.x(), v.y(), v.z(),
                          w.x(),   w.y(),   w.z(),   s.L.x(), s.L.y(), s.L.z(), total_energy(m, s)};
-  out += format_double(t);
+  out += format_number(t);
   out += ',';
   out += label;
   for (double c : cols) {
     out += ',';
-    out += format_double(c);
+    out += format_number(c);
   }
   out += '\n';
 }

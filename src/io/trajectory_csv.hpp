@@ -13,9 +13,6 @@ namespace tumble::io {
 /// The header line (without newline).
 inline constexpr const char* kTrajectoryHeader = "t,body,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,energy";
 
-/// printf("%.17g"): round-trips every double.
-std::string format_double(double v);
-
 /// Appends the row of body `m` in state `s` at time `t` (s): centre (m), cloud
 /// orientation, velocity (m/s), omega_world (rad/s), L (kg m^2/s), total
 /// energy (J), all in the world frame; `label` fills the body column.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
@@ -52,9 +53,9 @@ std::string method_key(const scene::Scene& s) {
     for (Method m : s.render.compare_methods) labels.emplace_back(method_name(m));
   else
     for (const scene::Body& b : s.bodies) {
-      const std::string n = !s.simulation.method && s.simulation.tolerance
-                                ? "auto@" + io::format_double(*s.simulation.tolerance)
-                                : std::string(method_name(scene::resolve_method(s.simulation.method, b.model)));
+      const std::string n = s.simulation.automatic && s.simulation.tolerance
+                                ? "auto@" + format_number(*s.simulation.tolerance)
+                                : std::string(method_name(scene::step_config(s.simulation, b.model).method));
       if (std::find(labels.begin(), labels.end(), n) == labels.end()) labels.push_back(n);
     }
   std::string key;
@@ -127,7 +128,7 @@ void describe(Job& j, const std::vector<Run>& runs, const render::GlContext& ctx
   Manifest& man = j.man;
   for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
   for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
-  man.dt = s.simulation.dt;
+  man.dt = s.simulation.step.dt;
   man.fps = s.render.output.fps;
   man.frame = s.render.output;
   man.samples = samples;

@@ -50,7 +50,7 @@ int sub_samples(const std::vector<const RigidBodyModel*>& models, const std::vec
 std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
   std::vector<std::optional<Method>> methods;
   for (Method m : s.render.compare_methods) methods.push_back(m);
-  if (methods.empty()) methods.push_back(s.simulation.method);
+  if (methods.empty()) methods.push_back(s.simulation.automatic ? std::nullopt : std::optional(s.simulation.step.method));
   const scene::FrameClock clock = scene::frame_clock(s, fps);
   const bool curves = s.render.draw.trails > 0 || !s.render.explain.views.empty();
   std::vector<const RigidBodyModel*> models;
@@ -59,7 +59,8 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
   for (const auto& method : methods) {
     Run run;
     scene::SimulationConfig sim = s.simulation;
-    sim.method = method;
+    sim.automatic = !method;
+    if (method) sim.step.method = *method;
     std::vector<std::unique_ptr<Propagator>> props;
     // Labels list each method and step once, compared whole (by enum for the
     // methods): rk45 and rk4 are two entries, not one substring of the other.

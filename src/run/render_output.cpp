@@ -6,6 +6,7 @@
 
 #include "run/manifest_parts.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
 #include "io/json.hpp"
@@ -66,7 +67,7 @@ void remove_file(const fs::path& p) {
 std::string settings_hash(const scene::Scene& s, const std::string& method) {
   const scene::OutputConfig& out = s.render.output;
   std::ostringstream k;
-  k << s.content_hash << '|' << method << '|' << io::format_double(s.simulation.dt) << '|' << io::format_double(out.fps)
+  k << s.content_hash << '|' << method << '|' << format_number(s.simulation.step.dt) << '|' << format_number(out.fps)
     << '|' << out.width << 'x' << out.height << '|' << out.samples();
   if (out.aa == scene::Antialias::fxaa) k << "|fxaa";  // MSAA and none hash as before `aa` existed
   return scene::fnv1a_hex(k.str());

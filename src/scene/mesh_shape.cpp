@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/mass_properties.hpp"
 #include "core/mesh_fill.hpp"
 #include "scene/internal.hpp"
@@ -26,12 +27,6 @@ std::optional<double> unit_scale(const std::string& u) {
   if (u == "mm") return 0.001;
   if (u == "in") return 0.0254;
   return std::nullopt;
-}
-
-std::string fmt(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
 }
 
 std::string holes(const MeshReport& r) {
@@ -85,7 +80,7 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
     if (estimate > 4 * budget) {
       s.error(q.tolerance ? "inertia_tolerance" : "resolution",
               q.tolerance ? "no cloud within the particle cap meets inertia_tolerance; raise it"
-                          : "resolution " + std::to_string(res) + " gives about " + fmt(estimate) +
+                          : "resolution " + std::to_string(res) + " gives about " + format_number(estimate, 3) +
                                 " particles, over the cap; lower it");
       return {};
     }
@@ -184,7 +179,7 @@ void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext&
     if (volume && src.report.signed_volume < 0) {
       flip_orientation(mesh);
       src.flipped = true;
-      warn("the mesh is inside out (signed volume " + fmt(src.report.signed_volume) +
+      warn("the mesh is inside out (signed volume " + format_number(src.report.signed_volume, 3) +
            " m³); its faces were flipped");
     }
     if (volume && !src.report.watertight() && q.tolerance) {
@@ -210,11 +205,11 @@ void read_mesh_shape(const toml::table& t, const std::string& path, LoadContext&
     if (volume && !src.report.watertight()) {
       const double frac = static_cast<double>(src.ambiguous) / static_cast<double>(cloud.size());
       const std::string what = "not watertight (" + holes(src.report) + "); the inside test is the generalized "
-                               "winding number, which is ambiguous (between 0.25 and 0.75) at " + fmt(100 * frac) +
+                               "winding number, which is ambiguous (between 0.25 and 0.75) at " + format_number(100 * frac, 3) +
                                " % of the " + std::to_string(cloud.size()) + " particles";
       if (frac > kMaxAmbiguous) {
         s.error("fill", src.file + ": " + what + ": the holes are too large for it to tolerate (limit " +
-                            fmt(100 * kMaxAmbiguous) + " %); close the mesh or use fill = \"surface\"");
+                            format_number(100 * kMaxAmbiguous, 3) + " %); close the mesh or use fill = \"surface\"");
         return;
       }
       warn(what + ", so it tolerates the holes; there is no exact tensor to compare with");

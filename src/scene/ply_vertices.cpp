@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 
 namespace tumble::scene {
 
@@ -70,12 +71,6 @@ std::string quote(std::string_view s) {
   std::string out = "'";
   for (char c : s.substr(0, 40)) out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
   return out + (s.size() > 40 ? "...'" : "'");
-}
-
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
 }
 
 class Header {
@@ -292,7 +287,7 @@ void read_record(Data& d, const Element& e, std::uint64_t i, const std::string& 
     }
     const double n = get(*p.count, p);
     if (!(n >= 0 && n <= 0x1p53 && n == std::floor(n)))
-      throw InputError(name + d.at() + ": " + record() + ": list " + quote(p.name) + " has length " + num(n) +
+      throw InputError(name + d.at() + ": " + record() + ": list " + quote(p.name) + " has length " + format_number(n, 6) +
                        "; expected a whole number >= 0");
     if (!vertices) {
       check(d.skip(*p.type, static_cast<std::uint64_t>(n)), p);
@@ -301,7 +296,7 @@ void read_record(Data& d, const Element& e, std::uint64_t i, const std::string& 
     for (std::uint64_t k2 = 0; k2 < static_cast<std::uint64_t>(n); ++k2) {
       const double v = get(*p.type, p);
       if (!(v >= 0 && v < static_cast<double>(vertices) && v == std::floor(v)))
-        throw InputError(name + d.at() + ": " + record() + ": list " + quote(p.name) + " holds " + num(v) +
+        throw InputError(name + d.at() + ": " + record() + ": list " + quote(p.name) + " holds " + format_number(v, 6) +
                          "; expected a vertex index in [0, " + std::to_string(vertices) + ")");
     }
   }
@@ -335,12 +330,12 @@ PlyVertices read_ply(std::istream& in, const std::string& name, bool whole) {
     read_record(d, *vertex, i, name, &v);
     const Eigen::Vector3d p(v[std::size_t(x)], v[std::size_t(y)], v[std::size_t(z)]);
     const std::string at = name + ": vertex " + std::to_string(i) + ": ";
-    if (!p.allFinite()) throw InputError(at + "position (" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ") is not finite");
+    if (!p.allFinite()) throw InputError(at + "position (" + format_number(p.x(), 6) + ", " + format_number(p.y(), 6) + ", " + format_number(p.z(), 6) + ") is not finite");
     out.positions.push_back(p);
     if (mass < 0) continue;
     const double m = v[std::size_t(mass)];
-    if (!std::isfinite(m)) throw InputError(at + "mass " + num(m) + " is not finite");
-    if (m < 0) throw InputError(at + "mass " + num(m) + " kg is negative");
+    if (!std::isfinite(m)) throw InputError(at + "mass " + format_number(m, 6) + " is not finite");
+    if (m < 0) throw InputError(at + "mass " + format_number(m, 6) + " kg is negative");
     out.masses.push_back(m);
   }
   for (auto e = vertex + 1; whole && e != h.elements.end(); ++e)
@@ -349,7 +344,7 @@ PlyVertices read_ply(std::istream& in, const std::string& name, bool whole) {
   double total = 0;
   for (double m : out.masses) total += m;
   if (mass >= 0 && !(total > 0 && std::isfinite(total)))
-    throw InputError(name + ": the vertex masses sum to " + num(total) + " kg; expected a positive, finite total");
+    throw InputError(name + ": the vertex masses sum to " + format_number(total, 6) + " kg; expected a positive, finite total");
   return out;
 }
 

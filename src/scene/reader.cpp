@@ -30,12 +30,6 @@ std::string type_name(toml::node_type t) {
 
 }  // namespace
 
-std::string format_number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 Diagnostic Diagnostics::make(const toml::source_region& at, std::string key, std::string message) const {
   Diagnostic dg;
   dg.file = file_;

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <toml++/toml.h>
 
+#include "core/format.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::scene::detail {
@@ -56,8 +57,6 @@ struct Range {
   bool contains(double v) const;
 };
 
-/// %.17g, the shortest text that round-trips.
-std::string format_number(double v);
 /// Short description of a value for "found ..." (type and value).
 std::string describe(const toml::node& n);
 /// Levenshtein distance (for did-you-mean).

@@ -26,8 +26,8 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
   if (!t) return;
   TableReader r(*t, "simulation", ctx.diag, {"method", "dt", "duration", "fps", "rtol", "atol", "tolerance"});
   if (auto m = r.string("method")) {
-    if (*m == "auto") sim.method.reset();
-    else if (auto pm = parse_method(*m)) sim.method = *pm;
+    if (*m == "auto") sim.automatic = true;
+    else if (auto pm = parse_method(*m)) sim.step.method = *pm;
     else {
       std::vector<std::string_view> names{"auto"};
       for (Method k : kAllMethods) names.push_back(method_name(k));
@@ -38,25 +38,25 @@ void read_simulation(TableReader& root, detail::LoadContext& ctx, Scene& s) {
     }
   }
   const std::optional<double> dt = r.number("dt", Range::positive());
-  sim.dt = dt.value_or(sim.dt);
+  sim.step.dt = dt.value_or(sim.step.dt);
   sim.tolerance = r.number("tolerance", Range::closed(1e-12, 1));
-  if (sim.tolerance && sim.method)
+  if (sim.tolerance && !sim.automatic)
     r.error("tolerance", "expected method = \"auto\" with a tolerance (it picks the method and dt that meet it), "
-                         "found method = \"" + std::string(method_name(*sim.method)) + "\"; remove one of them");
+                         "found method = \"" + std::string(method_name(sim.step.method)) + "\"; remove one of them");
   else if (sim.tolerance && dt)
     r.error("dt", "expected no dt with method = \"auto\" and a tolerance: auto picks dt itself; remove dt or the tolerance");
   sim.duration = r.number("duration", Range::positive()).value_or(sim.duration);
   sim.fps = r.number("fps", Range::closed(1e-3, 1000)).value_or(sim.fps);
-  sim.rtol = r.number("rtol", {0, 1, true, "a tolerance in (0, 1]"}).value_or(sim.rtol);
-  sim.atol = r.number("atol", {0, 1e300, true, "a tolerance > 0"}).value_or(sim.atol);
-  if (sim.dt > sim.duration)
-    r.error("dt", "expected dt <= duration (" + detail::format_number(sim.duration) + " s), found " +
-                      detail::format_number(sim.dt));
-  else if (sim.duration / sim.dt > kMaxSteps)
-    r.error("dt", "expected at most " + detail::format_number(kMaxSteps) + " steps (duration / dt, the cap), found " +
-                      detail::format_number(sim.duration / sim.dt) + "; raise dt");
+  sim.step.rtol = r.number("rtol", {0, 1, true, "a tolerance in (0, 1]"}).value_or(sim.step.rtol);
+  sim.step.atol = r.number("atol", {0, 1e300, true, "a tolerance > 0"}).value_or(sim.step.atol);
+  if (sim.step.dt > sim.duration)
+    r.error("dt", "expected dt <= duration (" + format_number(sim.duration) + " s), found " +
+                      format_number(sim.step.dt));
+  else if (sim.duration / sim.step.dt > kMaxRunSteps)
+    r.error("dt", "expected at most " + format_number(kMaxRunSteps) + " steps (duration / dt, the cap), found " +
+                      format_number(sim.duration / sim.step.dt) + "; raise dt");
   if (sim.duration * sim.fps > kMaxFrames)
-    r.error("fps", "duration × fps = " + detail::format_number(sim.duration * sim.fps) + " exceeds the frame cap of " +
+    r.error("fps", "duration × fps = " + format_number(sim.duration * sim.fps) + " exceeds the frame cap of " +
                        std::to_string(static_cast<long>(kMaxFrames)));
 }
 
@@ -162,27 +162,20 @@ const Body* Scene::find_body(std::string_view body_name) const {
   return nullptr;
 }
 
-Method resolve_method(const std::optional<Method>& m, const RigidBodyModel& model) {
-  if (m) return *m;
-  return model.forces.empty() ? Method::exact : Method::splitting;
-}
-
 StepConfig step_config(const SimulationConfig& sim, const RigidBodyModel& model) {
-  StepConfig c;
-  c.method = resolve_method(sim.method, model);
-  c.dt = sim.dt;
-  c.rtol = sim.rtol;
-  c.atol = sim.atol;
-  return c;
+  return sim.automatic ? auto_without_tolerance(model, sim.step).config : sim.step;
 }
 
 MethodPlan plan_method(const SimulationConfig& sim, const Body& body) {
   MethodPlan p;
-  if (sim.method || !sim.tolerance) {
-    p.config = step_config(sim, body.model);
-    if (!sim.method)
-      p.reason = std::string(method_name(p.config.method)) +
-                 (body.model.forces.empty() ? ": torque-free, closed form" : ": has forces (no tolerance given)");
+  if (!sim.automatic) {
+    p.config = sim.step;
+    return p;
+  }
+  if (!sim.tolerance) {
+    const MethodChoice c = auto_without_tolerance(body.model, sim.step);
+    p.config = c.config;
+    p.reason = c.reason;
     return p;
   }
   ChoiceRequest req;
@@ -197,11 +190,10 @@ MethodPlan plan_method(const SimulationConfig& sim, const Body& body) {
 }
 
 std::string step_label(const StepConfig& c, const RigidBodyModel& m) {
-  char buf[64];
-  if (method_info(c.method).adaptive) std::snprintf(buf, sizeof buf, "rtol = %g", c.rtol);
-  else if (c.method == Method::exact && m.forces.empty()) std::snprintf(buf, sizeof buf, "closed form");
-  else std::snprintf(buf, sizeof buf, "dt = %g s", c.dt);
-  return buf;
+  const MethodInfo& info = method_info(c.method);
+  if (info.adaptive) return "rtol = " + format_number(c.rtol, 6);
+  if (info.closed_form_if_free && m.forces.empty()) return "closed form";
+  return "dt = " + format_number(c.dt, 6) + " s";
 }
 
 Scene load_scene(const std::filesystem::path& path, const std::vector<Override>& overrides) {

@@ -31,21 +31,23 @@ struct Body;
 inline constexpr std::size_t kMaxParticles = 10'000'000;  ///< all bodies together
 inline constexpr std::size_t kMaxBodies = 1000;
 inline constexpr double kMaxFrames = 1e6;                 ///< duration × fps
-inline constexpr double kMaxSteps = 1e9;                  ///< duration / dt
+// The step cap (duration / dt) is core's kMaxRunSteps.
 
+/// The scene's [simulation]: core's StepConfig (method, dt, rtol, atol, with
+/// core's defaults) plus what only a scene has.
 struct SimulationConfig {
-  std::optional<Method> method = Method::splitting;  ///< nullopt = "auto" (see resolve_method)
-  double dt = 1e-3;              ///< s
+  StepConfig step;
+  /// method = "auto": core picks each body's method (auto_without_tolerance,
+  /// choose_method); step.method is then not read.
+  bool automatic = false;
   double duration = 10;          ///< s
   double fps = 30;               ///< samples (frames) per second, 1/s
-  double rtol = 1e-9;            ///< rk45 only
-  double atol = 1e-12;           ///< rk45 only
   /// "auto" only: largest end error (rad, see end_state_error); auto then picks dt too.
   std::optional<double> tolerance;
 };
 
-/// "auto" without a tolerance: `exact` for a torque-free body, `splitting` otherwise.
-Method resolve_method(const std::optional<Method>& m, const RigidBodyModel& model);
+/// The config a body is stepped with when no measurement is needed: the scene's
+/// step, or for "auto" core's pick without a tolerance.
 StepConfig step_config(const SimulationConfig& sim, const RigidBodyModel& model);
 
 /// How one body will be stepped, and why (`reason` is empty when the scene named the method).

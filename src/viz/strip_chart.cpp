@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/format.hpp"
 #include "viz/palette.hpp"
 #include "viz/text_layout.hpp"
 
@@ -60,16 +61,6 @@ glm::vec2 ChartMap::pixel(const glm::dvec3& p) const {
   return {static_cast<float>((p.x / aspect_ * 0.5 + 0.5) * w_), static_cast<float>((0.5 - p.y * 0.5) * h_)};
 }
 
-namespace {
-
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
-
-}  // namespace
-
 void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px) {
   const Head head = head_layout(in, width_px, font_px);
   const float f = font_px, w = static_cast<float>(width_px);
@@ -112,15 +103,15 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
   };
   const glm::vec2 top_left = m.pixel(m.at(in.t0, in.hi)), bottom_left = m.pixel(m.at(in.t0, in.lo));
   const glm::vec2 bottom_right = m.pixel(m.at(in.t1, in.lo));
-  text(num(in.hi), {4.0f, top_left.y - 0.5f * f}, ink);
-  text(num(in.lo), {4.0f, bottom_left.y - 0.5f * f}, ink);
+  text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
+  text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
   if (in.lo < 0 && in.hi > 0) {
     const float y0 = m.pixel(m.at(in.t0, 0)).y - 0.5f * f;
     // Only where it clears the range's ends.
     if (y0 > top_left.y + 0.5f * f && y0 + f < bottom_left.y - 0.5f * f) text("0", {4.0f, y0}, ink);
   }
-  const std::string t1 = num(in.t1) + " s";
-  text(num(in.t0) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
+  const std::string t1 = format_number(in.t1, 3) + " s";
+  text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
   text(t1, {bottom_right.x - text_width(t1, f), bottom_left.y + 0.3f * f}, ink);
   for (const TextItem& t : head.title.texts) view.texts.push_back(t);
   if (in.frame_h == 0 && !in.title.empty()) text(in.title, {top_left.x, 0.3f * f}, ink);

@@ -147,5 +147,33 @@ TEST(MethodChoice, EndStateErrorCountsShiftInRadiiOfGyration) {
   EXPECT_NEAR(end_state_error(m, a, b), 2e-3, 1e-15);
 }
 
+// The auto policy without a tolerance, in core alone (scenes only read it):
+// the closed form for a torque-free body; otherwise the step asked for, whose
+// default method is StepConfig's, which is what a scene without `method` gets.
+TEST(AutoWithoutTolerance, ClosedFormOnlyWhenTorqueFree) {
+  StepConfig asked;
+  asked.dt = 0.02;
+  const RigidBodyModel free = testing::body_with_moments({1, 2, 3}, 1.0, "free");
+  ASSERT_TRUE(auto_takes_closed_form(free));
+  const MethodChoice f = auto_without_tolerance(free, asked);
+  EXPECT_EQ(f.config.method, Method::exact);
+  EXPECT_EQ(f.config.dt, 0.02);
+  EXPECT_EQ(f.reason, "exact: torque-free, closed form");
+  EXPECT_TRUE(f.candidates.empty());
+
+  const RigidBodyModel pushed = thruster_model();
+  ASSERT_FALSE(auto_takes_closed_form(pushed));
+  const MethodChoice p = auto_without_tolerance(pushed, asked);
+  EXPECT_EQ(p.config.method, Method::splitting);
+  EXPECT_EQ(p.config.method, StepConfig{}.method);
+  EXPECT_EQ(p.config.dt, 0.02);
+  EXPECT_EQ(p.reason, "splitting: has forces (no tolerance given)");
+  // With a tolerance the torque-free body is not measured either.
+  EXPECT_EQ(choose_method(free, testing::spinning_state(free, Eigen::Quaterniond::Identity(), {0.1, 3, 0.1}),
+                          {2, 1.0 / 30, 1e-6})
+                .config.method,
+            Method::exact);
+}
+
 }  // namespace
 }  // namespace tumble

@@ -64,8 +64,9 @@ TEST(SceneKeys, DefaultsAndOverrides) {
   const auto s = load_scene_from_string(std::string("[[bodies]]\n") + kRefParticles, "t.toml");
   EXPECT_EQ(s.name, "scene");
   EXPECT_EQ(s.bodies[0].name, "body0");
-  EXPECT_EQ(s.simulation.method, Method::splitting);
-  EXPECT_DOUBLE_EQ(s.simulation.dt, 1e-3);
+  EXPECT_FALSE(s.simulation.automatic);
+  EXPECT_EQ(s.simulation.step.method, Method::splitting);
+  EXPECT_DOUBLE_EQ(s.simulation.step.dt, 1e-3);
   EXPECT_EQ(s.render.output.width, 1280);
   EXPECT_EQ(s.render.output.msaa, 4);
   EXPECT_EQ(s.render.output.aa, scene::Antialias::fxaa);
@@ -80,7 +81,7 @@ TEST(SceneKeys, AutoMethodPicksExactOnlyWhenTorqueFree) {
                                             kRefParticles + "[[bodies]]\nname = \"damped\"\nangular_damping = 0.1\n" +
                                             kRefParticles,
                                         "t.toml");
-  EXPECT_FALSE(s.simulation.method.has_value());
+  EXPECT_TRUE(s.simulation.automatic);
   EXPECT_EQ(scene::step_config(s.simulation, s.bodies[0].model).method, Method::exact);
   EXPECT_EQ(scene::step_config(s.simulation, s.bodies[1].model).method, Method::splitting);
 }
@@ -104,7 +105,8 @@ TEST(SceneKeys, AutoWithToleranceMeasuresEachBody) {
   EXPECT_NE(pushed.reason.find("tolerance 1e-05"), std::string::npos) << pushed.reason;
   // A method named by the scene is used as written, with no reason given.
   scene::SimulationConfig fixed = s.simulation;
-  fixed.method = Method::rk4;
+  fixed.automatic = false;
+  fixed.step.method = Method::rk4;
   EXPECT_EQ(scene::plan_method(fixed, s.bodies[1]).config.method, Method::rk4);
   EXPECT_TRUE(scene::plan_method(fixed, s.bodies[1]).reason.empty());
 }
