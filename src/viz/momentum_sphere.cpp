@@ -7,6 +7,7 @@
 #include "viz/captions.hpp"
 #include "viz/key.hpp"
 #include "viz/scene_view.hpp"
+#include "viz/surfaces.hpp"
 #include "viz/text_layout.hpp"
 
 namespace tumble::viz {
@@ -94,8 +95,17 @@ std::vector<KeyEntry> sphere_key() {
   return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
           key_entry(Meaning::momentum_point, "\u03a0: L in body axes"),
           key_entry(Meaning::polhode, "polhode (\u03a0's path)"),
+          {Swatch::block, {color_of(Meaning::polhode, 0.35f)}, "energy ellipsoid"},
           key_entry(Meaning::separatrix, "separatrix"),
           key_entry(Meaning::other_levels, "other energies")};
+}
+
+SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
+  // Σ Π_i²/I_i = 2E in units of |L|: semi-axes √(2E I_i)/|L|, the principal axes its own.
+  const glm::dvec3 semi(std::sqrt(two_E * I[0]) / L, std::sqrt(two_E * I[1]) / L, std::sqrt(two_E * I[2]) / L);
+  SurfaceItem s = ellipsoid({0, 0, 0}, glm::dmat3(1.0), semi, color_of(Meaning::polhode, 0.22f));
+  return s;  // unnamed: a key may cover its caps (keep_clear), never the sphere
+
 }
 
 float sphere_shift_room(float width_px, float height_px) {
@@ -124,6 +134,9 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
   add_axes(view, in);
   if (L <= 0) return;
+  // Only while it fits inside the axes' reach: near e₁ its e₃ semi-axis is √(I₃/I₁) |L| and would fill the view.
+  if (in.energy_ellipsoid && in.two_E > 0 && std::sqrt(in.two_E * I[2]) / L <= kEnergyEllipsoidReach)
+    view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
       PolylineItem p{{}, c, w, false, name};
