@@ -35,6 +35,7 @@ class ExplainViews {
   viz::View bodies_view(std::size_t i, long k, bool key) const;  // world, body_frame
   std::vector<viz::KeyEntry> key_entries(std::size_t i) const;
   void place_keys();
+  std::vector<viz::Box> overlay_boxes() const;  // captions and badge over the whole video, frame px
   void place_frame_key(const std::vector<viz::Box>& taken);
   const FrameBuilder& fb_;
   const scene::Scene& scene_;
