@@ -123,7 +123,11 @@ void ExplainViews::place_frame_key(const std::vector<viz::Box>& taken) {
   if (frame_key_.empty()) return;
   const float size = viz::text_px(viz::TextRole::key, height_);
   const glm::vec2 ks = viz::key_size(frame_key_, size);
-  for (std::size_t i = 0; i < slots_.size(); ++i) {
+  // First in the views whose keys it holds (beside what it explains), then in the others.
+  std::vector<std::size_t> order(slots_.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !slots_[i].key; });
+  for (const std::size_t i : order) {
     const scene::ViewConfig& vc = scene_.render.explain.views[i];
     if (vc.kind == scene::ViewKind::plot) continue;
     const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});

@@ -104,7 +104,9 @@ void keep_clear(const View& view, float w, float h, std::vector<Box>& out, std::
       if (!project_to_viewport(view.camera, w, h, p, px)) continue;
       b = {std::min(b.x0, px.x), std::min(b.y0, px.y), std::max(b.x1, px.x), std::max(b.y1, px.y)};
     }
-    if (b.x0 <= b.x1) out.push_back({b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1});
+    // What the view shows of it: clipped to the view (a body beside the camera projects far out).
+    b = {std::max(b.x0 - 1, 0.0f), std::max(b.y0 - 1, 0.0f), std::min(b.x1 + 1, w), std::min(b.y1 + 1, h)};
+    if (b.x0 < b.x1 && b.y0 < b.y1) out.push_back(b);
   };
   for (const BoxItem& b : view.boxes) add_points(box_corners(b));
   const glm::dvec3 up = glm::normalize(view.camera.up);
