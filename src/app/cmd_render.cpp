@@ -105,16 +105,9 @@ int run_layout(const RenderOptions& o) {
 int run_render(const RenderOptions& o) {
   if (!o.layout.empty()) return run_layout(o);
   const RenderPlan plan = plan_render(o);
-  const run::RenderRequest req{plan.scene,
-                               o.out_dir.empty() ? fs::path("out") / plan.scene.name : fs::path(o.out_dir),
-                               o.frames,
-                               o.resume,
-                               o.force,
-                               o.frames_out == "none",
-                               plan.backend,
-                               o.scene,
-                               plan.gpu,
-                               plan.jobs};
+  const fs::path dir = o.out_dir.empty() ? fs::path("out") / plan.scene.name : fs::path(o.out_dir);
+  const run::RenderRequest req{plan.scene, dir,     o.frames, o.resume, o.force, o.frames_out == "none",
+                               plan.backend, o.scene, plan.gpu, plan.jobs};
   ConsoleListener listener(o.progress != "none");
   return exit_code(run::render_scene(req, listener));
 }
