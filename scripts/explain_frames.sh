@@ -1,7 +1,7 @@
 #!/bin/sh
-# Regenerates the README's frames of the explanatory scenes (docs/explained_*.png,
-# docs/poinsot_*.png, docs/tennis_racket_flip.png): a few frames of the
-# explanatory scenes rendered at 640x360 (`tumble info` lists what each frame shows).
+# Regenerates the README's frames (docs/demo_frame.png, docs/explained_*.png,
+# docs/poinsot_*.png, docs/tennis_racket_flip.png): the demo and a few frames
+# of the explanatory scenes rendered at 640x360 (`tumble info` lists what each frame shows).
 set -eu
 cd "$(dirname "$0")/.."
 tumble=${TUMBLE:-build/release/src/app/tumble}
@@ -12,8 +12,8 @@ if [ ! -x "$tumble" ]; then
 fi
 # scene frame docs-name: frame 40 = the title card; 273 = the first flip
 # (t = 1.80 s, in the 1/8-speed segment); 495 = t = 4 s; tennis_racket 188 =
-# the middle racket's first flip (t = 0.98 s).
-for spec in "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 273 explained_flip" \
+# the middle racket's first flip (t = 0.98 s); dzhanibekov 120 = t = 4 s, the demo.
+for spec in "dzhanibekov 120 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 273 explained_flip" \
             "dzhanibekov_explained 495 explained_after" "poinsot 180 poinsot_3s" \
             "tennis_racket 188 tennis_racket_flip"; do
   set -- $spec

@@ -9,6 +9,14 @@ namespace tumble::render {
 
 FrameEncoder::FrameEncoder(int threads, std::size_t capacity, OnWritten on_written)
     : on_written_(std::move(on_written)) {
+  start(threads, capacity);
+}
+
+FrameEncoder::FrameEncoder(int threads, std::size_t capacity, OrderedSink sink) : sink_(std::move(sink)) {
+  start(threads, capacity);
+}
+
+void FrameEncoder::start(int threads, std::size_t capacity) {
   const int n = threads > 0 ? threads : worker_threads();
   capacity_ = capacity > 0 ? capacity : 2 * static_cast<std::size_t>(n);
   max_spare_ = capacity_ + static_cast<std::size_t>(n);
@@ -47,6 +55,7 @@ void FrameEncoder::push(Job job) {
   rethrow_locked(lock);
   space_or_idle_.wait(lock, [&] { return queue_.size() < capacity_ || error_; });
   rethrow_locked(lock);
+  job.seq = submitted_++;
   queue_.push_back(std::move(job));
   lock.unlock();
   work_ready_.notify_one();
@@ -79,6 +88,24 @@ RawFrame FrameEncoder::recycle_raw() {
   return raw;
 }
 
+// Frames finish out of order on several workers; the sink takes them in
+// order, one at a time. The frame before is in flight (the queue is FIFO), so
+// the turn comes. A frame that failed (image null) passes its turn on.
+void FrameEncoder::to_sink(std::size_t seq, const io::Image* image, std::exception_ptr& failure) {
+  std::unique_lock lock(mutex_);
+  turn_.wait(lock, [&] { return next_out_ == seq; });
+  lock.unlock();
+  if (image) try {
+      sink_.write(*image);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  lock.lock();
+  ++next_out_;
+  lock.unlock();
+  turn_.notify_all();
+}
+
 void FrameEncoder::worker() {
   Fxaa fxaa;           // this worker's scratch
   io::Image finished;  // a raw frame's image, reused
@@ -94,14 +121,18 @@ void FrameEncoder::worker() {
 
     std::exception_ptr failure;
     const bool raw = !job.raw.rgba.empty();
+    const io::Image& image = raw ? finished : job.image;
     try {
       // One thread each: the other workers and the drawing use the other cores.
       if (raw) finish_frame(job.raw, finished, fxaa, 1);
-      io::write_png_atomic(job.path, raw ? finished : job.image);
-      if (on_written_) on_written_(job.path);
+      if (!sink_.write) {
+        io::write_png_atomic(job.path, image);
+        if (on_written_) on_written_(job.path);
+      }
     } catch (...) {
       failure = std::current_exception();
     }
+    if (sink_.write) to_sink(job.seq, failure ? nullptr : &image, failure);
 
     lock.lock();
     --in_flight_;

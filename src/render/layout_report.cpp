@@ -109,6 +109,13 @@ void add_scene_items(const viz::View& v, const std::string& view, const PixelRec
                    front && inside(rect, c) && !behind_sphere(v, p.position, p.radius), {}, 0});
     out_order.push_back(order);
   }
+  for (const viz::BoxItem& b : v.boxes) {  // what the view shows of it: clipped to the view
+    push("body", "body", viz::box_corners(b), 0.0);
+    viz::Box& c = out.back().box;
+    c = {std::max(c.x0, float(rect.x)), std::max(c.y0, float(rect.y)), std::min(c.x1, float(rect.x + rect.width)),
+         std::min(c.y1, float(rect.y + rect.height))};
+    if (c.x0 >= c.x1 || c.y0 >= c.y1) c = {}, out.back().visible = false;
+  }
   for (const viz::ArrowItem& a : v.arrows)
     if (!a.name.empty()) push(a.name, "arrow", {a.origin + a.vector}, a.radius);
   for (const viz::PolylineItem& l : v.polylines)
@@ -131,6 +138,10 @@ std::vector<LayoutItem> layout_items(const viz::DrawList& dl, int frame_w, int f
     add_texts(v.texts, name, rect, order, out, order_of, occluders);
   }
   add_texts(dl.texts, "frame", {0, 0, frame_w, frame_h}, order, out, order_of, occluders);
+  for (const std::string& note : dl.notes) {
+    out.push_back({"frame", "key", "note", {}, false, note, 0});
+    order_of.push_back(0);
+  }
   // Whatever a later, opaque enough backdrop (or, for markers and curves, text) covers by half is hidden.
   for (std::size_t j = 0; j < out.size(); ++j)
     for (const Occluder& o : occluders)
@@ -150,6 +161,7 @@ void write_layout(std::ostream& out, long frame, const std::vector<LayoutItem>& 
     j["box"] = {std::round(it.box.x0 * 10) / 10, std::round(it.box.y0 * 10) / 10, std::round(it.box.x1 * 10) / 10,
                 std::round(it.box.y1 * 10) / 10};
     j["visible"] = it.visible;
+    if (it.kind == "note") j["text"] = it.text;
     if (it.kind == "text" || it.kind == "key") {
       j["text"] = it.text;
       j["size_px"] = std::round(it.size_px * 100) / 100;

@@ -299,8 +299,12 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
 
   surfaces_.draw(view.surfaces, cam.view, cam.proj, kLightDir);
   spheres_.draw(view.particles, view.camera, cam.view, cam.proj, rect.height, sphere_shading());
-  // A solid of particles or a mesh hides the arrows inside it: show them faintly.
-  draw_meshes(batches, cam, !view.particles.empty() || !view.surfaces.empty());
+  // A solid of particles or an opaque mesh hides the arrows inside it: show
+  // them faintly (a translucent surface alone, the momentum sphere's energy
+  // ellipsoid, hides nothing, and its opaque ball must keep hiding the far side).
+  const bool solid = std::any_of(view.surfaces.begin(), view.surfaces.end(),
+                                 [](const viz::SurfaceItem& s) { return s.color.a >= 1.0f; });
+  draw_meshes(batches, cam, !view.particles.empty() || solid);
 
   gl_.DepthMask(GL_FALSE);  // trails and edges are translucent overlays
   for (const Polyline& p : batches.polylines) {

@@ -131,9 +131,10 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
     }
     slots_.push_back(std::move(slot));
   }
+  place_keys();
 }
 
-viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
+viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const Run& run = runs_[0];
@@ -159,50 +160,11 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k) const {
   viz::View v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, top);
   v.name = vc.kind == scene::ViewKind::world ? "world" : "body_frame";
   for (viz::TextItem& t : head.texts) v.texts.push_back(std::move(t));
-  if (scene_.render.explain.key) {
-    std::vector<std::pair<std::string, viz::Color>> bodies;
-    for (const scene::Body& b : scene_.bodies)
-      bodies.emplace_back(b.name, viz::Color(0.75f * b.color.cast<float>().x(), 0.75f * b.color.cast<float>().y(),
-                                             0.75f * b.color.cast<float>().z(), 1.0f));
-    const scene::DrawConfig& d = scene_.render.draw;
-    const viz::DrawOptions opt{d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
-    // In a corner clear of the bodies on screen and of the view's text.
-    const float h = static_cast<float>(slot.height_px);
-    std::vector<viz::Box> avoid;
-    for (const viz::TextItem& t : v.texts) avoid.push_back(viz::text_box(t));
-    if (kk >= 0)
-      for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
-        const glm::dvec3 c = to_glm(run.frames[static_cast<std::size_t>(kk)][b].c);
-        const double r = viz::box_radius(scene_.bodies[b].model);
-        glm::vec2 p0, p1;
-        if (!viz::project_to_viewport(v.camera, w, h, c, p0) ||
-            !viz::project_to_viewport(v.camera, w, h, c + r * glm::normalize(v.camera.up), p1))
-          continue;
-        const float rp = glm::length(p1 - p0);
-        avoid.push_back({p0.x - rp, p0.y - rp, p0.x + rp, p0.y + rp});
-      }
-    // And of the speed badge over the frame's corner (frame px to this view's px).
-    const double rate = fb_.clock().rate(k);
-    if (const auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_)) {
-      const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
-      const viz::Box b = viz::text_box(*badge);
-      const float dx = static_cast<float>(f[0] * width_), dy = static_cast<float>(f[1] * height_);
-      avoid.push_back({b.x0 - dx, b.y0 - dy, b.x1 - dx, b.y1 - dy});
-    }
-    const std::size_t texts = v.texts.size(), text_boxes = texts;
-    const viz::Box kb =
-        viz::add_key_clear(v, viz::bodies_key(opt, bodies), w, h, top, viz::text_px(viz::TextRole::key, height_), avoid);
-    // A view too small for it (no corner clear of its own text) goes without the key.
-    for (std::size_t i = 0; i < text_boxes; ++i)
-      if (avoid[i].overlaps(kb)) {
-        v.texts.resize(texts);
-        break;
-      }
-  }
+  if (key && slot.key) viz::add_key(v, key_entries(i), slot.key->top_left, viz::text_px(viz::TextRole::key, height_));
   return v;
 }
 
-viz::View ExplainViews::view_at(std::size_t i, long k) const {
+viz::View ExplainViews::view_at(std::size_t i, long k, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const Run& run = runs_[0];
@@ -214,7 +176,7 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
   viz::View v;
   switch (vc.kind) {
     case scene::ViewKind::world:
-    case scene::ViewKind::body_frame: v = bodies_view(i, k); break;
+    case scene::ViewKind::body_frame: v = bodies_view(i, k, key); break;
     case scene::ViewKind::momentum_sphere: {
       if (kk < 0) break;
       viz::MomentumSphereInput in;
@@ -225,7 +187,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       in.title = vc.title;
       if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
       in.camera = slot.sphere;
-      in.key = scene_.render.explain.key;
+      in.key = key && slot.key;
+      in.key_spot = slot.key;
       in.width_px = w, in.height_px = h, in.frame_h = height_;
       viz::build_momentum_sphere(v, in);
       break;
@@ -260,7 +223,8 @@ viz::View ExplainViews::view_at(std::size_t i, long k) const {
       }
       in.title = vc.title;
       in.camera = slot.sphere;
-      in.key = scene_.render.explain.key;
+      in.key = key && slot.key;
+      in.key_spot = slot.key;
       in.width_px = w, in.height_px = h, in.frame_h = height_;
       viz::build_poinsot(v, in);
       break;
@@ -290,6 +254,12 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
       for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, side)) dl.texts.push_back(std::move(t));
   }
   if (badge) dl.texts.push_back(*badge);
+  if (!frame_key_.empty()) {
+    viz::View key;
+    viz::add_key(key, frame_key_, frame_key_at_, viz::text_px(viz::TextRole::key, height_));
+    for (viz::TextItem& t : key.texts) dl.texts.push_back(std::move(t));
+  }
+  dl.notes = notes_;
 }
 
 bool ExplainViews::title_card(viz::DrawList& dl, long k) const {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "run/render_job.hpp"
+#include "viz/key.hpp"
 #include "viz/sphere_camera.hpp"
 
 namespace tumble::run {
@@ -28,14 +29,22 @@ class ExplainViews {
     double lo = -1, hi = 1;     // plot: value range over the whole run
     viz::SphereCameraSettings sphere;     // momentum_sphere, poinsot
     std::vector<viz::SpherePose> track;   // momentum_sphere: the camera at each path sample
+    std::optional<viz::KeySpot> key;      // its own key's place (none: merged into the frame key, or off)
   };
-  viz::View view_at(std::size_t i, long k) const;
-  viz::View bodies_view(std::size_t i, long k) const;  // world, body_frame
+  viz::View view_at(std::size_t i, long k, bool key = true) const;
+  viz::View bodies_view(std::size_t i, long k, bool key) const;  // world, body_frame
+  std::vector<viz::KeyEntry> key_entries(std::size_t i) const;
+  void place_keys();
+  std::vector<viz::Box> overlay_boxes() const;  // captions and badge over the whole video, frame px
+  void place_frame_key(const std::vector<viz::Box>& taken);
   const FrameBuilder& fb_;
   const scene::Scene& scene_;
   const std::vector<Run>& runs_;
   int width_, height_;
   std::vector<Slot> slots_;
+  std::vector<viz::KeyEntry> frame_key_;   // the entries of views too small for their own key
+  glm::vec2 frame_key_at_{0};              // its top-left corner, frame px
+  std::vector<std::string> notes_;         // the layout report's notes (why a key is not in its view)
 };
 
 /// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).

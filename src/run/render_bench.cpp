@@ -8,6 +8,7 @@
 
 #include "run/frame_renderer.hpp"
 #include "run/render_job.hpp"
+#include "run/render_stream.hpp"
 #include "run/video.hpp"
 #include "run/video_stream.hpp"
 #include "golden/compare.hpp"
@@ -169,11 +170,7 @@ void measure_video(const scene::Scene& s, long frames, render::Renderer& high, c
   const std::vector<Run> runs = simulate_runs(s, frames, s.render.output.fps);
   const FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
   VideoStream stream(kW, kH, fps, VideoFormat::mp4, 18, out_dir / "stream_path.mp4", encoder);
-  io::Image img;
-  for (long k = 0; k < frames && stream.running() && !stream.broken(); ++k) {
-    high.render(builder.build(k), img);
-    stream.write(img, {});
-  }
+  if (stream.running()) stream_frames(high, builder, frames, stream, r.threads, {});
   if (const VideoResult sv = stream.finish(); sv.ok()) {
     r.stream_video.fps = frames / seconds_since(ts);
     r.stream_video.cpu_ms = 1000 * (cpu_seconds() - cs) / frames;
@@ -218,7 +215,7 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   r.gl_fxaa = chosen.gl_fxaa;
   r.paths = "FXAA with GPU paths: " + paths_name(chosen);
   r.other_paths = paths_name(other.gpu_paths());
-  const VideoEncoder encoder = choose_video_encoder(ctx->vendor(), r.threads);
+  const VideoEncoder encoder = choose_video_encoder(ctx->vendor(), render::usable_cores());
   r.video_encoder = encoder.codec + " " + encoder.preset;
   r.stream_threads = encoder.threads ? ", " + std::to_string(encoder.threads) + " thread(s)" : "";
   {

@@ -301,14 +301,14 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
   }
   render::Renderer renderer(*ctx, out.width, out.height, out.samples(), out.fxaa());
   const VideoEncoder encoder = out.video == scene::VideoFormat::mp4
-                                   ? choose_video_encoder(ctx->vendor(), render::worker_threads(r.jobs))
+                                   ? choose_video_encoder(ctx->vendor(), render::usable_cores())
                                    : VideoEncoder{};
   describe(j, runs, *ctx, renderer.samples(), encoder);
   l.arm_stop();
   if (r.stream) {
     j.save();
     return stream_render({r.dir, s, builder, renderer, j.man, j.existing, good, l,
-                          j.rerun(" --frames-out none"), diverged, encoder});
+                          j.rerun(" --frames-out none"), diverged, encoder, r.jobs});
   }
   if (j.resume) j.man.written = on_disk(j, 0);
   j.save();

@@ -1,12 +1,38 @@
 #include "run/render_stream.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 
 #include "io/atomic_file.hpp"
+#include "render/frame_encoder.hpp"
 #include "run/video_stream.hpp"
 
 namespace tumble::run {
+
+Streamed stream_frames(render::Renderer& renderer, const FrameBuilder& builder, long count, VideoStream& stream,
+                       int jobs, const StopPoll& stop, const std::function<void(long)>& advance) {
+  Streamed s;
+  // The sink polls `stop` while ffmpeg's pipe is full: once a signal came,
+  // every write returns at once, so the queue drains and the loop sees it.
+  render::FrameEncoder encoder(jobs, 0, render::FrameEncoder::OrderedSink{[&](const io::Image& img) {
+                                 stream.write(img, stop);
+                               }});
+  render::RawFrame raw;  // a finished frame's buffer, recycled: no page faults per frame
+  auto submit = [&] {
+    encoder.submit(std::move(raw));
+    raw = encoder.recycle_raw();
+  };
+  for (; s.frames < count; ++s.frames) {
+    if ((s.signal = stop ? stop() : 0) != 0 || stream.broken()) break;
+    if (renderer.render_overlapped(builder.build(s.frames), s.frames, raw)) submit();
+    if (advance) advance(s.frames + 1);
+  }
+  if (renderer.finish_overlapped(raw)) submit();  // on a GPU: the last frame read back
+  encoder.flush();
+  if (s.signal == 0 && stop) s.signal = stop();  // arrived during the last frames
+  return s;
+}
 
 Outcome stream_render(const StreamJob& j) {
   Manifest& man = j.manifest;
@@ -25,23 +51,17 @@ Outcome stream_render(const StreamJob& j) {
     return {Outcome::failed, 0, {}};
   }
   l.begin(count);
-  int signal = 0;
-  long k = 0;
-  io::Image img;  // one buffer: ffmpeg has read a frame once write() returns
-  for (; k < count && k < j.good; ++k) {
-    if ((signal = stop()) != 0) break;
-    j.renderer.render(j.builder.build(k), img);
-    if ((signal = stream.write(img, stop)) != 0 || stream.broken()) break;
-    l.advance(k + 1);
-  }
+  const Streamed s =
+      stream_frames(j.renderer, j.builder, std::min(count, j.good), stream, j.jobs, stop, [&](long n) { l.advance(n); });
   l.end();
-  if (signal == 0) signal = stop();
-  const VideoResult v = signal != 0 ? stream.abort(signal) : stream.finish();
+  const long k = s.frames;
+  const VideoResult v = s.signal != 0 ? stream.abort(s.signal) : stream.finish(stop);
   if (!v.ok()) {
     man.video_error = v.message;
     save();
     l.note(v.message);
-    if (signal == 0) return {Outcome::failed, 0, {}};
+    if (v.status != VideoResult::interrupted) return {Outcome::failed, 0, {}};
+    const int signal = v.signal;
     l.note(std::string("interrupted (") + (signal == SIGINT ? "SIGINT" : "SIGTERM") +
            "): a streamed render keeps no frames, so there is nothing to resume; run it again: " + j.rerun);
     return {Outcome::interrupted, signal, {}};

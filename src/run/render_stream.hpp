@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "render/renderer.hpp"
@@ -11,6 +12,7 @@
 #include "run/render_job.hpp"
 #include "run/render_output.hpp"
 #include "run/video.hpp"
+#include "run/video_stream.hpp"
 
 namespace tumble::run {
 
@@ -26,7 +28,22 @@ struct StreamJob {
   std::string rerun;          ///< the command that runs it again, for messages
   std::string diverged;       ///< why the simulation stopped early (when good < count)
   VideoEncoder encoder;       ///< the H.264 encoder (choose_video_encoder)
+  int jobs = 0;               ///< worker threads finishing frames (render::worker_threads)
 };
+
+/// How far stream_frames got: frames handed to the stream, and the stop
+/// signal that ended it early (0 = none).
+struct Streamed {
+  long frames = 0;
+  int signal = 0;
+};
+
+/// Draws frames 0..count-1 into `stream` until `stop` answers or ffmpeg stops
+/// reading. The drawing thread only draws and reads back; `jobs` workers
+/// (render::FrameEncoder) finish the frames (FXAA) meanwhile, and the stream
+/// takes them strictly in order. `advance` is told each frame drawn.
+Streamed stream_frames(render::Renderer& renderer, const FrameBuilder& builder, long count, VideoStream& stream,
+                       int jobs, const StopPoll& stop, const std::function<void(long)>& advance = {});
 
 /// Draws frames 0..count-1 into the video: done, failed (ffmpeg missing or
 /// failed), diverged (the video holds the frames before) or interrupted.

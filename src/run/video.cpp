@@ -137,7 +137,8 @@ VideoEncoder x264_encoder(int cores) {
   // fastest preset whose PSNR and SSIM against the frames are at least those
   // of x264's default (medium): ultrafast, at a quarter of medium's CPU time
   // and about twice its file size. One thread on 2 cores, where tumble draws
-  // on the other (a second x264 thread bought nothing); else x264's own count.
+  // and finishes frames on both (a second x264 thread bought nothing, with
+  // the serial stream and again with the overlapped one); else x264's own count.
   return {"libx264", "ultrafast", cores <= 2 ? 1 : 0};
 }
 

@@ -26,14 +26,16 @@ struct VideoEncoder {
 };
 
 /// libx264 at the preset and threads chosen by scripts/video_presets.sh's
-/// table (README, "Video encode"), for `cores` worker threads.
+/// table (README, "Video encode"), for `cores`: the cores this process may
+/// use (render::usable_cores), never --jobs, so that x264's thread count, and
+/// with it the video's bytes, do not depend on --jobs.
 VideoEncoder x264_encoder(int cores);
 
 /// x264_encoder for the cores this process may use (render::usable_cores).
 VideoEncoder default_video_encoder();
 
 /// h264_nvenc when `gl_vendor` is NVIDIA's and ffmpeg offers the encoder and
-/// can open it (a 16-frame trial encode), else x264_encoder(cores).
+/// can open it (a 16-frame trial encode), else x264_encoder(cores) (usable cores, not --jobs).
 VideoEncoder choose_video_encoder(const std::string& gl_vendor, int cores);
 
 /// ffmpeg's output options for `format` into `tmp`: H.264 yuv420p at CRF

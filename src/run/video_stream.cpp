@@ -1,6 +1,7 @@
 #include "run/video_stream.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,6 +13,10 @@
 #include "io/atomic_file.hpp"
 
 namespace tumble::run {
+
+namespace {
+constexpr int kPipeBytes = 1 << 20;
+}  // namespace
 
 VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int crf, std::filesystem::path output,
                          const VideoEncoder& encoder)
@@ -52,6 +57,12 @@ VideoStream::VideoStream(int width, int height, int fps, VideoFormat format, int
     return;
   }
   in_ = fds[1];
+  // Non-blocking: write() polls for room, so a stop signal caught by another
+  // thread is seen too.
+  ::fcntl(in_, F_SETFL, ::fcntl(in_, F_GETFL) | O_NONBLOCK);
+  // A bigger pipe (64 KiB by default, up to /proc/sys/fs/pipe-max-size):
+  // fewer wake-ups of ffmpeg and of the writer per frame. Best effort.
+  ::fcntl(in_, F_SETPIPE_SZ, kPipeBytes);
 }
 
 VideoStream::~VideoStream() {
@@ -69,6 +80,11 @@ int VideoStream::write(const io::Image& frame, const StopPoll& stop) {
       if (const int sig = stop(); sig != 0) return sig;
     const ssize_t n = ::write(in_, p, left);
     if (n < 0) {
+      if (errno == EAGAIN) {  // full: ffmpeg is busy
+        pollfd out{in_, POLLOUT, 0};
+        ::poll(&out, 1, 100);
+        continue;
+      }
       if (errno == EINTR) continue;
       broken_ = true;  // EPIPE: ffmpeg exited; finish() reports how
       break;
@@ -80,23 +96,34 @@ int VideoStream::write(const io::Image& frame, const StopPoll& stop) {
   return stop ? stop() : 0;
 }
 
-int VideoStream::wait_child() {
+int VideoStream::wait_child(const StopPoll& stop, int* stopped) {
   int status = 0;
-  while (::waitpid(pid_, &status, 0) < 0)
-    if (errno != EINTR) {
+  for (;;) {
+    const pid_t r = ::waitpid(pid_, &status, stop ? WNOHANG : 0);
+    if (r == pid_) break;
+    if (r < 0 && errno != EINTR) {
       pid_ = -1;
       return -1;
     }
+    if (r == 0) {  // still running
+      if ((*stopped = stop()) != 0) return 0;
+      ::poll(nullptr, 0, 20);
+    }
+  }
   pid_ = -1;
   if (WIFSIGNALED(status)) return -1 - WTERMSIG(status);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-VideoResult VideoStream::finish() {
+VideoResult VideoStream::finish(const StopPoll& stop) {
   if (pid_ <= 0) return status_;
   ::close(in_);
   in_ = -1;
-  const int end = wait_child();
+  // ffmpeg still encodes what the pipe holds (up to kPipeBytes): a stop
+  // signal meanwhile ends it as one while drawing would.
+  int stopped = 0;
+  const int end = wait_child(stop, &stopped);
+  if (stopped != 0) return abort(stopped);
   std::error_code ec;
   if (end != 0) {
     std::filesystem::remove(tmp_, ec);

@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <csignal>
 #include <filesystem>
 
@@ -26,26 +27,30 @@ class VideoStream {
   VideoStream& operator=(const VideoStream&) = delete;
 
   /// Writes one frame. A signal seen by `stop` while the pipe is full (ffmpeg
-  /// busy) ends the write: returns that signal, else 0. Throws nothing: a
-  /// broken pipe (ffmpeg died) shows in finish().
+  /// busy; polled every 100 ms, so any thread may have caught it) ends the
+  /// write: returns that signal, else 0. Throws nothing: a broken pipe
+  /// (ffmpeg died) shows in finish(). One writer at a time, any thread.
   int write(const io::Image& frame, const StopPoll& stop);
 
-  /// Ends the input, waits for ffmpeg and renames the video into place.
-  VideoResult finish();
+  /// Ends the input, waits for ffmpeg and renames the video into place. A
+  /// signal seen by `stop` meanwhile aborts (the result says interrupted).
+  VideoResult finish(const StopPoll& stop = {});
   /// Kills ffmpeg, removes the temp file; the result says `interrupted` by `signal`.
   VideoResult abort(int signal);
 
   bool running() const { return pid_ > 0; }
   /// ffmpeg stopped reading (it exited): no use drawing more frames.
-  bool broken() const { return broken_; }
+  bool broken() const { return broken_.load(); }
   const VideoResult& status() const { return status_; }
 
  private:
-  int wait_child();  // exit code, or -1 - signal
+  // Exit code, or -1 - signal; with `stop`, polls it and returns early with
+  // *stopped set (ffmpeg still running) when it answers.
+  int wait_child(const StopPoll& stop = {}, int* stopped = nullptr);
   std::filesystem::path output_, tmp_;
   pid_t pid_ = -1;
   int in_ = -1;      // the write end of ffmpeg's stdin
-  bool broken_ = false;
+  std::atomic<bool> broken_ = false;  // read by the drawing thread while a worker writes
   long frames_ = 0;  // written whole, for the check of the video
   int fps_ = 0;
   VideoFormat format_ = VideoFormat::mp4;

@@ -13,12 +13,12 @@ namespace tumble::scene::detail {
 
 namespace {
 
-// Default body colours (linear RGB), cycled by body index: after the first
-// (kept for the goldens), muted tones apart from the meanings' colours of
-// docs/colours.md (no L orange, ω purple or axis green).
+// Default body colours (linear RGB), cycled by body index: sand, grey, sage,
+// mauve, olive, rose; muted tones apart from the colour of every vector and
+// curve of docs/colours.md (tests/run/body_colour_test.cpp).
 constexpr std::array<std::array<double, 3>, 6> kPalette = {{
-    {0.25, 0.45, 0.80}, {0.66, 0.60, 0.50}, {0.50, 0.62, 0.56},
-    {0.62, 0.52, 0.60}, {0.56, 0.52, 0.40}, {0.40, 0.40, 0.45}}};
+    {0.72, 0.64, 0.48}, {0.60, 0.62, 0.68}, {0.50, 0.62, 0.56},
+    {0.62, 0.52, 0.60}, {0.56, 0.52, 0.40}, {0.70, 0.52, 0.50}}};
 
 bool valid_name(const std::string& n) {
   if (n.empty() || n.size() > 64) return false;

@@ -29,6 +29,14 @@ struct BoxItem {
   Color edge;               ///< crisp edge line colour
 };
 
+/// The eight world corners of `b` (what the layout report and the keys' placement call the body).
+inline std::vector<glm::dvec3> box_corners(const BoxItem& b) {
+  std::vector<glm::dvec3> out;
+  for (int i = 0; i < 8; ++i)
+    out.push_back(b.center + b.rotation * (b.half_extents * glm::dvec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
+  return out;
+}
+
 /// An arrow from `origin` to `origin + vector` (world, m).
 struct ArrowItem {
   glm::dvec3 origin;
@@ -58,6 +66,7 @@ struct SurfaceItem {
   std::shared_ptr<const SurfaceMesh> mesh;
   glm::dmat4 model;
   Color color;
+  std::string name = {};    ///< e.g. "ellipsoid": a key keeps clear of a named surface
 };
 
 /// One level of detail of a body's particles, in its cloud axes.
@@ -160,6 +169,8 @@ struct DrawList {
   int columns = 1;
   std::vector<View> views;
   std::vector<TextItem> texts;   ///< overlay over the whole frame
+  /// For the layout report only (kind "note"): e.g. why a view has no key of its own.
+  std::vector<std::string> notes;
 };
 
 }  // namespace tumble::viz

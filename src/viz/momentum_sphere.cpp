@@ -7,6 +7,7 @@
 #include "viz/captions.hpp"
 #include "viz/key.hpp"
 #include "viz/scene_view.hpp"
+#include "viz/surfaces.hpp"
 #include "viz/text_layout.hpp"
 
 namespace tumble::viz {
@@ -88,15 +89,29 @@ void add_axes(View& view, const MomentumSphereInput& in) {
   }
 }
 
+}  // namespace
+
 std::vector<KeyEntry> sphere_key() {
   return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
           key_entry(Meaning::momentum_point, "\u03a0: L in body axes"),
           key_entry(Meaning::polhode, "polhode (\u03a0's path)"),
+          {Swatch::block, {color_of(Meaning::polhode, 0.35f)}, "energy ellipsoid"},
           key_entry(Meaning::separatrix, "separatrix"),
           key_entry(Meaning::other_levels, "other energies")};
 }
 
-}  // namespace
+SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
+  // Σ Π_i²/I_i = 2E in units of |L|: semi-axes √(2E I_i)/|L|, the principal axes its own.
+  const glm::dvec3 semi(std::sqrt(two_E * I[0]) / L, std::sqrt(two_E * I[1]) / L, std::sqrt(two_E * I[2]) / L);
+  SurfaceItem s = ellipsoid({0, 0, 0}, glm::dmat3(1.0), semi, color_of(Meaning::polhode, 0.22f));
+  return s;  // unnamed: a key may cover its caps (keep_clear), never the sphere
+
+}
+
+float sphere_shift_room(float width_px, float height_px) {
+  // The sphere's radius is a third of the height (fov: ±1.5 |L|); it keeps its side margin.
+  return std::max(0.0f, 0.5f * width_px - height_px / 3.0f - 0.02f * height_px);
+}
 
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const Eigen::Vector3d& I = in.inertia;
@@ -105,24 +120,23 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   view.camera = sphere_camera(in.pose, in.camera);
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
   if (in.key) {
-    // Bottom-left, the sphere moved right by half the key's width so they part.
     const float size = text_px(TextRole::key, in.frame_h);
     const std::vector<KeyEntry> entries = sphere_key();
+    KeySpot spot;  // by default bottom-left, the sphere moved right by half the key's width so they part
     const glm::vec2 k = key_size(entries, size);
-    add_key(view, entries, {0.5f * size, std::max(top, in.height_px - k.y - 0.5f * size)}, size);
-    const double world_per_px = 2 * std::tan(glm::radians(view.camera.fov_y_deg) / 2) * in.camera.distance / in.height_px;
-    const glm::dvec3 eye_dir = glm::normalize(view.camera.position - view.camera.target);
-    const glm::dvec3 right = glm::normalize(glm::cross(view.camera.up, eye_dir));
-    // The sphere's radius is a third of the height (fov: ±1.5 |L|); it keeps its right margin.
-    const double room = 0.5 * in.width_px - in.height_px / 3.0 - 0.02 * in.height_px;
-    const double shift = std::clamp(0.5 * static_cast<double>(k.x), 0.0, std::max(0.0, room)) * world_per_px;
-    view.camera.target -= shift * right;
-    view.camera.position -= shift * right;
+    spot.top_left = {0.5f * size, std::max(top, in.height_px - k.y - 0.5f * size)};
+    spot.shift_px = std::min(0.5f * k.x, sphere_shift_room(in.width_px, in.height_px));
+    if (in.key_spot) spot = *in.key_spot;
+    add_key(view, entries, spot.top_left, size);
+    shift_content(view, spot.shift_px, in.height_px);
   }
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
   add_axes(view, in);
   if (L <= 0) return;
+  // Only while it fits inside the axes' reach: near e₁ its e₃ semi-axis is √(I₃/I₁) |L| and would fill the view.
+  if (in.energy_ellipsoid && in.two_E > 0 && std::sqrt(in.two_E * I[2]) / L <= kEnergyEllipsoidReach)
+    view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
       PolylineItem p{{}, c, w, false, name};

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "viz/draw_list.hpp"
+#include "viz/key.hpp"
 #include "viz/sphere_camera.hpp"
 
 namespace tumble::viz {
@@ -34,9 +35,25 @@ struct MomentumSphereInput {
   SpherePose pose = {};                     ///< the camera's followed direction now (follow_track)
   SphereCameraSettings camera = {};
   bool key = true;                          ///< the key of colours and meanings
+  bool energy_ellipsoid = true;             ///< the translucent energy ellipsoid (it meets the sphere on the polhode), when it fits
+  std::optional<KeySpot> key_spot;          ///< where (run::ExplainViews decides once per video); unset: bottom-left
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
 };
+
+/// The energy ellipsoid is drawn only if its largest semi-axis is within this many |L|.
+inline constexpr double kEnergyEllipsoidReach = 1.3;
+
+/// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the
+/// sphere has radius 1), principal frame: it meets the sphere on the polhode.
+/// Translucent, in the polhode's colour.
+SurfaceItem energy_ellipsoid(const Eigen::Vector3d& inertia, double L, double two_E);
+
+/// The momentum sphere's key entries.
+std::vector<KeyEntry> sphere_key();
+
+/// How far the sphere may move sideways in a width × height view and keep its margin, px.
+float sphere_shift_room(float width_px, float height_px);
 
 /// Radius of the opaque ball inside the sphere that hides the far side, in |L|.
 inline constexpr double kSphereBall = 0.985;

@@ -1,7 +1,9 @@
 // One colour per meaning, in every view and in the plot (docs/colours.md
 // holds the same table for readers; tests/viz/palette_test checks they agree).
 // Principal axes follow the moments' order: e₁ (smallest moment) red, e₂
-// green, e₃ (largest) blue; nothing else uses those hues.
+// green, e₃ (largest) blue; nothing else uses those hues. ω (purple) and the
+// separatrix (Okabe–Ito sky blue) differ in hue and lightness, so they stay
+// apart under the common colour-vision deficiencies (Okabe & Ito 2008).
 #pragma once
 
 #include <array>
@@ -43,7 +45,7 @@ inline const std::array<MeaningColor, static_cast<std::size_t>(Meaning::count)> 
     {Meaning::momentum_point, "momentum_point", "near-black", {0.10f, 0.10f, 0.15f, 1}},
     {Meaning::polhode, "polhode", "teal", {0.00f, 0.55f, 0.58f, 1}},
     {Meaning::herpolhode, "herpolhode", "brown", {0.50f, 0.30f, 0.12f, 1}},
-    {Meaning::separatrix, "separatrix", "magenta", {0.85f, 0.10f, 0.65f, 1}},
+    {Meaning::separatrix, "separatrix", "sky blue", {0.34f, 0.71f, 0.91f, 1}},
     {Meaning::other_levels, "other_levels", "light grey", {0.55f, 0.56f, 0.60f, 1}},
     {Meaning::plane, "plane", "grey", {0.45f, 0.47f, 0.52f, 1}},
     {Meaning::ellipsoid, "ellipsoid", "slate", {0.38f, 0.44f, 0.62f, 1}},

@@ -38,8 +38,6 @@ PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vecto
   return p;
 }
 
-namespace {
-
 std::vector<KeyEntry> poinsot_key() {
   return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
           key_entry(Meaning::ellipsoid, "inertia ellipsoid (body)"),
@@ -49,8 +47,6 @@ std::vector<KeyEntry> poinsot_key() {
           key_entry(Meaning::herpolhode, "herpolhode: \u03c9 on the plane"),
           key_entry(Meaning::plane, "invariable plane")};
 }
-
-}  // namespace
 
 void build_poinsot(View& view, const PoinsotInput& in) {
   const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
@@ -78,6 +74,7 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   glm::dmat3 axes;
   for (int i = 0; i < 3; ++i) axes[i] = g(p.axes.col(i));
   view.surfaces.push_back(ellipsoid({0, 0, 0}, axes, g(p.semi_axes * scale), color_of(Meaning::ellipsoid, 0.32f)));
+  view.surfaces.back().name = "ellipsoid";
   const Color ring = color_of(Meaning::ellipsoid, 0.6f);
   for (int a = 0; a < 3; ++a) {
     PolylineItem section{{}, ring, 1.0f, false};
@@ -116,7 +113,14 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
   // Bottom-right, over the plane's near edge: the ellipsoid stands in the middle.
-  if (in.key) add_key_bottom_right(view, poinsot_key(), in.width_px, in.height_px, top, text_px(TextRole::key, in.frame_h));
+  if (!in.key) return;
+  const float size = text_px(TextRole::key, in.frame_h);
+  if (!in.key_spot) {
+    add_key_top_right(view, poinsot_key(), in.width_px, top, size);
+    return;
+  }
+  add_key(view, poinsot_key(), in.key_spot->top_left, size);
+  shift_content(view, in.key_spot->shift_px, in.height_px);
 }
 
 }  // namespace tumble::viz

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "viz/draw_list.hpp"
+#include "viz/key.hpp"
 #include "viz/sphere_camera.hpp"
 
 namespace tumble::viz {
@@ -43,6 +44,7 @@ struct PoinsotInput {
   /// unused. By default 40° above the plane, so the herpolhode opens up.
   SphereCameraSettings camera = {16.4, 39.8, 4.69, false, 0, 0};
   bool key = true;                          ///< the key of colours and meanings
+  std::optional<KeySpot> key_spot;          ///< where (run::ExplainViews decides once per video); unset: bottom-right
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
 };
@@ -59,5 +61,8 @@ inline constexpr double kHerpolhodeLift = 0.008;
 /// the key (bottom-right) names the axes, L, ω, the curves and the plane.
 /// ω's tip is the point named "contact_point".
 void build_poinsot(View& view, const PoinsotInput& in);
+
+/// Poinsot's key entries.
+std::vector<KeyEntry> poinsot_key();
 
 }  // namespace tumble::viz

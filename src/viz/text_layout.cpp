@@ -146,16 +146,23 @@ void settle_labels(View& view, float width_px, float height_px) {
       kept.push_back(std::move(t));
       continue;
     }
-    for (float dy : {0.0f, 1.1f, -1.1f, 2.2f, -2.2f}) {
-      TextItem moved = t;
-      moved.position_px.y += dy * t.size_px;
-      const Box b = text_box(moved);
-      if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
-      if (std::any_of(taken.begin(), taken.end(), [&](const Box& o) { return o.overlaps(b); })) continue;
-      taken.push_back(b);
-      kept.push_back(std::move(moved));
-      break;
-    }
+    // Up or down by up to two lines, then beside its place; a quarter line
+    // apart from everything, so that two labels never crowd into one.
+    const float gap = 0.25f * t.size_px, w = text_box(t).x1 - text_box(t).x0;
+    bool placed = false;
+    for (float dx : {0.0f, 0.7f, -0.7f})
+      for (float dy : {0.0f, 1.1f, -1.1f, 2.2f, -2.2f}) {
+        if (placed) break;
+        TextItem moved = t;
+        moved.position_px += glm::vec2(dx * w, dy * t.size_px);
+        const Box b = text_box(moved);
+        if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
+        const Box wide{b.x0 - gap, b.y0 - gap, b.x1 + gap, b.y1 + gap};
+        if (std::any_of(taken.begin(), taken.end(), [&](const Box& o) { return o.overlaps(wide); })) continue;
+        taken.push_back(b);
+        kept.push_back(std::move(moved));
+        placed = true;
+      }
   }
   view.texts = std::move(kept);
 }

@@ -188,6 +188,27 @@ TEST_F(VideoRender, StreamedVideoHasEveryFrameAndNoPngs) {
   EXPECT_EQ(a, b);
 }
 
+// Issue 23: frames finish on --jobs workers in any order but reach ffmpeg in
+// order, and x264's threads follow the machine, not --jobs (+bitexact: no
+// encoder version in the file), so the streamed mp4's bytes do not depend on
+// --jobs. FXAA and 25 frames give the workers work to finish out of order.
+TEST_F(VideoRender, StreamedVideoIsByteIdenticalWhateverTheJobs) {
+  TUMBLE_NEED_GL();
+  std::string video[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::string jobs = i == 0 ? "1" : "3";
+    const fs::path out = dir_ / ("jobs" + jobs);
+    const Result r = run("render '" + data("tiny_render.toml") + "' -o '" + out.string() +
+                         "' --video mp4 --frames-out none --progress none --aa fxaa --fps 40 --width 256 --height 192 "
+                         "--jobs " + jobs);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(frame_count(out / "tiny_render.mp4"), "25\n");
+    video[i] = slurp(out / "tiny_render.mp4");
+  }
+  ASSERT_GT(video[0].size(), 1000u);
+  EXPECT_TRUE(video[0] == video[1]) << "the streamed mp4 differs between --jobs 1 and --jobs 3";
+}
+
 TEST_F(VideoRender, StreamedRenderRefusesWhatItCannotDo) {
   const std::string scene = "render '" + data("tiny_render.toml") + "' -o '" + (dir_ / "x").string() + "' --progress none ";
   Result r = run(scene + "--frames-out none --video none");
@@ -221,12 +242,18 @@ TEST_F(VideoRender, InterruptedStreamExits130AndLeavesNoVideo) {
   for (const int sig : {SIGINT, SIGTERM}) {
     SCOPED_TRACE(sig);
     const fs::path out = dir_ / ("stream" + std::to_string(sig)), mark = dir_ / ("started" + std::to_string(sig));
-    // Starts a half video, then reads nothing: tumble's writes block on the full pipe.
-    const std::string path = fake_ffmpeg("for a; do last=$a; done; echo half > \"$last\"; touch '" + mark.string() +
-                                         "'; exec sleep 60");
-    const pid_t pid = spawn_render(data("tiny_render.toml"), out, {"--video", "mp4", "--frames-out", "none"}, path);
+    // Starts a half video, reads 3 frames of 640x480 (or all there is), then
+    // nothing. SIGINT: the 7 small frames fit in the pipe, tumble waits for
+    // ffmpeg to finish. SIGTERM: 640x480 frames (0.9 MB) do not: a worker's
+    // write blocks on the full (1 MiB) pipe while the drawing thread, not
+    // the writer, catches the signal.
+    const std::string path = fake_ffmpeg("for a; do last=$a; done; echo half > \"$last\"; head -c 2764800 > /dev/null; "
+                                         "touch '" + mark.string() + "'; exec sleep 60");
+    std::vector<std::string> extra = {"--video", "mp4", "--frames-out", "none"};
+    if (sig == SIGTERM) extra.insert(extra.end(), {"--width", "640", "--height", "480"});
+    const pid_t pid = spawn_render(data("tiny_render.toml"), out, extra, path);
     ASSERT_TRUE(wait_for_file(pid, mark)) << slurp(dir_ / "spawn.err");
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let the pipe fill
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // let the pipe fill
     ::kill(pid, sig);
     const auto t0 = std::chrono::steady_clock::now();
     EXPECT_EQ(wait_exit(pid), 128 + sig) << slurp(dir_ / "spawn.err");

@@ -1,6 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstdlib>
+#include <stdexcept>
+#include <thread>
+#include <vector>
 #include <filesystem>
 #include <string>
 
@@ -123,6 +129,50 @@ TEST(FrameEncoder, RawFramesAreFinishedLikeOnTheCallersThread) {
   finish_frame(raw(0, true), anti, fxaa);
   EXPECT_FALSE(plain.rgb == anti.rgb) << "FXAA did nothing to the edge";
   fs::remove_all(dir);
+}
+
+// The video path: frames finish on several workers in any order, the sink
+// takes them in the order submitted and one at a time. Large frames before
+// small ones finish last, so a sink fed as frames finish sees them out of order.
+TEST(FrameEncoder, OrderedSinkTakesFramesInOrderOneAtATime) {
+  auto raw = [](int i) {
+    const int side = i % 3 == 0 ? 768 : 8;  // slow, then two fast
+    return RawFrame{std::vector<std::uint8_t>(std::size_t(side) * side * 4, std::uint8_t(i)), side, side, true};
+  };
+  for (int threads : {1, 4}) {
+    std::vector<int> seen;
+    std::atomic<int> inside = 0, most = 0;
+    {
+      FrameEncoder enc(threads, 0, FrameEncoder::OrderedSink{[&](const Image& img) {
+                         most = std::max(most.load(), ++inside);
+                         std::this_thread::sleep_for(std::chrono::microseconds(200));
+                         seen.push_back(img.rgb[0]);
+                         if (img.rgb[0] == 4) {
+                           --inside;
+                           throw std::runtime_error("pipe closed at frame 4");
+                         }
+                         --inside;
+                       }});
+      int errors = 0;  // frame 4's, reported once by a later submit or the flush
+      for (int i = 0; i < 30; ++i) try {
+          enc.submit(raw(i));
+        } catch (const std::runtime_error&) {  // this frame was not taken: again
+          ++errors;
+          enc.submit(raw(i));
+        }
+      try {
+        enc.flush();
+      } catch (const std::runtime_error&) {
+        ++errors;
+      }
+      EXPECT_EQ(errors, 1);
+      EXPECT_EQ(enc.frames_written(), 29u);
+    }
+    std::vector<int> want(30);
+    for (int i = 0; i < 30; ++i) want[i] = i;
+    EXPECT_EQ(seen, want) << threads << " thread(s)";
+    EXPECT_EQ(most.load(), 1) << "the sink ran on two threads at once";
+  }
 }
 
 }  // namespace

@@ -157,6 +157,30 @@ TEST(MomentumSphere, PolhodesLieOnBothSurfaces) {
   EXPECT_TRUE(polhodes(I, L, L * L / 0.9, 16).empty());  // above L²/I1: no such motion
 }
 
+// Issue 22 §1: the energy ellipsoid meets the sphere on the polhode, and is
+// left out where it would fill the view (near e₁ its e₃ semi-axis is √(I₃/I₁)).
+TEST(MomentumSphere, EnergyEllipsoidMeetsTheSphereOnThePolhode) {
+  const Eigen::Vector3d I(1, 2, 2.5);
+  const double L = 2.0;
+  for (double two_E : {L * L / 2.4, L * L / 1.9}) {
+    View v;
+    const Eigen::Vector3d pi = polhodes(I, L, two_E, 8)[0][0];
+    build_momentum_sphere(v, {I, pi, {}, two_E, ""});
+    ASSERT_EQ(v.surfaces.size(), 1u) << two_E;
+    EXPECT_LT(v.surfaces[0].color.a, 0.5f);
+    const glm::dmat4 to_unit = glm::inverse(v.surfaces[0].model);
+    for (const auto& curve : polhodes(I, L, two_E, 32))
+      for (const Eigen::Vector3d& p : curve) {
+        const glm::dvec4 u = to_unit * glm::dvec4(p.x() / L, p.y() / L, p.z() / L, 1);  // units of |L|
+        EXPECT_NEAR(glm::length(glm::dvec3(u)), 1.0, 1e-9);
+      }
+  }
+  View near_e1;
+  const double two_E = L * L / 1.05;
+  build_momentum_sphere(near_e1, {I, polhodes(I, L, two_E, 8)[0][0], {}, two_E, ""});
+  EXPECT_TRUE(near_e1.surfaces.empty());  // √(2E I₃)/|L| ≈ 1.54 > kEnergyEllipsoidReach
+}
+
 TEST(MomentumSphere, SeparatrixPassesThroughTheIntermediateAxis) {
   const Eigen::Vector3d I(1, 2, 3);
   const double L = 2.0;
