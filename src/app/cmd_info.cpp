@@ -140,7 +140,11 @@ std::string to_text(const scene::Scene& s) {
     o << (plan.reason.empty() ? " (set by the scene)" : " (auto: " + plan.reason + ")") << "\n";
     for (const MethodEstimate& e : plan.candidates) {
       char line[200];
-      if (e.usable)
+      if (e.usable && e.steps == 0)  // an adaptive pair picked without a pilot: nothing measured
+        std::snprintf(line, sizeof line, "    %-18s %-9s %-10.3g not priced (no pilot)  error ~%.1e rad%s\n",
+                      std::string(method_name(e.method)).c_str(), "rtol", e.config.rtol, e.error,
+                      e.method == plan.config.method ? "  <- picked" : "");
+      else if (e.usable)
         std::snprintf(line, sizeof line, "    %-18s %-9s %-10.3g %10.0f steps  error %.1e rad  ~%.3g ms%s\n",
                       std::string(method_name(e.method)).c_str(), method_info(e.method).adaptive ? "rtol" : "dt (s)",
                       method_info(e.method).adaptive ? e.config.rtol : e.config.dt, e.steps, e.error, e.cost_s * 1e3,

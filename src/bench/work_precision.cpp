@@ -19,7 +19,7 @@ std::vector<double> dt_grid(const Settings& st, const Problem& p, bool closed_fo
 }
 
 std::vector<double> rtol_grid(const Settings& st) {
-  return st.quick ? log_sweep(1e-3, 1e-12, 2) : log_sweep(1e-3, 1e-12, 4);
+  return st.quick ? log_sweep(1e-3, 1e-12, 2) : log_sweep(1e-3, 1e-12, 8);
 }
 
 std::vector<WpRow> work_precision(const std::vector<Problem>& problems, const Settings& st, std::ostream& log) {

@@ -177,9 +177,13 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
   // With `prune` (scenes): `exact` when no force torques the body and its
   // ladder qualifies (the rotation is then the closed form: it agrees at
   // round-off at once); otherwise the highest-order adaptive pair, unpriced
-  // and with no pilot at all. On the bench's forced problems dop853 at
-  // tolerance / 10 cost within 1.4× of the cheapest configuration meeting the
-  // tolerance from 1e-3 to 1e-8, where pilot ladders cost 2–10 runs.
+  // and with no pilot at all. On the bench's forced scenes dop853 at
+  // tolerance / 10 cost 1.2–1.9× the cheapest configuration meeting the
+  // tolerance from 1e-3 to 1e-8 (scripts/adaptive_study.sh auto), where pilot
+  // ladders cost 2–10 runs; the exception is the torqued top at 1e-3 (3.2×),
+  // whose cheapest is `exact` with kicks at dt = 0.1 s (~20 µs): dop853 at its
+  // loosest costs ~46 µs, and a ladder verifying exact's error costs more than
+  // exact's run itself.
   // Without `prune`, every candidate is measured (tests, `tumble info`-like uses).
   if (r.prune) {
     for (const MethodInfo& info : method_table())

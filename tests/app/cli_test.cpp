@@ -95,7 +95,19 @@ TEST_F(Cli, AutoToleranceSaysWhatItPicked) {
   EXPECT_NE(info.out.find("<- picked"), std::string::npos) << info.out;
   // A torqued body gets dop853 at rtol = tolerance/10 without pilot runs (issue 27): one candidate, priced.
   EXPECT_NE(info.out.find("dop853 "), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("no pilot"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("not priced (no pilot)"), std::string::npos) << info.out;
+  // The README shows this block as info prints it (scripts/readme_figures.sh writes it).
+  const std::string readme = slurp(kSource / "README.md");
+  const std::size_t b = readme.find("<!-- BEGIN info:thruster -->\n"), e = readme.find("<!-- END info:thruster -->");
+  ASSERT_TRUE(b != std::string::npos && e != std::string::npos && b < e) << "README.md: no info:thruster block";
+  int shown = 0;
+  for (const std::string& l : lines(readme.substr(b, e - b)))
+    if (l.rfind("    ", 0) == 0) {
+      ++shown;
+      EXPECT_NE(info.out.find("  " + l.substr(4) + "\n"), std::string::npos)
+          << "README.md's info:thruster line\n" << l << "\nis not what info prints; run scripts/readme_figures.sh";
+    }
+  EXPECT_GE(shown, 2);
   // The tolerance picks dt: a --dt on top is refused; --method takes over and drops it.
   EXPECT_EQ(run("simulate " + scene("thruster.toml") + " --csv '" + csv.string() + "' --dt 0.01").code, 2);
   const Result named = run("simulate " + scene("thruster.toml") + " --csv '" + csv.string() + "' --method rk4 --dt 0.01 --duration 1");

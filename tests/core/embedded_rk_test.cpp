@@ -2,13 +2,17 @@
 // integrators, against the closed form: the delivered orientation error stays
 // within 10× of rtol from 1e-4 to 1e-10 (tolerance proportionality) and falls
 // with it; one evaluation per stage (FSAL) and none for outputs on step ends;
-// dense output that neither moves the steps nor loses accuracy.
+// dense output that neither moves the steps nor loses accuracy; the error
+// norm is the largest scaled group norm (its squared evaluation included).
 #include <gtest/gtest.h>
+
+#include <random>
 
 #include <cmath>
 #include <cstdio>
 
 #include "core/embedded_rk.hpp"
+#include "core/embedded_rk_impl.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/quaternion.hpp"
@@ -93,6 +97,38 @@ TEST_P(EmbeddedRk, DenseOutputDoesNotPerturbSteps) {
 INSTANTIATE_TEST_SUITE_P(Pairs, EmbeddedRk,
                          ::testing::Values(PairCase{Method::rk45, 6, 0}, PairCase{Method::dop853, 12, 3}),
                          [](const auto& info) { return testing::name_of(info.param.method); });
+
+// The norm against its definition (embedded_rk.hpp): orientation 2|δq| / (atol
+// + rtol), each vector group |δv| / (atol·floor + rtol·max(|v|, |v1|)), the
+// largest of them; on both systems' layouts, with each group the largest in turn.
+template <int N>
+void check_group_error(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  erk::Scales sc;
+  sc.pi0 = 3, sc.gyration = 0.5, sc.momentum = 7;
+  AdaptiveOptions o;
+  o.rtol = 1e-6, o.atol = 1e-9;
+  const double floors[] = {0, sc.pi0, sc.gyration, sc.momentum};
+  for (int groups = 0; groups < (N == 13 ? 4 : 2); ++groups)
+    for (int trial = 0; trial < 50; ++trial) {
+      erk::Vec<N> e, y, y1;
+      for (int i = 0; i < N; ++i) e[i] = 1e-7 * u(rng), y[i] = 10 * u(rng), y1[i] = 10 * u(rng);
+      e.template segment<3>(groups == 0 ? 0 : 1 + 3 * groups) *= 1e3;  // this group dominates
+      double want = 2 * e.template head<4>().norm() / (o.atol + o.rtol);
+      for (int g = 1; g < (N == 13 ? 4 : 2); ++g) {
+        const int i = 1 + 3 * g;
+        const double v = std::max(y.template segment<3>(i).norm(), y1.template segment<3>(i).norm());
+        want = std::max(want, e.template segment<3>(i).norm() / (o.atol * floors[g] + o.rtol * v));
+      }
+      EXPECT_NEAR(erk::group_error<N>(e, y, y1, sc, o), want, 1e-13 * want) << "N=" << N << " group " << groups;
+    }
+}
+
+TEST(EmbeddedRkNorm, LargestScaledGroupNorm) {
+  std::mt19937_64 rng(27);
+  check_group_error<7>(rng);
+  check_group_error<13>(rng);
+}
 
 }  // namespace
 }  // namespace tumble
