@@ -65,21 +65,19 @@ void add_body(py::module_& m) {
           "particle masses, kg: (N,), a read-only view");
   ic_vec3<&InitialConditions::position>(c, "position", "initial centre of mass, world, m");
   ic_vec3<&InitialConditions::velocity>(c, "velocity", "initial velocity, world, m/s");
+  // ω as the scene file gives it: a value and the frame it is in.
+  auto set_omega = [](Body& b, const py::object& v, Frame frame, const char* name) {
+    b.initial_conditions.omega = to_vec3(v, name);
+    b.initial_conditions.omega_frame = frame;
+    reset_state(b);
+  };
   c.def_property(
        "omega_body", [](const Body& b) { return vec3(omega_body(b.model, b.initial)); },
-       [](Body& b, const py::object& v) {
-         b.initial_conditions.omega = to_vec3(v, "omega_body");
-         b.initial_conditions.omega_frame = Frame::body;
-         reset_state(b);
-       },
+       [set_omega](Body& b, const py::object& v) { set_omega(b, v, Frame::body, "omega_body"); },
        "initial ω in the cloud's own axes, rad/s")
       .def_property(
           "omega_world", [](const Body& b) { return vec3(omega_world(b.model, b.initial)); },
-          [](Body& b, const py::object& v) {
-            b.initial_conditions.omega = to_vec3(v, "omega_world");
-            b.initial_conditions.omega_frame = Frame::world;
-            reset_state(b);
-          },
+          [set_omega](Body& b, const py::object& v) { set_omega(b, v, Frame::world, "omega_world"); },
           "initial ω in the world frame, rad/s")
       .def_property(
           "orientation",
