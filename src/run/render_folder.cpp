@@ -65,6 +65,7 @@ std::string method_key(const scene::Scene& s) {
 
 /// One render's folder, range and manifest, shared by the steps below.
 struct Job {
+  Job(const RenderRequest& r, Listener& listener) : req(r), l(listener) {}
   const RenderRequest& req;
   Listener& l;
   long count = 0, first = 0, last = -1;

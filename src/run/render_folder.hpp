@@ -21,7 +21,7 @@ struct RenderRequest {
   bool stream = false;        ///< frames piped into ffmpeg only, no PNG (--frames-out none)
   render::GlBackend backend = render::GlBackend::osmesa;
   std::string scene_arg;      ///< the scene as the user named it, for "run it again" hints
-  std::optional<int> gpu;     ///< EGL device (--gpu, TUMBLE_EGL_DEVICE); nullopt: automatic
+  std::optional<int> gpu = {};  ///< EGL device (--gpu, TUMBLE_EGL_DEVICE); nullopt: automatic
   int jobs = 0;               ///< frame encoder threads; 0: render::worker_threads()
 };
 

@@ -57,7 +57,7 @@ TEST(FlipEvents, SteppedMotionWithTorqueTermsFindsTheSameFlips) {
 
 TEST(FlipEvents, WobbleNearTheLargestOrSmallestAxisIsNoFlip) {
   const RigidBodyModel m = testing::reference_model();
-  for (const Eigen::Vector3d w : {Eigen::Vector3d(10, 1, 1), Eigen::Vector3d(1, 1, 10)}) {
+  for (const Eigen::Vector3d& w : {Eigen::Vector3d(10, 1, 1), Eigen::Vector3d(1, 1, 10)}) {
     InitialConditions ic;
     ic.omega = w;
     const BodyState s0 = make_state(m, ic);

@@ -80,9 +80,10 @@ TEST(Palette, DocsTableMatchesTheCode) {
   // One colour per meaning: no two meanings share a colour.
   for (std::size_t i = 0; i < kPalette.size(); ++i)
     for (std::size_t j = i + 1; j < kPalette.size(); ++j)
-      if (kPalette[i].meaning != Meaning::ink && kPalette[j].meaning != Meaning::ink)
+      if (kPalette[i].meaning != Meaning::ink && kPalette[j].meaning != Meaning::ink) {
         EXPECT_GT(glm::length(glm::vec3(kPalette[i].rgba) - glm::vec3(kPalette[j].rgba)), 0.1f)
             << kPalette[i].name << " and " << kPalette[j].name;
+      }
 }
 
 // Π of a body spun near its intermediate axis through two flips (closed form).
