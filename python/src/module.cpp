@@ -119,6 +119,7 @@ PYBIND11_MODULE(_tumble, m) {
         for (const tumble::MethodInfo& i : tumble::method_table()) {
           pybind11::dict d;
           d["name"] = std::string(i.name);
+          d["description"] = std::string(i.description);
           d["order"] = i.order;
           d["adaptive"] = i.adaptive != nullptr;
           d["closed_form_if_free"] = i.closed_form_if_free;
@@ -130,5 +131,5 @@ PYBIND11_MODULE(_tumble, m) {
         }
         return out;
       },
-      "The method table: one dict per method (name, order, adaptive, ..., cost_ns_free in ns/step).");
+      "The method table: one dict per method (name, description, order, adaptive, ..., cost_ns_free in ns/step).");
 }

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import tumble
-from conftest import SCENES
+from conftest import SCENES, run_cli
 
 COLUMNS = [("c", 3), ("q", 4), ("v", 3), ("omega_world", 3), ("L", 3), ("energy", 0)]
 
@@ -95,3 +95,14 @@ def test_methods_table():
     names = [m["name"] for m in tumble.methods()]
     assert {"rk4", "rk45", "splitting", "exact"} <= set(names)
     assert all(m["order"] >= 0 for m in tumble.methods())
+
+
+def test_methods_descriptions_are_the_cli_table():
+    # One table: each row's description is the one `tumble methods` prints.
+    rows = tumble.methods()
+    assert all(m["description"].strip() for m in rows)
+    assert len({m["description"] for m in rows}) == len(rows)
+    out = run_cli("methods").stdout
+    for m in rows:
+        line = next(l for l in out.splitlines() if l.split() and l.split()[0] == m["name"])
+        assert m["description"] in line, (m["name"], line)
