@@ -68,6 +68,56 @@ int rewrite_readme(const std::string& file) {
   return kOk;
 }
 
+#ifdef TUMBLE_HAVE_RENDER
+// --render: one scene's figures, or the demo's and the dense solid's (with
+// --readme-table, written into the README's two render blocks).
+int run_render_benches(const BenchCliOptions& o) {
+  const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
+  if (!o.scene.empty() && !o.readme.empty()) throw InputError("--render --readme-table measures the demo; drop --scene");
+  if (!o.scene.empty()) {
+    run::run_render_bench(o.scene, o.frames, o.studies.out_dir / "render", std::cout, {}, o.jobs);
+    return kOk;
+  }
+  // Anti-aliasing quality also on a comparison grid and on an explained
+  // scene (plots, thin curves, much text).
+  const std::vector<std::filesystem::path> quality = {scenes / "methods_compare.toml",
+                                                      scenes / "dzhanibekov_explained.toml"};
+  std::string text;
+  if (!o.readme.empty()) {
+    read_markers(o.readme, "bench:render-dense");  // both blocks there before minutes of measuring
+    text = read_markers(o.readme, "bench:render");
+  }
+  const run::RenderBenchResult r =
+      run::run_render_bench(scenes / "dzhanibekov.toml", o.frames, o.studies.out_dir / "render", std::cout, quality, o.jobs);
+  // Then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
+  const run::RenderBenchResult d =
+      run::run_render_bench(scenes / "dense_box.toml", o.frames, o.studies.out_dir / "render_dense", std::cout, {}, o.jobs);
+  if (!o.readme.empty()) {
+    text = bench::replace_between_markers(text, "bench:render", r.markdown);
+    io::atomic_write_file(o.readme, bench::replace_between_markers(text, "bench:render-dense", d.markdown));
+    std::cout << "wrote the render figures into " << o.readme << "\n";
+  }
+  return kOk;
+}
+#endif
+
+int run_bench(const BenchCliOptions& o) {
+  if (!o.readme.empty() && !o.render) {
+    if (!o.scene.empty()) throw InputError("--readme-table and --scene: choose one");
+    return rewrite_readme(o.readme);
+  }
+  io::check_output_folder("bench -o", o.studies.out_dir);
+  if (!o.render) {
+    if (!o.body.empty() && o.scene.empty()) throw InputError("--body needs --scene");
+    return o.scene.empty() ? bench::run(o.studies, std::cout) : run_scene_study(o);
+  }
+#ifdef TUMBLE_HAVE_RENDER
+  return run_render_benches(o);
+#else
+  throw InputError("this build has no renderer (TUMBLE_BUILD_RENDER=OFF)");
+#endif
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app, Action& action) {
@@ -91,49 +141,7 @@ void add_bench_command(CLI::App& app, Action& action) {
                   "Recompute the README's accuracy table and write it between the <!-- BEGIN/END "
                   "bench:accuracy-table --> lines of this file (with --render: the render figures, between "
                   "the bench:render lines)");
-  cmd->callback([o, &action] {
-    action = [o]() -> int {
-      if (!o->readme.empty() && !o->render) {
-        if (!o->scene.empty()) throw InputError("--readme-table and --scene: choose one");
-        return rewrite_readme(o->readme);
-      }
-      io::check_output_folder("bench -o", o->studies.out_dir);
-      if (!o->render) {
-        if (!o->body.empty() && o->scene.empty()) throw InputError("--body needs --scene");
-        return o->scene.empty() ? bench::run(o->studies, std::cout) : run_scene_study(*o);
-      }
-#ifdef TUMBLE_HAVE_RENDER
-      const std::filesystem::path scenes = render::find_resource_dir() / "scenes";
-      if (!o->scene.empty() && !o->readme.empty()) throw InputError("--render --readme-table measures the demo; drop --scene");
-      if (!o->scene.empty()) {
-        run::run_render_bench(o->scene, o->frames, o->studies.out_dir / "render", std::cout, {}, o->jobs);
-        return kOk;
-      }
-      // Anti-aliasing quality also on a comparison grid and on an explained
-      // scene (plots, thin curves, much text).
-      const std::vector<std::filesystem::path> quality = {scenes / "methods_compare.toml",
-                                                          scenes / "dzhanibekov_explained.toml"};
-      std::string text;
-      if (!o->readme.empty()) {
-        read_markers(o->readme, "bench:render-dense");  // both blocks there before minutes of measuring
-        text = read_markers(o->readme, "bench:render");
-      }
-      const run::RenderBenchResult r =
-          run::run_render_bench(scenes / "dzhanibekov.toml", o->frames, o->studies.out_dir / "render", std::cout, quality, o->jobs);
-      // Then a dense solid (issue #14: a 200k-particle body at >= 10 frames/s).
-      const run::RenderBenchResult d =
-          run::run_render_bench(scenes / "dense_box.toml", o->frames, o->studies.out_dir / "render_dense", std::cout, {}, o->jobs);
-      if (!o->readme.empty()) {
-        text = bench::replace_between_markers(text, "bench:render", r.markdown);
-        io::atomic_write_file(o->readme, bench::replace_between_markers(text, "bench:render-dense", d.markdown));
-        std::cout << "wrote the render figures into " << o->readme << "\n";
-      }
-      return kOk;
-#else
-      throw InputError("this build has no renderer (TUMBLE_BUILD_RENDER=OFF)");
-#endif
-    };
-  });
+  cmd->callback([o, &action] { action = [o]() -> int { return run_bench(*o); }; });
 }
 
 }  // namespace tumble::app

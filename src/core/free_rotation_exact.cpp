@@ -87,6 +87,11 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
     return;
   }
   kind_ = Kind::asymmetric;
+  init_asymmetric(pi);
+}
+
+void FreeRotationExact::init_asymmetric(const Eigen::Vector3d& pi) {
+  const double I1 = inertia_[0], I2 = inertia_[1], I3 = inertia_[2];
   // l² - 2E·I2 without cancellation decides which axis Π circulates about.
   const double d = pi[0] * pi[0] * (I1 - I2) / I1 + pi[2] * pi[2] * (I3 - I2) / I3;
   const bool major = d >= 0;
@@ -117,6 +122,11 @@ FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen
   K_ = periodic_ ? boost::math::ellint_rf(0.0, kc2, 1.0, DoubleEval()) : std::numeric_limits<double>::infinity();
   mu_ = (J2_ - J1_) / (J3_ - J2_);
   nu_ = mu_ * J3_ / J1_;
+  init_phase(p);
+}
+
+void FreeRotationExact::init_phase(const Eigen::Vector3d& p) {
+  const double kc2 = complementary(k_);
   // Signs: Π'3 never changes sign (dn > 0); Euler's equations then fix s2.
   const double sigma = J3_ > J1_ ? 1.0 : -1.0;
   s3_ = p[2] < 0 ? -1.0 : 1.0;

@@ -47,6 +47,8 @@ class FreeRotationExact {
   };
   Phase phase(double tau) const;
   Eigen::Quaterniond body_from_elliptic(const Phase& ph) const;  // qB(τ) ⊗ qP
+  void init_asymmetric(const Eigen::Vector3d& pi);  // the primed frame, amplitudes and modulus from Π
+  void init_phase(const Eigen::Vector3d& p);        // signs and phase at t = 0 from Π' (after init_asymmetric)
   Eigen::Vector3d primed_momentum(const Phase& ph) const;
 
   Kind kind_;

@@ -41,9 +41,10 @@ Eigen::Matrix3d canonical_right_handed(Eigen::Matrix3d a) {
 
 }  // namespace
 
-MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::string& body_name) {
-  if (cloud.empty()) fail(body_name, "the particle cloud is empty; give `particles`, a `shape` or a `cloud` file");
-  MassProperties mp;
+namespace {
+
+// Total mass and centre of mass; every mass finite and > 0, every coordinate finite.
+void add_up_mass(const ParticleCloud& cloud, const std::string& body_name, MassProperties& mp) {
   Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   for (size_t i = 0; i < cloud.size(); ++i) {
     const Particle& p = cloud[i];
@@ -57,20 +58,23 @@ MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::st
     weighted += p.mass * p.position;
   }
   mp.com = weighted / mp.mass;
-  mp.inertia = inertia_about(cloud, mp.com);
-  // Finite inputs can still overflow: |r|² m beyond ~1e308 (e.g. coordinates of
-  // 1e160 m). Say so instead of letting NaN reach the eigen-solver.
-  if (!std::isfinite(mp.mass) || !mp.com.allFinite() || !mp.inertia.allFinite()) {
-    double rmax = 0;
-    for (const Particle& p : cloud) rmax = std::max(rmax, p.position.cwiseAbs().maxCoeff());
-    std::ostringstream s;
-    s << "the mass or inertia overflows double precision (total mass " << mp.mass << " kg, coordinates up to "
-      << rmax << " m); express the body in smaller units (e.g. km and t instead of m and kg)";
-    fail(body_name, s.str());
-  }
+}
 
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(mp.inertia);
-  mp.principal_moments = eig.eigenvalues();  // ascending
+// Finite inputs can still overflow: |r|² m beyond ~1e308 (e.g. coordinates of
+// 1e160 m). Say so instead of letting NaN reach the eigen-solver.
+void refuse_overflow(const ParticleCloud& cloud, const std::string& body_name, const MassProperties& mp) {
+  if (std::isfinite(mp.mass) && mp.com.allFinite() && mp.inertia.allFinite()) return;
+  double rmax = 0;
+  for (const Particle& p : cloud) rmax = std::max(rmax, p.position.cwiseAbs().maxCoeff());
+  std::ostringstream s;
+  s << "the mass or inertia overflows double precision (total mass " << mp.mass << " kg, coordinates up to "
+    << rmax << " m); express the body in smaller units (e.g. km and t instead of m and kg)";
+  fail(body_name, s.str());
+}
+
+// A body with no rotational inertia about some axis (a point, a line, or
+// moments outside the normal double range) is refused with the fix.
+void refuse_degenerate(const ParticleCloud& cloud, const std::string& body_name, const MassProperties& mp) {
   const double largest = mp.principal_moments[2];
   if (cloud.size() == 1)
     fail(body_name, "a single point mass has no rotational inertia; use at least three non-collinear particles");
@@ -96,8 +100,10 @@ MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::st
       << " kg·m²) is below the normal double range (2.2e-308); express the body in larger units (e.g. g and mm)";
     fail(body_name, s.str());
   }
-  mp.principal_axes = canonical_right_handed(eig.eigenvectors());
+}
 
+// The bounding box in the principal frame (about the centre of mass).
+void principal_box(const ParticleCloud& cloud, MassProperties& mp) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
   for (const Particle& p : cloud) {
     const Eigen::Vector3d r = mp.principal_axes.transpose() * (p.position - mp.com);
@@ -106,6 +112,21 @@ MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::st
   }
   mp.box.center = 0.5 * (lo + hi);
   mp.box.half_extents = 0.5 * (hi - lo);
+}
+
+}  // namespace
+
+MassProperties compute_mass_properties(const ParticleCloud& cloud, const std::string& body_name) {
+  if (cloud.empty()) fail(body_name, "the particle cloud is empty; give `particles`, a `shape` or a `cloud` file");
+  MassProperties mp;
+  add_up_mass(cloud, body_name, mp);
+  mp.inertia = inertia_about(cloud, mp.com);
+  refuse_overflow(cloud, body_name, mp);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(mp.inertia);
+  mp.principal_moments = eig.eigenvalues();  // ascending
+  refuse_degenerate(cloud, body_name, mp);
+  mp.principal_axes = canonical_right_handed(eig.eigenvectors());
+  principal_box(cloud, mp);
   return mp;
 }
 

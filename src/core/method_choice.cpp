@@ -40,6 +40,56 @@ double run_steps(const ChoiceRequest& r, double n) {
   return n + std::ceil(r.duration / r.sample_interval * (1 - 1e-12));
 }
 
+StepConfig fixed_config(Method method, const ChoiceRequest& r, double n) {
+  StepConfig c;
+  c.method = method;
+  c.dt = r.duration / n;
+  return c;
+}
+
+// After each rung of the pilot ladder (n_k steps; d_k[i] = error(x at n_k[i],
+// x at n_k[i+1])): true, with e's config, steps and error set, once the
+// differences settle the step count for an order-p method.
+bool ladder_settles(const std::vector<double>& n_k, const std::vector<double>& d_k, int p, const ChoiceRequest& r,
+                    MethodEstimate& e) {
+  const size_t k = d_k.size();
+  const double d = d_k.back(), n = n_k.back();
+  // Three runs agreeing far inside the tolerance (or at round-off, where no
+  // order shows): the coarsest of them already meets it. This is how a method
+  // that is exact for the scene (exact + kicks under gravity alone) qualifies.
+  const double agree = std::max(kRoundOff, 1e-2 * kSafety * r.tolerance);
+  if (d <= agree) {
+    if (k < 2 || !(d_k[k - 2] <= agree)) return false;
+    e.usable = true;
+    e.config = fixed_config(e.method, r, n_k[k - 2]);
+    e.steps = run_steps(r, n_k[k - 2]);
+    e.error = 2 * std::max(d_k[k - 2], d);
+    return true;
+  }
+  if (k < 2 || !std::isfinite(d_k[k - 2])) return false;
+  const double order = std::log2(d_k[k - 2] / d);
+  if (std::abs(order - p) > 0.4) return false;  // not yet asymptotic
+  // Asymptotic: the finer state x(n) has error ≈ d/(2^p - 1), and e ∝ n^-p.
+  const double err_n = d / (std::pow(2.0, p) - 1);
+  double n_star = std::ceil(n * std::pow(err_n / (kSafety * r.tolerance), 1.0 / p));
+  n_star = std::max(n_star, n_k[k - 2]);  // do not extrapolate below the verified range
+  e.usable = true;
+  e.observed_order = order;
+  e.config = fixed_config(e.method, r, n_star);
+  e.steps = run_steps(r, n_star);
+  e.error = err_n * std::pow(n / n_star, p);
+  return true;
+}
+
+// Why a ladder that ran out of budget at n steps settled nothing.
+std::string ladder_note(const std::vector<double>& d_k, int p, double n, double budget_s) {
+  const double last = d_k.empty() ? 0 : d_k.back();
+  return d_k.empty() ? "pilot budget (" + format_number(budget_s * 1e3, 2) + " ms) too small for a second run" :
+         last <= kRoundOff ? "no change measured" :
+         "order " + std::to_string(p) + " not seen within the pilot's budget (" + format_number(budget_s * 1e3, 2) +
+         " ms: up to " + format_number(n, 0, 'f') + " steps; last difference " + format_number(last, 1, 'e') + ")";
+}
+
 MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const BodyState& s0,
                                    const ChoiceRequest& r, double budget_s) {
   MethodEstimate e;
@@ -47,59 +97,21 @@ MethodEstimate fixed_step_estimate(Method method, const RigidBodyModel& m, const
   const MethodInfo& info = method_info(method);
   const int p = info.closed_form_if_free ? 2 : info.order;  // closed form + kicks: Strang, order 2
   const double ns = step_cost_ns(method, true);
-  auto cfg = [&](double n) {
-    StepConfig c;
-    c.method = method;
-    c.dt = r.duration / n;
-    return c;
-  };
   std::vector<double> n_k, d_k;  // d_k[i] = error(x at n_k[i], x at n_k[i+1])
-  std::optional<BodyState> prev = run(m, s0, cfg(64), r.duration);
+  std::optional<BodyState> prev = run(m, s0, fixed_config(method, r, 64), r.duration);
   double n = 64, spent = 64 * ns * 1e-9;
   n_k.push_back(n);
   while (2 * n <= kMaxPilotSteps && spent + 2 * n * ns * 1e-9 <= budget_s) {
     n *= 2;
     spent += n * ns * 1e-9;
-    std::optional<BodyState> cur = run(m, s0, cfg(n), r.duration);
+    std::optional<BodyState> cur = run(m, s0, fixed_config(method, r, n), r.duration);
     n_k.push_back(n);
     d_k.push_back(prev && cur ? end_state_error(m, *prev, *cur) : std::numeric_limits<double>::infinity());
     prev = cur;
-    const size_t k = d_k.size();
-    const double d = d_k.back();
-    // Three runs agreeing far inside the tolerance (or at round-off, where no
-    // order shows): the coarsest of them already meets it. This is how a method
-    // that is exact for the scene (exact + kicks under gravity alone) qualifies.
-    const double agree = std::max(kRoundOff, 1e-2 * kSafety * r.tolerance);
-    if (d <= agree) {
-      if (k >= 2 && d_k[k - 2] <= agree) {
-        e.usable = true;
-        e.config = cfg(n_k[k - 2]);
-        e.steps = run_steps(r, n_k[k - 2]);
-        e.error = 2 * std::max(d_k[k - 2], d);
-        break;
-      }
-      continue;
-    }
-    if (k < 2 || !std::isfinite(d_k[k - 2])) continue;
-    const double order = std::log2(d_k[k - 2] / d);
-    if (std::abs(order - p) > 0.4) continue;  // not yet asymptotic
-    // Asymptotic: the finer state x(n) has error ≈ d/(2^p - 1), and e ∝ n^-p.
-    const double err_n = d / (std::pow(2.0, p) - 1);
-    double n_star = std::ceil(n * std::pow(err_n / (kSafety * r.tolerance), 1.0 / p));
-    n_star = std::max(n_star, n_k[k - 2]);  // do not extrapolate below the verified range
-    e.usable = true;
-    e.observed_order = order;
-    e.config = cfg(n_star);
-    e.steps = run_steps(r, n_star);
-    e.error = err_n * std::pow(n / n_star, p);
-    break;
+    if (ladder_settles(n_k, d_k, p, r, e)) break;
   }
   if (!e.usable) {
-    const double last = d_k.empty() ? 0 : d_k.back();
-    e.note = d_k.empty() ? "pilot budget (" + format_number(budget_s * 1e3, 2) + " ms) too small for a second run" :
-             last <= kRoundOff ? "no change measured" :
-             "order " + std::to_string(p) + " not seen within the pilot's budget (" + format_number(budget_s * 1e3, 2) +
-             " ms: up to " + format_number(n, 0, 'f') + " steps; last difference " + format_number(last, 1, 'e') + ")";
+    e.note = ladder_note(d_k, p, n, budget_s);
     return e;
   }
   if (e.steps > kMaxRunSteps) {
@@ -162,6 +174,62 @@ MethodChoice auto_without_tolerance(const RigidBodyModel& m, const StepConfig& a
   return c;
 }
 
+namespace {
+
+// Candidates (MethodInfo::auto_candidate): the methods whose error stays
+// bounded over long runs, plus rk4 and the adaptive pairs (users' usual
+// picks). The first-order methods are left out: wherever they would be
+// cheapest, splitting costs about the same and keeps |L| exactly.
+// With `prune` (scenes): `exact` when no force torques the body and its
+// ladder qualifies (the rotation is then the closed form: it agrees at
+// round-off at once); otherwise the highest-order adaptive pair, unpriced
+// and with no pilot at all. On the bench's forced scenes dop853 at
+// tolerance / 10 cost 1.2–1.9× the cheapest configuration meeting the
+// tolerance from 1e-3 to 1e-8 (scripts/adaptive_study.sh auto), where pilot
+// ladders cost 2–10 runs; the exception is the torqued top at 1e-3 (3.2×),
+// whose cheapest is `exact` with kicks at dt = 0.1 s (~20 µs): dop853 at its
+// loosest costs ~46 µs, and a ladder verifying exact's error costs more than
+// exact's run itself.
+// Without `prune`, every candidate is measured (tests, `tumble info`-like uses).
+std::vector<MethodEstimate> estimate_candidates(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
+  std::vector<MethodEstimate> out;
+  if (!r.prune) {
+    for (const MethodInfo& info : method_table()) {
+      if (!info.auto_candidate) continue;
+      out.push_back(info.adaptive ? adaptive_estimate(info.method, r, true, m, s0)
+                                  : fixed_step_estimate(info.method, m, s0, r, kPilotBudgetS));
+    }
+    return out;
+  }
+  for (const MethodInfo& info : method_table())
+    if (info.auto_candidate && info.closed_form_if_free && !m.forces.has_torque()) {
+      MethodEstimate e = fixed_step_estimate(info.method, m, s0, r, kPilotBudgetS);
+      if (e.usable) out.push_back(std::move(e));
+    }
+  const MethodInfo* pair = nullptr;
+  for (const MethodInfo& info : method_table())
+    if (info.auto_candidate && info.adaptive && (!pair || info.order > pair->order)) pair = &info;
+  if (out.empty() && pair) out.push_back(adaptive_estimate(pair->method, r, false, m, s0));
+  return out;
+}
+
+// "dop853 at rtol 1e-09: predicted end error ... ; next cheapest ...".
+std::string choice_reason(const MethodEstimate& best, const MethodEstimate* runner, const ChoiceRequest& r) {
+  std::string reason =
+      std::string(method_name(best.method)) +
+      (method_info(best.method).adaptive ? " at rtol " + format_number(best.config.rtol, 0, 'e')
+                                         : " at dt " + format_number(best.config.dt, 3) + " s") +
+      ": predicted end error " + format_number(best.error, 1, 'e') + " rad <= tolerance " + format_number(r.tolerance, 3) +
+      (best.steps > 0 ? ", " + format_number(best.steps, 0, 'f') + " steps, ~" + format_number(best.cost_s * 1e3, 2) + " ms"
+                      : " (its rtol asks for the end error; no pilot)");
+  if (runner)
+    reason += "; next cheapest " + std::string(method_name(runner->method)) + " ~" +
+              format_number(runner->cost_s * 1e3, 2) + " ms";
+  return reason;
+}
+
+}  // namespace
+
 MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
   MethodChoice c;
   if (auto_takes_closed_form(m)) {
@@ -170,38 +238,7 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
     c.reason = "exact: torque-free, so the closed form (error at round-off)";
     return c;
   }
-  // Candidates (MethodInfo::auto_candidate): the methods whose error stays
-  // bounded over long runs, plus rk4 and the adaptive pairs (users' usual
-  // picks). The first-order methods are left out: wherever they would be
-  // cheapest, splitting costs about the same and keeps |L| exactly.
-  // With `prune` (scenes): `exact` when no force torques the body and its
-  // ladder qualifies (the rotation is then the closed form: it agrees at
-  // round-off at once); otherwise the highest-order adaptive pair, unpriced
-  // and with no pilot at all. On the bench's forced scenes dop853 at
-  // tolerance / 10 cost 1.2–1.9× the cheapest configuration meeting the
-  // tolerance from 1e-3 to 1e-8 (scripts/adaptive_study.sh auto), where pilot
-  // ladders cost 2–10 runs; the exception is the torqued top at 1e-3 (3.2×),
-  // whose cheapest is `exact` with kicks at dt = 0.1 s (~20 µs): dop853 at its
-  // loosest costs ~46 µs, and a ladder verifying exact's error costs more than
-  // exact's run itself.
-  // Without `prune`, every candidate is measured (tests, `tumble info`-like uses).
-  if (r.prune) {
-    for (const MethodInfo& info : method_table())
-      if (info.auto_candidate && info.closed_form_if_free && !m.forces.has_torque()) {
-        MethodEstimate e = fixed_step_estimate(info.method, m, s0, r, kPilotBudgetS);
-        if (e.usable) c.candidates.push_back(std::move(e));
-      }
-    const MethodInfo* pair = nullptr;
-    for (const MethodInfo& info : method_table())
-      if (info.auto_candidate && info.adaptive && (!pair || info.order > pair->order)) pair = &info;
-    if (c.candidates.empty() && pair) c.candidates.push_back(adaptive_estimate(pair->method, r, false, m, s0));
-  } else {
-    for (const MethodInfo& info : method_table()) {
-      if (!info.auto_candidate) continue;
-      c.candidates.push_back(info.adaptive ? adaptive_estimate(info.method, r, true, m, s0)
-                                           : fixed_step_estimate(info.method, m, s0, r, kPilotBudgetS));
-    }
-  }
+  c.candidates = estimate_candidates(m, s0, r);
   const MethodEstimate* best = nullptr;
   for (const MethodEstimate& e : c.candidates)
     if (e.usable && (!best || e.cost_s < best->cost_s)) best = &e;
@@ -214,18 +251,10 @@ MethodChoice choose_method(const RigidBodyModel& m, const BodyState& s0, const C
   c.config = best->config;
   c.error = best->error;
   c.cost_s = best->cost_s;
-  c.reason = std::string(method_name(best->method)) +
-             (method_info(best->method).adaptive ? " at rtol " + format_number(best->config.rtol, 0, 'e')
-                                           : " at dt " + format_number(best->config.dt, 3) + " s") +
-             ": predicted end error " + format_number(best->error, 1, 'e') + " rad <= tolerance " + format_number(r.tolerance, 3) +
-             (best->steps > 0 ? ", " + format_number(best->steps, 0, 'f') + " steps, ~" + format_number(best->cost_s * 1e3, 2) + " ms"
-                              : " (its rtol asks for the end error; no pilot)");
   const MethodEstimate* runner = nullptr;
   for (const MethodEstimate& e : c.candidates)
     if (e.usable && &e != best && (!runner || e.cost_s < runner->cost_s)) runner = &e;
-  if (runner)
-    c.reason += "; next cheapest " + std::string(method_name(runner->method)) + " ~" +
-                format_number(runner->cost_s * 1e3, 2) + " ms";
+  c.reason = choice_reason(*best, runner, r);
   return c;
 }
 

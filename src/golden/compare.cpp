@@ -96,18 +96,12 @@ void largest_region(std::vector<std::uint8_t>& over, int max_delta, int w, int h
 
 }  // namespace
 
-Comparison compare_images(const io::Image& actual, const io::Image& expected, const CompareOptions& o) {
-  Comparison c;
-  c.width = actual.width;
-  c.height = actual.height;
-  char line[400];
-  if (!same_size(actual, expected)) {
-    c.size_mismatch = true;
-    std::snprintf(line, sizeof line, "sizes differ: actual %dx%d, expected %dx%d", actual.width, actual.height,
-                  expected.width, expected.height);
-    c.summary = line;
-    return c;
-  }
+namespace {
+
+// d = each pixel's largest channel difference; sets c's over, max_delta,
+// fraction and RMS. Row by row in simple loops the compiler vectorizes:
+// |a - e| per byte, the squares, the largest of each pixel's three, then the counts.
+std::vector<std::uint8_t> pixel_deltas(const io::Image& actual, const io::Image& expected, int max_delta, Comparison& c) {
   const int w = actual.width, h = actual.height;
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   // Locals, not members of c: stores through uint8_t pointers may alias them.
@@ -115,8 +109,6 @@ Comparison compare_images(const io::Image& actual, const io::Image& expected, co
   std::uint64_t sum_sq = 0;
   long over = 0;
   int max_d = 0;
-  // Row by row in simple loops the compiler vectorizes: |a - e| per byte, the
-  // squares, the largest of each pixel's three, then the counts.
   std::vector<std::uint8_t> ad(static_cast<std::size_t>(w) * 3);
   for (int y = 0; y < h; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * w;
@@ -131,7 +123,7 @@ Comparison compare_images(const io::Image& actual, const io::Image& expected, co
     sum_sq += row_sq;
     for (int x = 0; x < w; ++x) dr[x] = std::max(ad[3 * x], std::max(ad[3 * x + 1], ad[3 * x + 2]));
     for (int x = 0; x < w; ++x) {
-      over += dr[x] > o.max_delta;
+      over += dr[x] > max_delta;
       max_d = std::max(max_d, int(dr[x]));
     }
   }
@@ -139,14 +131,12 @@ Comparison compare_images(const io::Image& actual, const io::Image& expected, co
   c.max_delta = max_d;
   c.fraction = n ? static_cast<double>(c.over) / static_cast<double>(n) : 0.0;
   c.rms = n ? std::sqrt(static_cast<double>(sum_sq) / (3.0 * static_cast<double>(n))) : 0.0;
-  if (n) {
-    worst_window(d, w, h, std::max(1, o.window), c);
-    if (c.over) largest_region(d, o.max_delta, w, h, c);
-  }
-  c.fraction_ok = c.fraction <= o.max_fraction;
-  c.region_ok = c.region <= o.max_region;
-  c.window_ok = c.window_mean <= o.max_window_mean;
-  c.pass = c.fraction_ok && c.region_ok && c.window_ok;
+  return d;
+}
+
+// The one-line summary: each measure beside its limit, then what failed.
+std::string comparison_summary(const Comparison& c, const CompareOptions& o, std::size_t n) {
+  char line[400];
   auto at = [](const Box& b) {
     return b.empty() ? std::string() : " at (" + std::to_string(b.x0) + "," + std::to_string(b.y0) + ")-(" +
                                            std::to_string(b.x1) + "," + std::to_string(b.y1) + ")";
@@ -160,7 +150,35 @@ Comparison compare_images(const io::Image& actual, const io::Image& expected, co
   if (!c.pass)
     sum += std::string("; over the limit:") + (c.fraction_ok ? "" : " fraction") + (c.region_ok ? "" : " region") +
            (c.window_ok ? "" : " window-mean");
-  c.summary = sum;
+  return sum;
+}
+
+}  // namespace
+
+Comparison compare_images(const io::Image& actual, const io::Image& expected, const CompareOptions& o) {
+  Comparison c;
+  c.width = actual.width;
+  c.height = actual.height;
+  if (!same_size(actual, expected)) {
+    c.size_mismatch = true;
+    char line[400];
+    std::snprintf(line, sizeof line, "sizes differ: actual %dx%d, expected %dx%d", actual.width, actual.height,
+                  expected.width, expected.height);
+    c.summary = line;
+    return c;
+  }
+  const int w = actual.width, h = actual.height;
+  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  std::vector<std::uint8_t> d = pixel_deltas(actual, expected, o.max_delta, c);
+  if (n) {
+    worst_window(d, w, h, std::max(1, o.window), c);
+    if (c.over) largest_region(d, o.max_delta, w, h, c);
+  }
+  c.fraction_ok = c.fraction <= o.max_fraction;
+  c.region_ok = c.region <= o.max_region;
+  c.window_ok = c.window_mean <= o.max_window_mean;
+  c.pass = c.fraction_ok && c.region_ok && c.window_ok;
+  c.summary = comparison_summary(c, o, n);
   return c;
 }
 

@@ -131,6 +131,54 @@ void rgba_row_to_rgb(const std::uint8_t* src, int width, std::uint8_t* dst) {
   for (; x < width; ++x, src += 4, dst += 3) dst[0] = src[0], dst[1] = src[1], dst[2] = src[2];
 }
 
+namespace {
+
+// Row y's edge mask: nonzero where the luma contrast calls for a blend
+// (16 pixels at a time; the two end pixels read their clamped neighbours).
+void edge_row(const Frame<true>& f, int y, std::uint8_t* edge) {
+  const int width = f.w, height = f.h;
+  const std::uint8_t* row = f.luma + std::size_t(y) * width;
+  const std::uint8_t* up = f.luma + std::size_t(std::min(y + 1, height - 1)) * width;
+  const std::uint8_t* down = f.luma + std::size_t(std::max(y - 1, 0)) * width;
+  auto load = [](const std::uint8_t* p) {
+    U8x16 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  };
+  int x = 1;
+  for (; x + 17 <= width; x += 16) {
+    const U8x16 e = edge16(load(row + x), load(row + x - 1), load(row + x + 1), load(up + x), load(down + x));
+    std::memcpy(edge + x, &e, sizeof e);
+  }
+  for (int xx : {0, width - 1})
+    edge[xx] = edge16(U8x16{} + row[xx], U8x16{} + row[std::max(xx - 1, 0)], U8x16{} + row[std::min(xx + 1, width - 1)],
+                      U8x16{} + up[xx], U8x16{} + down[xx])[0];
+  for (; x < width - 1; ++x)
+    edge[x] = edge16(U8x16{} + row[x], U8x16{} + row[x - 1], U8x16{} + row[x + 1], U8x16{} + up[x], U8x16{} + down[x])[0];
+}
+
+// Row y out (flipped: GL's rows run bottom-up): the input's colours, each edge
+// pixel blended towards its neighbour across the edge (`inner`: no clamping,
+// for pixels kMargin or more from the border).
+void blend_row(const Frame<true>& f, const Frame<false>& inner, int y, const std::uint8_t* edge, io::Image& out) {
+  const int width = f.w, height = f.h;
+  const std::uint8_t* src = f.rgba + std::size_t(y) * width * 4;
+  std::uint8_t* dst = out.rgb.data() + static_cast<std::size_t>(height - 1 - y) * width * 3;
+  rgba_row_to_rgb(src, width, dst);
+  const bool inner_row = y >= kMargin && y < height - kMargin;
+  for (int i = 0; i < width; ++i) {
+    if (!edge[i]) continue;
+    int ax = 0, ay = 0;
+    const float t = inner_row && i >= kMargin && i < width - kMargin ? blend(inner, i, y, ax, ay) : blend(f, i, y, ax, ay);
+    if (t <= 0) continue;
+    const std::uint8_t* a = src + 4 * i;
+    const std::uint8_t* b = f.px(i + ax, y + ay);
+    for (int c = 0; c < 3; ++c) dst[3 * i + c] = static_cast<std::uint8_t>(std::lround(a[c] + (b[c] - a[c]) * t));
+  }
+}
+
+}  // namespace
+
 void Fxaa::apply(const std::uint8_t* rgba, int width, int height, io::Image& out, int threads) {
   const std::size_t n = static_cast<std::size_t>(width) * height;
   luma_.resize(n);
@@ -149,39 +197,8 @@ void Fxaa::apply(const std::uint8_t* rgba, int width, int height, io::Image& out
   auto pixel_rows = [&](int y0, int y1) {
     std::vector<std::uint8_t> edge(static_cast<std::size_t>(width));
     for (int y = y0; y < y1; ++y) {
-      const std::uint8_t* row = f.luma + std::size_t(y) * width;
-      const std::uint8_t* up = f.luma + std::size_t(std::min(y + 1, height - 1)) * width;
-      const std::uint8_t* down = f.luma + std::size_t(std::max(y - 1, 0)) * width;
-      auto load = [](const std::uint8_t* p) {
-        U8x16 v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
-      };
-      int x = 1;
-      for (; x + 17 <= width; x += 16) {
-        const U8x16 e = edge16(load(row + x), load(row + x - 1), load(row + x + 1), load(up + x), load(down + x));
-        std::memcpy(edge.data() + x, &e, sizeof e);
-      }
-      for (int xx : {0, width - 1})
-        edge[xx] = edge16(U8x16{} + row[xx], U8x16{} + row[std::max(xx - 1, 0)], U8x16{} + row[std::min(xx + 1, width - 1)],
-                          U8x16{} + up[xx], U8x16{} + down[xx])[0];
-      for (; x < width - 1; ++x)
-        edge[x] = edge16(U8x16{} + row[x], U8x16{} + row[x - 1], U8x16{} + row[x + 1], U8x16{} + up[x],
-                         U8x16{} + down[x])[0];
-      const std::uint8_t* src = rgba + std::size_t(y) * width * 4;
-      std::uint8_t* dst = out.rgb.data() + static_cast<std::size_t>(height - 1 - y) * width * 3;
-      rgba_row_to_rgb(src, width, dst);
-      const bool inner_row = y >= kMargin && y < height - kMargin;
-      for (int i = 0; i < width; ++i) {
-        if (!edge[i]) continue;
-        int ax = 0, ay = 0;
-        const float t = inner_row && i >= kMargin && i < width - kMargin ? blend(inner, i, y, ax, ay)
-                                                                        : blend(f, i, y, ax, ay);
-        if (t <= 0) continue;
-        const std::uint8_t* a = src + 4 * i;
-        const std::uint8_t* b = f.px(i + ax, y + ay);
-        for (int c = 0; c < 3; ++c) dst[3 * i + c] = static_cast<std::uint8_t>(std::lround(a[c] + (b[c] - a[c]) * t));
-      }
+      edge_row(f, y, edge.data());
+      blend_row(f, inner, y, edge.data(), out);
     }
   };
   // Two halves on two threads (the GL threads are idle now); each pixel

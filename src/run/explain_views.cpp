@@ -164,73 +164,102 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
   return v;
 }
 
-viz::View ExplainViews::view_at(std::size_t i, long k, bool key) const {
+namespace {
+
+// What the momentum sphere and Poinsot's construction take alike from their
+// slot: title, camera settings, key and its place, viewport and frame height.
+template <class Input, class Slot>
+void take_slot(Input& in, const Slot& slot, const std::string& title, bool key, int frame_h) {
+  in.title = title;
+  in.camera = slot.sphere;
+  in.key = key && slot.key;
+  in.key_spot = slot.key;
+  in.width_px = static_cast<float>(slot.width_px), in.height_px = static_cast<float>(slot.height_px);
+  in.frame_h = frame_h;
+}
+
+}  // namespace
+
+viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const Run& run = runs_[0];
-  const long last = static_cast<long>(run.frames.size()) - 1;
-  const long kk = std::min(k, last);
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
-  auto state = [&](long j) -> const BodyState& { return run.frames[static_cast<std::size_t>(j)][slot.body]; };
-  const float w = static_cast<float>(slot.width_px), h = static_cast<float>(slot.height_px);
+  viz::MomentumSphereInput in;
+  in.inertia = m.inertia;
+  in.momentum = momentum_body(run.frames[static_cast<std::size_t>(kk)][slot.body]);
+  for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][slot.body]));
+  in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
+  if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
+  take_slot(in, slot, vc.title, key, height_);
+  viz::View v;
+  viz::build_momentum_sphere(v, in);
+  return v;
+}
+
+viz::View ExplainViews::plot_view(std::size_t i, long k) const {
+  const scene::ViewConfig& vc = scene_.render.explain.views[i];
+  const Slot& slot = slots_[i];
+  const Run& run = runs_[0];
+  const long kk = std::min(k, static_cast<long>(run.frames.size()) - 1);
+  const RigidBodyModel& m = scene_.bodies[slot.body].model;
+  viz::StripChartInput in;
+  in.t0 = 0, in.t1 = scene_.simulation.duration, in.lo = slot.lo, in.hi = slot.hi;
+  in.playhead = fb_.clock().time(k);
+  in.title = vc.title;
+  for (const scene::SlowMotion& sm : scene_.render.explain.slow_motion)
+    in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
+  in.frame_h = height_;
+  for (long j = 0; j <= kk; ++j) in.times.push_back(fb_.clock().time(j));
+  for (const std::string& name : vc.series) {
+    const SeriesLook& look = series_look(name);
+    viz::Series series{look.shown, {}, look.color};
+    for (long j = 0; j <= kk; ++j)
+      series.values.push_back(series_value(name, m, run.frames[static_cast<std::size_t>(j)][slot.body], run.energy0[slot.body]));
+    in.series.push_back(std::move(series));
+  }
+  viz::View v;
+  viz::build_strip_chart(v, in, slot.width_px, slot.height_px, viz::text_px(viz::TextRole::tick, height_));
+  return v;
+}
+
+viz::View ExplainViews::poinsot_view(std::size_t i, long kk, bool key) const {
+  const scene::ViewConfig& vc = scene_.render.explain.views[i];
+  const Slot& slot = slots_[i];
+  const Run& run = runs_[0];
+  const RigidBodyModel& m = scene_.bodies[slot.body].model;
+  const BodyState& s = run.frames[static_cast<std::size_t>(kk)][slot.body];
+  viz::PoinsotInput in;
+  in.q = s.q;
+  in.inertia = m.inertia;
+  in.L = s.L;
+  for (std::size_t j = 0; j < run.path_end(kk); ++j) {  // with sub-frame samples: smooth curves
+    in.omega_principal_history.push_back(omega_principal(m, run.path[j][slot.body]));
+    in.omega_world_history.push_back(omega_world(m, run.path[j][slot.body]));
+  }
+  take_slot(in, slot, vc.title, key, height_);
+  viz::View v;
+  viz::build_poinsot(v, in);
+  return v;
+}
+
+viz::View ExplainViews::view_at(std::size_t i, long k, bool key) const {
+  const scene::ViewConfig& vc = scene_.render.explain.views[i];
+  const Slot& slot = slots_[i];
+  const long kk = std::min(k, static_cast<long>(runs_[0].frames.size()) - 1);
   viz::View v;
   switch (vc.kind) {
     case scene::ViewKind::world:
     case scene::ViewKind::body_frame: v = bodies_view(i, k, key); break;
-    case scene::ViewKind::momentum_sphere: {
-      if (kk < 0) break;
-      viz::MomentumSphereInput in;
-      in.inertia = m.inertia;
-      in.momentum = momentum_body(state(kk));
-      for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][slot.body]));
-      in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
-      in.title = vc.title;
-      if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
-      in.camera = slot.sphere;
-      in.key = key && slot.key;
-      in.key_spot = slot.key;
-      in.width_px = w, in.height_px = h, in.frame_h = height_;
-      viz::build_momentum_sphere(v, in);
+    case scene::ViewKind::momentum_sphere:
+      if (kk >= 0) v = sphere_view(i, kk, key);
       break;
-    }
-    case scene::ViewKind::plot: {
-      viz::StripChartInput in;
-      in.t0 = 0, in.t1 = scene_.simulation.duration, in.lo = slot.lo, in.hi = slot.hi;
-      in.playhead = fb_.clock().time(k);
-      in.title = vc.title;
-      for (const scene::SlowMotion& m : scene_.render.explain.slow_motion)
-        in.shaded.push_back({m.start, m.end, scene::speed_text(m.time_scale)});
-      in.frame_h = height_;
-      for (long j = 0; j <= kk; ++j) in.times.push_back(fb_.clock().time(j));
-      for (const std::string& name : vc.series) {
-        const SeriesLook& look = series_look(name);
-        viz::Series series{look.shown, {}, look.color};
-        for (long j = 0; j <= kk; ++j) series.values.push_back(series_value(name, m, state(j), run.energy0[slot.body]));
-        in.series.push_back(std::move(series));
-      }
-      viz::build_strip_chart(v, in, slot.width_px, slot.height_px, viz::text_px(viz::TextRole::tick, height_));
+    case scene::ViewKind::plot: v = plot_view(i, k); break;
+    case scene::ViewKind::poinsot:
+      if (kk >= 0) v = poinsot_view(i, kk, key);
       break;
-    }
-    case scene::ViewKind::poinsot: {
-      if (kk < 0) break;
-      viz::PoinsotInput in;
-      in.q = state(kk).q;
-      in.inertia = m.inertia;
-      in.L = state(kk).L;
-      for (std::size_t j = 0; j < run.path_end(kk); ++j) {  // with sub-frame samples: smooth curves
-        in.omega_principal_history.push_back(omega_principal(m, run.path[j][slot.body]));
-        in.omega_world_history.push_back(omega_world(m, run.path[j][slot.body]));
-      }
-      in.title = vc.title;
-      in.camera = slot.sphere;
-      in.key = key && slot.key;
-      in.key_spot = slot.key;
-      in.width_px = w, in.height_px = h, in.frame_h = height_;
-      viz::build_poinsot(v, in);
-      break;
-    }
   }
-  viz::settle_labels(v, w, h);
+  viz::settle_labels(v, static_cast<float>(slot.width_px), static_cast<float>(slot.height_px));
   if (vc.viewport) v.viewport = glm::dvec4((*vc.viewport)[0], (*vc.viewport)[1], (*vc.viewport)[2], (*vc.viewport)[3]);
   else v.viewport = glm::dvec4(0, 0, 1, 1);
   return v;

@@ -33,6 +33,9 @@ class ExplainViews {
   };
   viz::View view_at(std::size_t i, long k, bool key = true) const;
   viz::View bodies_view(std::size_t i, long k, bool key) const;  // world, body_frame
+  viz::View sphere_view(std::size_t i, long kk, bool key) const;   // momentum_sphere at frame kk (< frames)
+  viz::View plot_view(std::size_t i, long k) const;
+  viz::View poinsot_view(std::size_t i, long kk, bool key) const;  // at frame kk (< frames)
   std::vector<viz::KeyEntry> key_entries(std::size_t i) const;
   void place_keys();
   std::vector<viz::Box> overlay_boxes() const;  // captions and badge over the whole video, frame px

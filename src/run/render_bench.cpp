@@ -185,6 +185,50 @@ std::string paths_name(render::GpuPaths p) {
          (p.gl_fxaa ? "GL FXAA" : "");
 }
 
+/// Encode-only limit (frames/s): the same frames, drawn beforehand (untimed),
+/// then only encoded and written by the same FrameEncoder.
+double encode_only_fps(const scene::Scene& s, long frames, render::Renderer& high, const std::filesystem::path& out_dir,
+                       int threads) {
+  const double fps = s.render.output.fps;
+  const std::vector<Run> runs = simulate_runs(s, frames, fps);
+  const FrameBuilder builder(s, runs, fps, kW, kH);
+  std::vector<io::Image> kept;
+  kept.reserve(static_cast<size_t>(frames));
+  for (long k = 0; k < frames; ++k) kept.push_back(high.render(builder.build(k)));
+  const auto t1 = Clock::now();
+  {
+    render::FrameEncoder encoder(threads);
+    for (long k = 0; k < frames; ++k) encoder.submit(io::frame_path(out_dir, k), std::move(kept[static_cast<size_t>(k)]));
+    encoder.flush();
+  }
+  return frames / seconds_since(t1);
+}
+
+/// The three renderers end to end, interleaved, best of two each: a load that
+/// comes and goes (a shared machine) then favours neither. The last FXAA run's
+/// frames feed the PNG video. Returns the FXAA run's figures.
+EndToEnd measure_end_to_end(const scene::Scene& s, long frames, render::Renderer& high, render::Renderer& msaa,
+                            render::Renderer& other, const std::filesystem::path& out_dir, RenderBenchResult& r) {
+  EndToEnd m, e, o;
+  for (int rep = 0; rep < 2; ++rep) {
+    const EndToEnd oi = end_to_end(s, frames, other, out_dir, r.threads);
+    const EndToEnd mi = end_to_end(s, frames, msaa, out_dir, r.threads);
+    const EndToEnd ei = end_to_end(s, frames, high, out_dir, r.threads);
+    if (rep == 0 || mi.seconds < m.seconds) m = mi;
+    if (rep == 0 || ei.seconds < e.seconds) e = ei;
+    if (rep == 0 || oi.seconds < o.seconds) o = oi;
+  }
+  r.msaa_end_to_end_fps = frames / m.seconds;
+  r.msaa_render_ms = 1000 * m.render_seconds / frames;
+  r.msaa_cpu_ms = 1000 * m.cpu_seconds / frames;
+  r.end_to_end_fps = frames / e.seconds;
+  r.render_ms = 1000 * e.render_seconds / frames;
+  r.cpu_ms = 1000 * e.cpu_seconds / frames;
+  r.other_paths_fps = frames / o.seconds;
+  r.other_paths_cpu_ms = 1000 * o.cpu_seconds / frames;
+  return e;
+}
+
 }  // namespace
 
 RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long frames,
@@ -218,43 +262,8 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   const VideoEncoder encoder = choose_video_encoder(ctx->vendor(), render::usable_cores());
   r.video_encoder = encoder.codec + " " + encoder.preset;
   r.stream_threads = encoder.threads ? ", " + std::to_string(encoder.threads) + " thread(s)" : "";
-  {
-    // Encode-only limit: the same frames, drawn beforehand (untimed), then only
-    // encoded and written by the same FrameEncoder.
-    const std::vector<Run> runs = simulate_runs(s, frames, fps);
-    const FrameBuilder builder(s, runs, fps, kW, kH);
-    std::vector<io::Image> kept;
-    kept.reserve(static_cast<size_t>(frames));
-    for (long k = 0; k < frames; ++k) kept.push_back(high.render(builder.build(k)));
-    const auto t1 = Clock::now();
-    {
-      render::FrameEncoder encoder(r.threads);
-      for (long k = 0; k < frames; ++k)
-        encoder.submit(io::frame_path(out_dir, k), std::move(kept[static_cast<size_t>(k)]));
-      encoder.flush();
-    }
-    r.encode_only_fps = frames / seconds_since(t1);
-  }
-  // Interleaved, best of two each: a load that comes and goes (a shared
-  // machine) then favours neither. The last FXAA run's frames feed the PNG video.
-  EndToEnd m, e, o;
-  for (int rep = 0; rep < 2; ++rep) {
-    const EndToEnd oi = end_to_end(s, frames, other, out_dir, r.threads);
-    const EndToEnd mi = end_to_end(s, frames, msaa, out_dir, r.threads);
-    const EndToEnd ei = end_to_end(s, frames, high, out_dir, r.threads);
-    if (rep == 0 || mi.seconds < m.seconds) m = mi;
-    if (rep == 0 || ei.seconds < e.seconds) e = ei;
-    if (rep == 0 || oi.seconds < o.seconds) o = oi;
-  }
-  r.msaa_end_to_end_fps = frames / m.seconds;
-  r.msaa_render_ms = 1000 * m.render_seconds / frames;
-  r.msaa_cpu_ms = 1000 * m.cpu_seconds / frames;
-  r.end_to_end_fps = frames / e.seconds;
-  r.render_ms = 1000 * e.render_seconds / frames;
-  r.cpu_ms = 1000 * e.cpu_seconds / frames;
-  r.other_paths_fps = frames / o.seconds;
-  r.other_paths_cpu_ms = 1000 * o.cpu_seconds / frames;
-
+  r.encode_only_fps = encode_only_fps(s, frames, high, out_dir, r.threads);
+  const EndToEnd e = measure_end_to_end(s, frames, high, msaa, other, out_dir, r);
   measure_video(s, frames, high, e, encoder, out_dir, r);
   r.quality.push_back(measure_quality(*ctx, scene_path));
   for (const auto& q : quality_scenes) r.quality.push_back(measure_quality(*ctx, q));

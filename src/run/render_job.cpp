@@ -47,6 +47,72 @@ int sub_samples(const std::vector<const RigidBodyModel*>& models, const std::vec
   return static_cast<int>(std::clamp(std::ceil(turn / kMaxTurnPerSample), 1.0, static_cast<double>(kMaxSubSamples)));
 }
 
+namespace {
+
+using Propagators = std::vector<std::unique_ptr<Propagator>>;
+
+// One Propagator per body for `sim`, with the run's notes, energies at t = 0
+// and labels. Labels list each method and step once, compared whole (by enum
+// for the methods): rk45 and rk4 are two entries, not one substring of the other.
+Propagators start_run(const scene::Scene& s, const scene::SimulationConfig& sim, Run& run) {
+  Propagators props;
+  std::vector<Method> used;
+  std::vector<std::string> steps;
+  for (const scene::Body& b : s.bodies) {
+    const scene::MethodPlan plan = scene::plan_method(sim, b);
+    if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
+    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) run.auto_notes.push_back("warning: " + *w);
+    props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
+    run.energy0.push_back(total_energy(b.model, b.initial));
+    const std::string step = scene::step_label(plan.config, b.model);
+    if (std::find(steps.begin(), steps.end(), step) == steps.end()) {
+      steps.push_back(step);
+      run.step_label += (run.step_label.empty() ? "" : "/") + step;
+    }
+    if (std::find(used.begin(), used.end(), plan.config.method) == used.end()) {
+      used.push_back(plan.config.method);
+      run.label += (run.label.empty() ? "" : "/") + std::string(method_name(plan.config.method));
+    }
+  }
+  return props;
+}
+
+// The run's frames (and, with `curves`, its path: the frames and sub-frame
+// samples between them) until the last frame or a divergence.
+void advance_run(const scene::FrameClock& clock, long frames, bool curves, const std::vector<const RigidBodyModel*>& models,
+                 Propagators& props, Run& run) {
+  try {
+    for (long k = 0; k < frames; ++k) {
+      const double t = clock.time(k);
+      if (curves && k > 0) {
+        // Sub-frame samples: dense output between grid points, never fed
+        // back, so the frames are the same with or without them.
+        const double t0 = clock.time(k - 1);
+        const int n = sub_samples(models, run.frames.back(), t - t0);
+        for (int j = 1; j < n; ++j) {
+          const double tj = t0 + (t - t0) * j / n;
+          std::vector<BodyState> sub;
+          for (auto& p : props) sub.push_back(p->advance_to(tj));
+          run.path.push_back(std::move(sub));
+          run.path_t.push_back(tj);
+        }
+      }
+      std::vector<BodyState> states;
+      for (auto& p : props) states.push_back(p->advance_to(t));
+      if (curves) {
+        run.path_of_frame.push_back(run.path.size());
+        run.path.push_back(states);
+        run.path_t.push_back(t);
+      }
+      run.frames.push_back(std::move(states));
+    }
+  } catch (const Diverged& e) {
+    run.diverged = e.what();
+  }
+}
+
+}  // namespace
+
 std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
   std::vector<std::optional<Method>> methods;
   for (Method m : s.render.compare_methods) methods.push_back(m);
@@ -61,55 +127,8 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
     scene::SimulationConfig sim = s.simulation;
     sim.automatic = !method;
     if (method) sim.step.method = *method;
-    std::vector<std::unique_ptr<Propagator>> props;
-    // Labels list each method and step once, compared whole (by enum for the
-    // methods): rk45 and rk4 are two entries, not one substring of the other.
-    std::vector<Method> used;
-    std::vector<std::string> steps;
-    for (const scene::Body& b : s.bodies) {
-      const scene::MethodPlan plan = scene::plan_method(sim, b);
-      if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
-      if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) run.auto_notes.push_back("warning: " + *w);
-      props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
-      run.energy0.push_back(total_energy(b.model, b.initial));
-      const std::string step = scene::step_label(plan.config, b.model);
-      if (std::find(steps.begin(), steps.end(), step) == steps.end()) {
-        steps.push_back(step);
-        run.step_label += (run.step_label.empty() ? "" : "/") + step;
-      }
-      if (std::find(used.begin(), used.end(), plan.config.method) == used.end()) {
-        used.push_back(plan.config.method);
-        run.label += (run.label.empty() ? "" : "/") + std::string(method_name(plan.config.method));
-      }
-    }
-    try {
-      for (long k = 0; k < frames; ++k) {
-        const double t = clock.time(k);
-        if (curves && k > 0) {
-          // Sub-frame samples: dense output between grid points, never fed
-          // back, so the frames are the same with or without them.
-          const double t0 = clock.time(k - 1);
-          const int n = sub_samples(models, run.frames.back(), t - t0);
-          for (int j = 1; j < n; ++j) {
-            const double tj = t0 + (t - t0) * j / n;
-            std::vector<BodyState> sub;
-            for (auto& p : props) sub.push_back(p->advance_to(tj));
-            run.path.push_back(std::move(sub));
-            run.path_t.push_back(tj);
-          }
-        }
-        std::vector<BodyState> states;
-        for (auto& p : props) states.push_back(p->advance_to(t));
-        if (curves) {
-          run.path_of_frame.push_back(run.path.size());
-          run.path.push_back(states);
-          run.path_t.push_back(t);
-        }
-        run.frames.push_back(std::move(states));
-      }
-    } catch (const Diverged& e) {
-      run.diverged = e.what();
-    }
+    Propagators props = start_run(s, sim, run);
+    advance_run(clock, frames, curves, models, props, run);
     runs.push_back(std::move(run));
   }
   return runs;
@@ -162,6 +181,42 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
   }
   look.particles = viz::make_particle_set(b.cloud, colors, static_cast<float>(viz::particle_radius(b.model)));
   return look;
+}
+
+// The overlay line: time, method, step, energy error, as the scene's overlay asks.
+std::string overlay_line(const scene::OverlayItems& items, const Run& run, std::size_t run_count,
+                         const std::vector<viz::BodySnapshot>& snaps, double t) {
+  // Largest relative energy error over the bodies: the failure users look
+  // for. Only where energy is conserved (gravity is in it, as potential):
+  // a thruster, torque or damping does work, and its change is no error.
+  double rel = 0;
+  bool conserved = true;
+  for (size_t i = 0; i < snaps.size(); ++i) {
+    conserved = conserved && snaps[i].model->forces.conserves_energy();
+    const double e0 = run.energy0[i];
+    const double e = total_energy(*snaps[i].model, snaps[i].state);
+    rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
+  }
+  // In a comparison grid the label names the method; keep the line short
+  // and the font in proportion to the viewport.
+  // Below 1e-13 the digits are round-off: they would change with the
+  // compiler and break golden images for no physical reason.
+  char energy[40];
+  if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
+  else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
+  else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
+  char time[40];
+  if (run_count > 1) std::snprintf(time, sizeof time, "t = %.2f s", t);
+  else std::snprintf(time, sizeof time, "t = %6.2f s", t);
+  std::string line;
+  auto part = [&](bool on, const std::string& text) {
+    if (on) line += (line.empty() ? "" : "   ") + text;
+  };
+  part(items.time, time);
+  part(items.method && run_count == 1, run.label);
+  part(items.step, run.step_label);
+  part(items.energy, energy);
+  return line;
 }
 
 }  // namespace
@@ -242,37 +297,7 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
     if (scene_.render.explain.labels) add_labels(v, snaps, width_px, height_px, font_px_);
     const std::size_t labels_end = v.texts.size();
     if (scene_.render.draw.overlay) {
-      // Largest relative energy error over the bodies: the failure users look
-      // for. Only where energy is conserved (gravity is in it, as potential):
-      // a thruster, torque or damping does work, and its change is no error.
-      double rel = 0;
-      bool conserved = true;
-      for (size_t i = 0; i < snaps.size(); ++i) {
-        conserved = conserved && snaps[i].model->forces.conserves_energy();
-        const double e0 = run.energy0[i];
-        const double e = total_energy(*snaps[i].model, snaps[i].state);
-        rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
-      }
-      // In a comparison grid the label names the method; keep the line short
-      // and the font in proportion to the viewport.
-      // Below 1e-13 the digits are round-off: they would change with the
-      // compiler and break golden images for no physical reason.
-      char energy[40];
-      if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
-      else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
-      else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
-      const scene::OverlayItems& items = scene_.render.draw.overlay_items;
-      char time[40];
-      if (runs_.size() > 1) std::snprintf(time, sizeof time, "t = %.2f s", t);
-      else std::snprintf(time, sizeof time, "t = %6.2f s", t);
-      std::string line;
-      auto part = [&](bool on, const std::string& text) {
-        if (on) line += (line.empty() ? "" : "   ") + text;
-      };
-      part(items.time, time);
-      part(items.method && runs_.size() == 1, run.label);
-      part(items.step, run.step_label);
-      part(items.energy, energy);
+      const std::string line = overlay_line(scene_.render.draw.overlay_items, run, runs_.size(), snaps, t);
       const float y = top_px + (runs_.size() > 1 ? 30.0f : 12.0f);
       v.texts.push_back({line, {12.0f, y}, font_px_, ink});
       // Name labels stay clear of the overlay line (a body near the top of a

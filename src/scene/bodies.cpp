@@ -124,15 +124,7 @@ void read_forces(TableReader& r, const Scene& scene, ForceSet& f) {
   f.terms.insert(f.terms.end(), keyed.begin(), keyed.end());
 }
 
-void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene& scene) {
-  const std::size_t errors_before = ctx.diag.error_count();
-  std::vector<std::string_view> keys = {"name",        "particles", "shape",      "cloud",       "parts",
-                                        "position",    "orientation", "velocity", "omega_body", "omega_world",
-                                        "forces"};
-  for (const ForceKind& kind : force_kinds()) keys.push_back(kind.key);
-  keys.push_back("color");
-  TableReader r(t, "bodies[" + std::to_string(index) + "]", ctx.diag, keys);
-  Body b;
+void read_body_name(TableReader& r, std::size_t index, LoadContext& ctx, Body& b) {
   b.name = r.string("name").value_or("body" + std::to_string(index));
   if (!valid_name(b.name)) {
     r.error("name", "expected 1-64 characters from [A-Za-z0-9_.-], found " + quote_token(b.name));
@@ -140,7 +132,10 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
     r.error("name", "duplicate body name \"" + b.name + "\"; names must be unique");
   }
   ctx.body_names.push_back(b.name);
+}
 
+/// The body's particles: its own (particles, shape, cloud) and its [[bodies.parts]].
+void read_body_particles(const toml::table& t, TableReader& r, LoadContext& ctx, Body& b) {
   int sources = read_placed(r, ctx, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), std::nullopt, b);
   const auto parts = r.tables("parts");
   for (std::size_t j = 0; j < parts.size(); ++j) {
@@ -156,8 +151,10 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   if (sources == 0)
     ctx.diag.error(t.source(), r.path(),
                    "body \"" + b.name + "\" has no particles; give particles, shape, cloud or [[bodies.parts]]");
+}
 
-  InitialConditions& ic = b.initial_conditions;
+InitialConditions read_initial_conditions(TableReader& r) {
+  InitialConditions ic;
   ic.position = r.vec3("position").value_or(Eigen::Vector3d::Zero());
   ic.orientation = read_orientation(r).value_or(Eigen::Quaterniond::Identity());
   ic.velocity = r.vec3("velocity").value_or(Eigen::Vector3d::Zero());
@@ -170,6 +167,47 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
     ic.omega = r.vec3("omega_body").value_or(Eigen::Vector3d::Zero());
     ic.omega_frame = Frame::body;
   }
+  return ic;
+}
+
+/// Mass properties, model and initial state of a body read without errors;
+/// false (an error given) when they cannot be had or leave the double range.
+bool complete_body(const toml::table& t, const TableReader& r, LoadContext& ctx, const ForceSet& forces, Body& b) {
+  try {
+    b.mass_properties = compute_mass_properties(b.cloud, b.name);
+  } catch (const InputError& e) {  // DegenerateBody: its message names the body and the fix
+    ctx.diag.error(t.source(), r.path(), e.what());
+    return false;
+  }
+  b.model = make_model(b.name, b.mass_properties, forces);
+  b.initial = make_state(b.model, b.initial_conditions);
+  if (!b.initial.all_finite()) {
+    ctx.diag.error(t.source(), r.path(), "initial state of \"" + b.name + "\" is not finite; check the values");
+    return false;
+  }
+  // The steps square momenta and divide energies: each must stay a normal double (or 0).
+  const double sizes[] = {b.initial.L.squaredNorm(), b.initial.P.squaredNorm(), kinetic_energy(b.model, b.initial)};
+  if (std::any_of(std::begin(sizes), std::end(sizes), [](double v) { return !std::isfinite(v) || (v != 0 && v < DBL_MIN); })) {
+    ctx.diag.error(t.source(), r.path(), "body '" + b.name + "': the initial momenta or kinetic energy (" +
+                                             format_number(sizes[2]) + " J) leave the normal double range "
+                                             "(2.2e-308 to 1.8e308); express the body in other units");
+    return false;
+  }
+  return true;
+}
+
+void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene& scene) {
+  const std::size_t errors_before = ctx.diag.error_count();
+  std::vector<std::string_view> keys = {"name",        "particles", "shape",      "cloud",       "parts",
+                                        "position",    "orientation", "velocity", "omega_body", "omega_world",
+                                        "forces"};
+  for (const ForceKind& kind : force_kinds()) keys.push_back(kind.key);
+  keys.push_back("color");
+  TableReader r(t, "bodies[" + std::to_string(index) + "]", ctx.diag, keys);
+  Body b;
+  read_body_name(r, index, ctx, b);
+  read_body_particles(t, r, ctx, b);
+  b.initial_conditions = read_initial_conditions(r);
   ForceSet forces;
   read_forces(r, scene, forces);
   const auto& pal = kPalette[index % kPalette.size()];
@@ -178,27 +216,7 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
     if (m.color.x() < 0) m.color = b.color;
 
   if (ctx.diag.error_count() != errors_before) return;  // the body is broken; keep collecting others
-  try {
-    b.mass_properties = compute_mass_properties(b.cloud, b.name);
-  } catch (const InputError& e) {  // DegenerateBody: its message names the body and the fix
-    ctx.diag.error(t.source(), r.path(), e.what());
-    return;
-  }
-  b.model = make_model(b.name, b.mass_properties, forces);
-  b.initial = make_state(b.model, ic);
-  if (!b.initial.all_finite()) {
-    ctx.diag.error(t.source(), r.path(), "initial state of \"" + b.name + "\" is not finite; check the values");
-    return;
-  }
-  // The steps square momenta and divide energies: each must stay a normal double (or 0).
-  const double sizes[] = {b.initial.L.squaredNorm(), b.initial.P.squaredNorm(), kinetic_energy(b.model, b.initial)};
-  if (std::any_of(std::begin(sizes), std::end(sizes), [](double v) { return !std::isfinite(v) || (v != 0 && v < DBL_MIN); })) {
-    ctx.diag.error(t.source(), r.path(), "body '" + b.name + "': the initial momenta or kinetic energy (" +
-                                             format_number(sizes[2]) + " J) leave the normal double range "
-                                             "(2.2e-308 to 1.8e308); express the body in other units");
-    return;
-  }
-  scene.bodies.push_back(std::move(b));
+  if (complete_body(t, r, ctx, forces, b)) scene.bodies.push_back(std::move(b));
 }
 
 }  // namespace

@@ -68,8 +68,13 @@ std::optional<double> mass_of(TableReader& s) {
   return s.number("mass", Range::positive());
 }
 
-ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& ctx, bool& ok) {
-  auto require = [&](std::string_view key, const Range& range) {
+// A shape table's fields, each read once: a missing or bad one clears `ok`
+// (its error already given) and yields a harmless stand-in.
+struct ShapeFields {
+  const std::string& type;
+  TableReader& s;
+  bool& ok;
+  double require(std::string_view key, const Range& range) {
     if (!s.has(key)) {
       s.error(key, "missing; a " + type + " needs '" + std::string(key) + "' (" + range.what + ")");
       ok = false;
@@ -78,8 +83,8 @@ ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& c
     auto v = s.number(key, range);
     if (!v) ok = false;
     return v.value_or(0.0);
-  };
-  auto require_vec = [&](std::string_view key) {
+  }
+  Eigen::Vector3d require_vec(std::string_view key) {
     if (!s.has(key)) {
       s.error(key, "missing; a " + type + " needs '" + std::string(key) + "' ([x, y, z], m, each > 0)");
       ok = false;
@@ -88,65 +93,86 @@ ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& c
     auto v = s.vec3(key, Range::positive());
     if (!v) ok = false;
     return v.value_or(Eigen::Vector3d(1, 1, 1));
-  };
-  auto resolution = [&](long long def, long long lo, long long hi) {
+  }
+  long long resolution(long long def, long long lo, long long hi) {
     if (!s.has("resolution")) return def;
     auto v = s.integer("resolution", lo, hi);
     if (!v) ok = false;
     return v.value_or(def);
-  };
-  const auto mass = mass_of(s);
-  if (!mass) ok = false;
-  ParticleCloud cloud;
-  if (type == "box") {
-    const Eigen::Vector3d size = require_vec("size");
-    Eigen::Vector3i n(10, 10, 10);
-    if (const toml::node* rn = s.node("resolution"); rn && rn->is_array()) {
-      const toml::array& a = *rn->as_array();
-      bool good = a.size() == 3;
-      for (std::size_t k = 0; good && k < 3; ++k) {
-        auto i = a.get(k)->as_integer();
-        good = i && i->get() >= 1 && i->get() <= 100000;
-        if (good) n[static_cast<int>(k)] = static_cast<int>(i->get());
-      }
-      if (!good) {
-        s.error("resolution", "expected an integer or [nx, ny, nz], each in [1, 100000], found " + describe(*rn));
-        ok = false;
-      }
-    } else {
-      n.setConstant(static_cast<int>(resolution(10, 1, 100000)));
-    }
-    if (!ok || !reserve(ctx, s, "resolution", double(n.x()) * n.y() * n.z())) return {};
-    cloud = make_box(size, n, *mass);
-  } else if (type == "ellipsoid") {
-    const Eigen::Vector3d semi = require_vec("semi_axes");
-    const int n = static_cast<int>(resolution(15, 2, 1000));
-    if (!ok || !reserve(ctx, s, "resolution", 0.5236 * n * n * n)) return {};
-    cloud = make_ellipsoid(semi, n, *mass);
-  } else if (type == "cylinder") {
-    const double radius = require("radius", Range::positive());
-    const double length = require("length", Range::positive());
-    const int n = static_cast<int>(resolution(15, 2, 10000));
-    if (!ok) return {};
-    const double nz = std::max(1.0, std::round(n * length / (2 * radius)));
-    if (!reserve(ctx, s, "resolution", 0.7854 * n * n * nz)) return {};
-    cloud = make_cylinder(radius, length, n, *mass);
-  } else {  // t_handle
-    const double handle = require("handle_length", Range::positive());
-    const double stem = require("stem_length", Range::positive());
-    const double thick = require("thickness", Range::positive());
-    if (!s.has("resolution")) {
-      s.error("resolution", "missing; a t_handle needs 'resolution' (particles per metre, an integer >= 1)");
-      ok = false;
-    }
-    const long long per_m = resolution(1, 1, 1000000);
-    if (!ok) return {};
-    auto count = [&](double len) { return std::max(1.0, std::round(len * static_cast<double>(per_m))); };
-    const double nt = count(thick);
-    if (!reserve(ctx, s, "resolution", nt * nt * (count(handle) + count(stem)))) return {};
-    cloud = make_t_handle(handle, stem, thick, static_cast<int>(per_m), *mass);
   }
-  return cloud;
+};
+
+// A box's resolution: one count for every axis, or [nx, ny, nz].
+Eigen::Vector3i box_resolution(ShapeFields& f) {
+  Eigen::Vector3i n(10, 10, 10);
+  const toml::node* rn = f.s.node("resolution");
+  if (!rn || !rn->is_array()) {
+    n.setConstant(static_cast<int>(f.resolution(10, 1, 100000)));
+    return n;
+  }
+  const toml::array& a = *rn->as_array();
+  bool good = a.size() == 3;
+  for (std::size_t k = 0; good && k < 3; ++k) {
+    auto i = a.get(k)->as_integer();
+    good = i && i->get() >= 1 && i->get() <= 100000;
+    if (good) n[static_cast<int>(k)] = static_cast<int>(i->get());
+  }
+  if (!good) {
+    f.s.error("resolution", "expected an integer or [nx, ny, nz], each in [1, 100000], found " + describe(*rn));
+    f.ok = false;
+  }
+  return n;
+}
+
+ParticleCloud box_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+  const Eigen::Vector3d size = f.require_vec("size");
+  const Eigen::Vector3i n = box_resolution(f);
+  if (!f.ok || !reserve(ctx, f.s, "resolution", double(n.x()) * n.y() * n.z())) return {};
+  return make_box(size, n, mass);
+}
+
+ParticleCloud ellipsoid_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+  const Eigen::Vector3d semi = f.require_vec("semi_axes");
+  const int n = static_cast<int>(f.resolution(15, 2, 1000));
+  if (!f.ok || !reserve(ctx, f.s, "resolution", 0.5236 * n * n * n)) return {};
+  return make_ellipsoid(semi, n, mass);
+}
+
+ParticleCloud cylinder_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+  const double radius = f.require("radius", Range::positive());
+  const double length = f.require("length", Range::positive());
+  const int n = static_cast<int>(f.resolution(15, 2, 10000));
+  if (!f.ok) return {};
+  const double nz = std::max(1.0, std::round(n * length / (2 * radius)));
+  if (!reserve(ctx, f.s, "resolution", 0.7854 * n * n * nz)) return {};
+  return make_cylinder(radius, length, n, mass);
+}
+
+ParticleCloud t_handle_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+  const double handle = f.require("handle_length", Range::positive());
+  const double stem = f.require("stem_length", Range::positive());
+  const double thick = f.require("thickness", Range::positive());
+  if (!f.s.has("resolution")) {
+    f.s.error("resolution", "missing; a t_handle needs 'resolution' (particles per metre, an integer >= 1)");
+    f.ok = false;
+  }
+  const long long per_m = f.resolution(1, 1, 1000000);
+  if (!f.ok) return {};
+  auto count = [&](double len) { return std::max(1.0, std::round(len * static_cast<double>(per_m))); };
+  const double nt = count(thick);
+  if (!reserve(ctx, f.s, "resolution", nt * nt * (count(handle) + count(stem)))) return {};
+  return make_t_handle(handle, stem, thick, static_cast<int>(per_m), mass);
+}
+
+ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& ctx, bool& ok) {
+  ShapeFields f{type, s, ok};
+  const std::optional<double> mass_read = mass_of(s);
+  if (!mass_read) ok = false;
+  const double mass = mass_read.value_or(1.0);  // used only when ok
+  if (type == "box") return box_shape(f, ctx, mass);
+  if (type == "ellipsoid") return ellipsoid_shape(f, ctx, mass);
+  if (type == "cylinder") return cylinder_shape(f, ctx, mass);
+  return t_handle_shape(f, ctx, mass);
 }
 
 void read_shape(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {

@@ -86,6 +86,11 @@ class Header {
   }
   bool next_line(std::string& out);
   const Type& type_at(const Word& w) const;
+  /// The line's words are exactly n, as `form` shows them.
+  void expect_words(const std::vector<Word>& w, const std::string& line, std::size_t n, const std::string& form) const;
+  void read_format(const std::vector<Word>& w, const std::string& line);
+  void read_element(const std::vector<Word>& w, const std::string& line);
+  void read_property(const std::vector<Word>& w, const std::string& line);
 
   std::istream& in_;
   std::string name_;
@@ -111,6 +116,48 @@ const Type& Header::type_at(const Word& w) const {
                  "uint16, int32, uint32, float32, float64), found " + quote(w.text));
 }
 
+void Header::expect_words(const std::vector<Word>& w, const std::string& line, std::size_t n,
+                          const std::string& form) const {
+  if (w.size() < n) fail(int(line.size()) + 1, "expected '" + form + "'; the line ends early");
+  if (w.size() > n) fail(w[n].column, "expected the end of the line after '" + form + "', found " + quote(w[n].text));
+}
+
+void Header::read_format(const std::vector<Word>& w, const std::string& line) {
+  expect_words(w, line, 3, "format ascii|binary_little_endian|binary_big_endian 1.0");
+  if (w[1].text == "ascii") format = Format::ascii;
+  else if (w[1].text == "binary_little_endian") format = Format::little_endian;
+  else if (w[1].text == "binary_big_endian") format = Format::big_endian;
+  else fail(w[1].column, "expected ascii, binary_little_endian or binary_big_endian, found " + quote(w[1].text));
+  if (w[2].text != "1.0") fail(w[2].column, "expected version 1.0, found " + quote(w[2].text));
+}
+
+void Header::read_element(const std::vector<Word>& w, const std::string& line) {
+  expect_words(w, line, 3, "element <name> <count>");
+  std::uint64_t n = 0;
+  const std::string_view t = w[2].text;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
+  if (ec != std::errc() || end != t.data() + t.size())
+    fail(w[2].column, "expected the element count (a whole number >= 0), found " + quote(t));
+  elements.push_back({std::string(w[1].text), n, lines, {}});
+}
+
+void Header::read_property(const std::vector<Word>& w, const std::string& line) {
+  if (elements.empty()) fail(w[0].column, "a 'property' line before any 'element' line");
+  const bool list = w.size() > 1 && w[1].text == "list";
+  expect_words(w, line, list ? 5 : 3, list ? "property list <count type> <item type> <name>" : "property <type> <name>");
+  Property p;
+  if (list) {
+    p.count = &type_at(w[2]);
+    if (p.count->floating) fail(w[2].column, "expected an integer type for the list's length, found " + quote(w[2].text));
+  }
+  const Word& n = w[list ? 4 : 2];
+  p.type = &type_at(w[list ? 3 : 1]);
+  p.name = n.text;
+  for (const Property& q : elements.back().properties)
+    if (q.name == p.name) fail(n.column, "property " + quote(n.text) + " is declared twice in this element");
+  elements.back().properties.push_back(std::move(p));
+}
+
 Header::Header(std::istream& in, std::string name, std::vector<std::string>& warnings)
     : in_(in), name_(std::move(name)) {
   std::string line;
@@ -123,49 +170,21 @@ Header::Header(std::istream& in, std::string name, std::vector<std::string>& war
     if (!next_line(line)) fail(1, "the file ends before 'end_header'");
     const std::vector<Word> w = split(line);
     if (w.empty()) continue;
-    auto words = [&](std::size_t n, const std::string& form) {
-      if (w.size() < n) fail(int(line.size()) + 1, "expected '" + form + "'; the line ends early");
-      if (w.size() > n) fail(w[n].column, "expected the end of the line after '" + form + "', found " + quote(w[n].text));
-    };
     const std::string_view key = w[0].text;
     if (key == "end_header") {
-      words(1, "end_header");
+      expect_words(w, line, 1, "end_header");
       if (!has_format) fail(1, "expected a 'format' line before 'end_header'");
       return;
     }
     if (key == "comment" || key == "obj_info") continue;
     if (key == "format") {
       if (has_format) fail(w[0].column, "a second 'format' line");
-      words(3, "format ascii|binary_little_endian|binary_big_endian 1.0");
-      if (w[1].text == "ascii") format = Format::ascii;
-      else if (w[1].text == "binary_little_endian") format = Format::little_endian;
-      else if (w[1].text == "binary_big_endian") format = Format::big_endian;
-      else fail(w[1].column, "expected ascii, binary_little_endian or binary_big_endian, found " + quote(w[1].text));
-      if (w[2].text != "1.0") fail(w[2].column, "expected version 1.0, found " + quote(w[2].text));
+      read_format(w, line);
       has_format = true;
     } else if (key == "element") {
-      words(3, "element <name> <count>");
-      std::uint64_t n = 0;
-      const std::string_view t = w[2].text;
-      const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
-      if (ec != std::errc() || end != t.data() + t.size())
-        fail(w[2].column, "expected the element count (a whole number >= 0), found " + quote(t));
-      elements.push_back({std::string(w[1].text), n, lines, {}});
+      read_element(w, line);
     } else if (key == "property") {
-      if (elements.empty()) fail(w[0].column, "a 'property' line before any 'element' line");
-      const bool list = w.size() > 1 && w[1].text == "list";
-      words(list ? 5 : 3, list ? "property list <count type> <item type> <name>" : "property <type> <name>");
-      Property p;
-      if (list) {
-        p.count = &type_at(w[2]);
-        if (p.count->floating) fail(w[2].column, "expected an integer type for the list's length, found " + quote(w[2].text));
-      }
-      const Word& n = w[list ? 4 : 2];
-      p.type = &type_at(w[list ? 3 : 1]);
-      p.name = n.text;
-      for (const Property& q : elements.back().properties)
-        if (q.name == p.name) fail(n.column, "property " + quote(n.text) + " is declared twice in this element");
-      elements.back().properties.push_back(std::move(p));
+      read_property(w, line);
     } else {
       warnings.push_back(name_ + ":" + std::to_string(lines) + ": " + quote(key) +
                          " is not a PLY header keyword (comment, obj_info, element, property, end_header); the line "

@@ -48,32 +48,40 @@ std::vector<KeyEntry> poinsot_key() {
           key_entry(Meaning::plane, "invariable plane")};
 }
 
-void build_poinsot(View& view, const PoinsotInput& in) {
-  const PoinsotGeometry p = poinsot_geometry(in.q, in.inertia, in.L);
-  const double scale = 1.0 / std::max(p.semi_axes.maxCoeff(), 1e-300);
-  // Camera: the plane below the ellipsoid (up = -L̂), seen from in.camera
-  // (by default 40° above it, so the herpolhode opens up instead of lying edge-on).
-  Eigen::Vector3d u, v;
-  plane_basis(p.normal, u, v);
-  const Eigen::Vector3d up = -p.normal;
-  const Eigen::Vector3d foot = p.plane_distance * scale * p.normal;
-  const Eigen::Vector3d target = 0.3 * foot + 0.25 * up;  // the key above the ellipsoid
+namespace {
+
+// Poinsot's construction, scaled so the largest semi-axis is 1: the plane
+// spanned by (u, v) ⊥ L̂, its foot the nearest point to the centre.
+struct PoinsotFrame {
+  PoinsotGeometry p;
+  double scale;
+  Eigen::Vector3d u, v, foot;
+};
+
+// The camera: the plane below the ellipsoid (up = -L̂), seen from in.camera
+// (by default 40° above it, so the herpolhode opens up instead of lying edge-on).
+void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSettings& c) {
+  const Eigen::Vector3d up = -f.p.normal;
+  const Eigen::Vector3d target = 0.3 * f.foot + 0.25 * up;  // the key above the ellipsoid
   view.camera = Camera{};
   view.name = "poinsot";
   view.camera.target = g(target);
-  const double az = glm::radians(in.camera.azimuth_deg), el = glm::radians(in.camera.elevation_deg);
-  view.camera.position =
-      g(target + in.camera.distance * (std::cos(el) * (std::cos(az) * u + std::sin(az) * v) + std::sin(el) * up));
+  const double az = glm::radians(c.azimuth_deg), el = glm::radians(c.elevation_deg);
+  view.camera.position = g(target + c.distance * (std::cos(el) * (std::cos(az) * f.u + std::sin(az) * f.v) + std::sin(el) * up));
   view.camera.up = g(up);
   view.camera.fov_y_deg = 38;
   view.camera.near_m = 0.3;
   view.camera.far_m = 30;
+}
+
+// The ellipsoid: a shaded translucent surface fixed to the body, with its
+// three principal sections drawn on it so its turning shows.
+void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
+  const PoinsotGeometry& p = f.p;
   const double pi = std::numbers::pi;
-  // The ellipsoid: a shaded translucent surface fixed to the body, with its
-  // three principal sections drawn on it so its turning shows.
   glm::dmat3 axes;
   for (int i = 0; i < 3; ++i) axes[i] = g(p.axes.col(i));
-  view.surfaces.push_back(ellipsoid({0, 0, 0}, axes, g(p.semi_axes * scale), color_of(Meaning::ellipsoid, 0.32f)));
+  view.surfaces.push_back(ellipsoid({0, 0, 0}, axes, g(p.semi_axes * f.scale), color_of(Meaning::ellipsoid, 0.32f)));
   view.surfaces.back().name = "ellipsoid";
   const Color ring = color_of(Meaning::ellipsoid, 0.6f);
   for (int a = 0; a < 3; ++a) {
@@ -82,35 +90,56 @@ void build_poinsot(View& view, const PoinsotInput& in) {
     for (int i = 0; i <= 96; ++i) {
       const double ph = 2 * pi * i / 96;
       section.points.push_back(g((p.axes.col(b) * p.semi_axes[b] * std::cos(ph) +
-                                  p.axes.col(c) * p.semi_axes[c] * std::sin(ph)) * scale * 1.003));
+                                  p.axes.col(c) * p.semi_axes[c] * std::sin(ph)) * f.scale * 1.003));
     }
     view.polylines.push_back(std::move(section));
   }
   for (int i = 0; i < 3; ++i)
-    view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * scale * 1.15), 0.012, kAxisColors[i]});
-  // The invariable plane: opaque, centred on the foot of L, with a faint grid
-  // a hair above it (towards the ellipsoid) so nothing fights its depth.
+    view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * f.scale * 1.15), 0.012, kAxisColors[i]});
+}
+
+// The invariable plane: opaque, centred on the foot of L, with a faint grid
+// a hair above it (towards the ellipsoid) so nothing fights its depth.
+void add_invariable_plane(View& view, const PoinsotFrame& f) {
   const double half = 1.6, lift = 0.5 * kHerpolhodeLift;
-  view.surfaces.push_back(rectangle(g(foot), g(u * half), g(v * half), kPlaneColor));
+  view.surfaces.push_back(rectangle(g(f.foot), g(f.u * half), g(f.v * half), kPlaneColor));
   const Color grid = color_of(Meaning::plane, 0.45f);
-  const Eigen::Vector3d on = foot - lift * p.normal;
+  const Eigen::Vector3d on = f.foot - lift * f.p.normal;
   for (int i = -4; i <= 4; ++i) {
     const double s = half * i / 4;
-    view.polylines.push_back({{g(on + s * u - half * v), g(on + s * u + half * v)}, grid, 1.0f, false});
-    view.polylines.push_back({{g(on - half * u + s * v), g(on + half * u + s * v)}, grid, 1.0f, false});
+    view.polylines.push_back({{g(on + s * f.u - half * f.v), g(on + s * f.u + half * f.v)}, grid, 1.0f, false});
+    view.polylines.push_back({{g(on - half * f.u + s * f.v), g(on + half * f.u + s * f.v)}, grid, 1.0f, false});
   }
-  // L, ω to the contact point, polhode (body-fixed, carried by R) and herpolhode (on the plane).
+}
+
+// L, ω to the contact point, polhode (body-fixed, carried by R) and herpolhode (on the plane).
+void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
+  const PoinsotGeometry& p = f.p;
   // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
-  const Eigen::Vector3d L_tip = foot - 3 * kHerpolhodeLift * p.normal;
+  const Eigen::Vector3d L_tip = f.foot - 3 * kHerpolhodeLift * p.normal;
   view.arrows.push_back({{0, 0, 0}, g(L_tip), 0.015, kLColor, "L"});
-  view.arrows.push_back({{0, 0, 0}, g(p.contact * scale), 0.015, kOmegaColor, "omega"});
+  view.arrows.push_back({{0, 0, 0}, g(p.contact * f.scale), 0.015, kOmegaColor, "omega"});
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f, false, "polhode"};
   PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f, false, "herpolhode"};
-  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * scale * 1.006));
-  for (const Eigen::Vector3d& w : in.omega_world_history) herpolhode.points.push_back(g(w * scale - kHerpolhodeLift * p.normal));
-  view.points.push_back({g(p.contact * scale), 0.035, color_of(Meaning::omega), "contact_point"});
+  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * f.scale * 1.006));
+  for (const Eigen::Vector3d& w : in.omega_world_history)
+    herpolhode.points.push_back(g(w * f.scale - kHerpolhodeLift * p.normal));
+  view.points.push_back({g(p.contact * f.scale), 0.035, color_of(Meaning::omega), "contact_point"});
   if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
+}
+
+}  // namespace
+
+void build_poinsot(View& view, const PoinsotInput& in) {
+  PoinsotFrame f{poinsot_geometry(in.q, in.inertia, in.L), 0, {}, {}, {}};
+  f.scale = 1.0 / std::max(f.p.semi_axes.maxCoeff(), 1e-300);
+  plane_basis(f.p.normal, f.u, f.v);
+  f.foot = f.p.plane_distance * f.scale * f.p.normal;
+  aim_poinsot_camera(view, f, in.camera);
+  add_inertia_ellipsoid(view, f);
+  add_invariable_plane(view, f);
+  add_motion(view, f, in);
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
   // Bottom-right, over the plane's near edge: the ellipsoid stands in the middle.
   if (!in.key) return;

@@ -61,23 +61,10 @@ glm::vec2 ChartMap::pixel(const glm::dvec3& p) const {
   return {static_cast<float>((p.x / aspect_ * 0.5 + 0.5) * w_), static_cast<float>((0.5 - p.y * 0.5) * h_)};
 }
 
-void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px) {
-  const Head head = head_layout(in, width_px, font_px);
-  const float f = font_px, w = static_cast<float>(width_px);
-  const ChartMap m(in, width_px, height_px, font_px);
-  view.name = "plot";
-  view.camera = Camera{};
-  view.camera.position = {0, 0, 5};
-  view.camera.target = {0, 0, 0};
-  view.camera.up = {0, 1, 0};
-  view.camera.ortho_half_height = 1;
-  view.camera.near_m = 1;
-  view.camera.far_m = 10;
-  const Color ink = color_of(Meaning::ink), faint{0.55f, 0.57f, 0.62f, 0.6f};
-  auto line = [&](std::vector<glm::dvec3> pts, Color c, float lw, const char* name) {
-    view.polylines.push_back({std::move(pts), c, lw, false, name});
-  };
-  // Slowed stretches: pale bands behind the curves (z < 0, the camera looks down -z).
+namespace {
+
+// Slowed stretches: pale bands behind the curves (z < 0, the camera looks down -z), each labelled.
+void add_slow_bands(View& view, const StripChartInput& in, const ChartMap& m, float font_px) {
   for (const StripChartInput::Band& band : in.shaded) {
     const double t0 = std::clamp(band.start, in.t0, in.t1), t1 = std::clamp(band.end, in.t0, in.t1);
     if (t1 <= t0) continue;
@@ -87,7 +74,14 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
     const glm::vec2 at = m.pixel(m.at(t0, in.lo));
     view.texts.push_back({band.label, {at.x + 0.2f * font_px, at.y + 0.3f * font_px}, font_px, {0.2f, 0.3f, 0.6f, 1.0f}});
   }
-  // Frame, zero line, playhead.
+}
+
+// Frame, zero line, the series' curves, playhead.
+void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
+  const Color ink = color_of(Meaning::ink), faint{0.55f, 0.57f, 0.62f, 0.6f};
+  auto line = [&](std::vector<glm::dvec3> pts, Color c, float lw, const char* name) {
+    view.polylines.push_back({std::move(pts), c, lw, false, name});
+  };
   line({m.at(in.t0, in.lo), m.at(in.t1, in.lo), m.at(in.t1, in.hi), m.at(in.t0, in.hi), m.at(in.t0, in.lo)}, ink, 1.0f, "");
   if (in.lo < 0 && in.hi > 0) line({m.at(in.t0, 0), m.at(in.t1, 0)}, faint, 1.0f, "");
   for (const Series& s : in.series) {
@@ -97,7 +91,11 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
     if (pts.size() >= 2) line(std::move(pts), s.color, 2.0f, "series");
   }
   line({m.at(in.playhead, in.lo), m.at(in.playhead, in.hi)}, {0.2f, 0.2f, 0.25f, 0.8f}, 1.5f, "playhead");
-  // Ticks: value range on the left, time range below.
+}
+
+// Ticks (value range on the left, time range below), the title, the series' key.
+void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, const Head& head, float w, float f) {
+  const Color ink = color_of(Meaning::ink);
   auto text = [&](const std::string& s, glm::vec2 p, Color c) {
     view.texts.push_back({s, p, f, c, "tick"});
   };
@@ -122,6 +120,24 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
     view.texts.push_back(std::move(k));
     x += text_width(s.name, head.key_px) + 1.2f * head.key_px;
   }
+}
+
+}  // namespace
+
+void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px) {
+  const Head head = head_layout(in, width_px, font_px);
+  const ChartMap m(in, width_px, height_px, font_px);
+  view.name = "plot";
+  view.camera = Camera{};
+  view.camera.position = {0, 0, 5};
+  view.camera.target = {0, 0, 0};
+  view.camera.up = {0, 1, 0};
+  view.camera.ortho_half_height = 1;
+  view.camera.near_m = 1;
+  view.camera.far_m = 10;
+  add_slow_bands(view, in, m, font_px);
+  add_chart_lines(view, in, m);
+  add_chart_text(view, in, m, head, static_cast<float>(width_px), font_px);
 }
 
 }  // namespace tumble::viz
