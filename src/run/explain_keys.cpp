@@ -83,7 +83,7 @@ void ExplainViews::place_keys() {
       continue;
     }
     std::vector<viz::Box> content, texts;
-    for (long k = 0; k < count; ++k) viz::keep_clear(view_at(i, k, false), w, h, content, texts);
+    for (long k = 0; k < count; ++k) viz::keep_clear(view_at(i, k, true), w, h, content, texts);
     for (const viz::Box& b : overlay) texts.push_back(moved(b, -ox, -oy));
     // A sphere or Poinsot's construction moves aside for its key; bodies in space do not.
     const bool sphere = vc.kind == scene::ViewKind::momentum_sphere || vc.kind == scene::ViewKind::poinsot;

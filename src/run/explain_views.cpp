@@ -180,7 +180,7 @@ void take_slot(Input& in, const Slot& slot, const std::string& title, bool key, 
 
 }  // namespace
 
-viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool key) const {
+viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool layout) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const Run& run = runs_[0];
@@ -191,7 +191,8 @@ viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool key) const {
   for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][slot.body]));
   in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
   if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
-  take_slot(in, slot, vc.title, key, height_);
+  take_slot(in, slot, vc.title, !layout, height_);
+  in.outline_only = layout;
   viz::View v;
   viz::build_momentum_sphere(v, in);
   return v;
@@ -243,20 +244,20 @@ viz::View ExplainViews::poinsot_view(std::size_t i, long kk, bool key) const {
   return v;
 }
 
-viz::View ExplainViews::view_at(std::size_t i, long k, bool key) const {
+viz::View ExplainViews::view_at(std::size_t i, long k, bool layout) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
   const long kk = std::min(k, static_cast<long>(runs_[0].frames.size()) - 1);
   viz::View v;
   switch (vc.kind) {
     case scene::ViewKind::world:
-    case scene::ViewKind::body_frame: v = bodies_view(i, k, key); break;
+    case scene::ViewKind::body_frame: v = bodies_view(i, k, !layout); break;
     case scene::ViewKind::momentum_sphere:
-      if (kk >= 0) v = sphere_view(i, kk, key);
+      if (kk >= 0) v = sphere_view(i, kk, layout);
       break;
     case scene::ViewKind::plot: v = plot_view(i, k); break;
     case scene::ViewKind::poinsot:
-      if (kk >= 0) v = poinsot_view(i, kk, key);
+      if (kk >= 0) v = poinsot_view(i, kk, !layout);
       break;
   }
   viz::settle_labels(v, static_cast<float>(slot.width_px), static_cast<float>(slot.height_px));

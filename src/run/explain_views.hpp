@@ -31,9 +31,11 @@ class ExplainViews {
     std::vector<viz::SpherePose> track;   // momentum_sphere: the camera at each path sample
     std::optional<viz::KeySpot> key;      // its own key's place (none: merged into the frame key, or off)
   };
-  viz::View view_at(std::size_t i, long k, bool key = true) const;
+  /// View i at frame k; `layout`: for placing the keys (every frame's, before
+  /// the first is drawn), so without them and with only what viz::keep_clear reads.
+  viz::View view_at(std::size_t i, long k, bool layout = false) const;
   viz::View bodies_view(std::size_t i, long k, bool key) const;  // world, body_frame
-  viz::View sphere_view(std::size_t i, long kk, bool key) const;   // momentum_sphere at frame kk (< frames)
+  viz::View sphere_view(std::size_t i, long kk, bool layout) const;  // momentum_sphere at frame kk (< frames)
   viz::View plot_view(std::size_t i, long k) const;
   viz::View poinsot_view(std::size_t i, long kk, bool key) const;  // at frame kk (< frames)
   std::vector<viz::KeyEntry> key_entries(std::size_t i) const;

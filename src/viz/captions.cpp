@@ -23,17 +23,26 @@ float fade_alpha(double tau, double start, double end, double fade) {
   return static_cast<float>(std::clamp(std::min(tau - start, end - tau) / f, 0.0, 1.0));
 }
 
-bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out) {
+ViewportProjection::ViewportProjection(const Camera& cam, double width_px, double height_px)
+    : width_px_(width_px), height_px_(height_px) {
   const double aspect = width_px / std::max(height_px, 1.0);
   const glm::dmat4 view = glm::lookAt(cam.position, cam.target, view_up(cam));
   const double hh = cam.ortho_half_height;
   const glm::dmat4 proj = hh > 0 ? glm::ortho(-hh * aspect, hh * aspect, -hh, hh, cam.near_m, cam.far_m)
                                  : glm::perspective(glm::radians(cam.fov_y_deg), aspect, cam.near_m, cam.far_m);
-  const glm::dvec4 clip = proj * view * glm::dvec4(p, 1.0);
+  clip_from_world_ = proj * view;
+}
+
+bool ViewportProjection::operator()(const glm::dvec3& p, glm::vec2& out) const {
+  const glm::dvec4 clip = clip_from_world_ * glm::dvec4(p, 1.0);
   if (clip.w <= 0) return false;
-  out = {static_cast<float>((clip.x / clip.w * 0.5 + 0.5) * width_px),
-         static_cast<float>((0.5 - clip.y / clip.w * 0.5) * height_px)};
+  out = {static_cast<float>((clip.x / clip.w * 0.5 + 0.5) * width_px_),
+         static_cast<float>((0.5 - clip.y / clip.w * 0.5) * height_px_)};
   return true;
+}
+
+bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out) {
+  return ViewportProjection(cam, width_px, height_px)(p, out);
 }
 
 float approx_text_width(const std::string& text, float size_px) { return text_width(text, size_px); }

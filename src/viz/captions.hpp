@@ -27,6 +27,17 @@ float fade_alpha(double tau, double start, double end, double fade = 0.4);
 /// width × height viewport, as the renderer projects it; false when behind the camera.
 bool project_to_viewport(const Camera& cam, double width_px, double height_px, const glm::dvec3& p, glm::vec2& out);
 
+/// project_to_viewport for many points seen by one camera: its matrices made once.
+class ViewportProjection {
+ public:
+  ViewportProjection(const Camera& cam, double width_px, double height_px);
+  bool operator()(const glm::dvec3& p, glm::vec2& out) const;
+
+ private:
+  glm::dmat4 clip_from_world_;
+  double width_px_, height_px_;
+};
+
 /// A caption centred near the bottom of a frame_w × frame_h frame, on a
 /// backdrop: one item per line ('\n' breaks and wrapping at 90 % of the width,
 /// or narrower to keep `side_px` free at each side, e.g. for the speed badge).

@@ -97,11 +97,12 @@ Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float wi
 }
 
 void keep_clear(const View& view, float w, float h, std::vector<Box>& out, std::vector<Box>& texts) {
+  const ViewportProjection project(view.camera, w, h);
   auto add_points = [&](const std::vector<glm::dvec3>& pts) {
     Box b{1e30f, 1e30f, -1e30f, -1e30f};
     for (const glm::dvec3& p : pts) {
       glm::vec2 px;
-      if (!project_to_viewport(view.camera, w, h, p, px)) continue;
+      if (!project(p, px)) continue;
       b = {std::min(b.x0, px.x), std::min(b.y0, px.y), std::max(b.x1, px.x), std::max(b.y1, px.y)};
     }
     // What the view shows of it: clipped to the view (a body beside the camera projects far out).

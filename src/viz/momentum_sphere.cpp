@@ -135,7 +135,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   add_axes(view, in);
   if (L <= 0) return;
   // Only while it fits inside the axes' reach: near e₁ its e₃ semi-axis is √(I₃/I₁) |L| and would fill the view.
-  if (in.energy_ellipsoid && in.two_E > 0 && std::sqrt(in.two_E * I[2]) / L <= kEnergyEllipsoidReach)
+  if (in.energy_ellipsoid && !in.outline_only && in.two_E > 0 && std::sqrt(in.two_E * I[2]) / L <= kEnergyEllipsoidReach)
     view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
@@ -147,14 +147,14 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // A family of levels spaced evenly in 2E between L²/I3 and L²/I1.
   const double lo = L * L / I[2], hi = L * L / I[0];
   constexpr int kLevels = 10;
-  for (int j = 1; j < kLevels; ++j) {
+  for (int j = 1; j < kLevels && !in.outline_only; ++j) {
     const double two_E = lo + (hi - lo) * j / kLevels;
     if (std::abs(two_E - L * L / I[1]) > 1e-3 * (hi - lo))
       add(polhodes(I, L, two_E, 96), color_of(Meaning::other_levels, 0.5f), 1.0f, "");
   }
   // The body's own polhode under the separatrix, which stays visible on top of it.
   add(polhodes(I, L, in.two_E, 192), color_of(Meaning::polhode, 0.9f), 2.0f, "polhode");
-  add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
+  if (!in.outline_only) add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
   PolylineItem path{{}, color_of(Meaning::momentum_point), 2.5f, true, "momentum_path"};
   for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
   if (path.points.size() >= 2) view.polylines.push_back(std::move(path));

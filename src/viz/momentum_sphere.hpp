@@ -36,6 +36,9 @@ struct MomentumSphereInput {
   SphereCameraSettings camera = {};
   bool key = true;                          ///< the key of colours and meanings
   bool energy_ellipsoid = true;             ///< the translucent energy ellipsoid (it meets the sphere on the polhode), when it fits
+  /// Only what placing a key reads (viz::keep_clear): no level curves,
+  /// separatrix or energy ellipsoid, which it passes over.
+  bool outline_only = false;
   std::optional<KeySpot> key_spot = {};     ///< where (run::ExplainViews decides once per video); unset: bottom-left
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)

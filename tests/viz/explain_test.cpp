@@ -8,6 +8,7 @@
 #include "core/mass_properties.hpp"
 #include "core/propagator.hpp"
 #include "viz/captions.hpp"
+#include "viz/key.hpp"
 #include "viz/momentum_sphere.hpp"
 #include "viz/poinsot.hpp"
 #include "viz/scene_view.hpp"
@@ -141,6 +142,35 @@ TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
     const Eigen::Vector3d pi = L * Eigen::Vector3d(d.x, d.y, d.z);
     EXPECT_NEAR(pi.norm() / L, 1.0, 1e-9);
     EXPECT_NEAR(pi.cwiseAbs2().cwiseQuotient(I).sum() / two_E, 1.0, 1e-9);
+  }
+}
+
+// The outline a key's placement builds for every frame leaves out only what
+// keep_clear passes over: the boxes a key must stay clear of are the full view's.
+TEST(MomentumSphere, OutlineKeepsEverythingAKeyMustClear) {
+  const Tumbler b;
+  const std::vector<BodyState> states = b.run(60, 0.05);
+  const double two_E = 2 * kinetic_energy(b.model, b.s0);
+  for (std::size_t k = 1; k < states.size(); k += 7) {
+    MomentumSphereInput in{b.model.inertia, momentum_body(states[k]), {}, two_E, "body frame"};
+    for (std::size_t j = 0; j <= k; ++j) in.history.push_back(momentum_body(states[j]));
+    in.key = false;
+    View full, outline;
+    build_momentum_sphere(full, in);
+    in.outline_only = true;
+    build_momentum_sphere(outline, in);
+    EXPECT_LT(outline.polylines.size(), full.polylines.size());
+    std::vector<Box> full_content, full_texts, outline_content, outline_texts;
+    keep_clear(full, 640, 360, full_content, full_texts);
+    keep_clear(outline, 640, 360, outline_content, outline_texts);
+    ASSERT_EQ(outline_content.size(), full_content.size()) << "frame " << k;
+    ASSERT_EQ(outline_texts.size(), full_texts.size()) << "frame " << k;
+    for (std::size_t i = 0; i < full_content.size(); ++i) {
+      EXPECT_EQ(outline_content[i].x0, full_content[i].x0);
+      EXPECT_EQ(outline_content[i].y0, full_content[i].y0);
+      EXPECT_EQ(outline_content[i].x1, full_content[i].x1);
+      EXPECT_EQ(outline_content[i].y1, full_content[i].y1);
+    }
   }
 }
 
