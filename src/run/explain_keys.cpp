@@ -49,6 +49,24 @@ std::string px_text(float px) {
   return s;
 }
 
+struct Room {
+  float w, h, top, margin;  // the view, px; its title's bottom; the key's margin
+};
+
+// Where a view's key goes (nullopt: nowhere): a sphere or Poinsot's
+// construction moves aside for it; bodies in space only where no corner is
+// clear without (the key belongs beside the bodies it explains: the camera pans).
+std::optional<viz::KeySpot> view_key_spot(scene::ViewKind kind, glm::vec2 ks, Room r, const std::vector<viz::Box>& texts,
+                                          const std::vector<viz::Box>& content) {
+  if (kind == scene::ViewKind::momentum_sphere || kind == scene::ViewKind::poinsot)
+    return viz::find_key_spot(ks, r.w, r.h, r.top, r.margin, texts, content,
+                              kind == scene::ViewKind::poinsot ? r.w : viz::sphere_shift_room(r.w, r.h));
+  std::vector<viz::Box> fixed = texts;
+  fixed.insert(fixed.end(), content.begin(), content.end());
+  if (const auto still = viz::find_key_spot(ks, r.w, r.h, r.top, r.margin, fixed, {}, 0.0f)) return still;
+  return viz::find_key_spot(ks, r.w, r.h, r.top, r.margin, texts, content, r.w);
+}
+
 }  // namespace
 
 std::vector<viz::Box> ExplainViews::overlay_boxes() const {
@@ -108,21 +126,11 @@ void ExplainViews::place_keys() {
     std::vector<viz::Box> content, texts;
     for (long k = 0; k < count; ++k) viz::keep_clear(view_at(i, k, false), w, h, content, texts);
     for (const viz::Box& b : overlay) texts.push_back(moved(b, -ox, -oy));
-    // A sphere or Poinsot's construction moves aside for its key; bodies in space only if they must.
-    const bool sphere = vc.kind == scene::ViewKind::momentum_sphere || vc.kind == scene::ViewKind::poinsot;
-    if (!sphere) texts.insert(texts.end(), content.begin(), content.end());
     viz::View head;
     const float top = viz::add_view_title(head, vc.title, w, height_);
     const std::vector<viz::KeyEntry> entries = key_entries(i);
     const glm::vec2 ks = viz::key_size(entries, size);
-    slot.key = viz::find_key_spot(ks, w, h, top, margin, texts, sphere ? content : std::vector<viz::Box>{},
-                                  !sphere ? 0.0f : vc.kind == scene::ViewKind::poinsot ? w : viz::sphere_shift_room(w, h));
-    if (!slot.key && !sphere) {
-      // The key belongs beside the bodies it explains: where no corner is
-      // clear, they move aside (the camera pans) rather than the key leave.
-      texts.resize(texts.size() - content.size());
-      slot.key = viz::find_key_spot(ks, w, h, top, margin, texts, content, w);
-    }
+    slot.key = view_key_spot(vc.kind, ks, {w, h, top, margin}, texts, content);
     const float shift = slot.key ? slot.key->shift_px : 0.0f;
     for (const viz::Box& b : content) taken.push_back(moved(b, ox + shift, oy));
     for (const viz::Box& b : texts) taken.push_back(moved(b, ox, oy));
