@@ -191,10 +191,11 @@ int auto_rows(const char* only) {
       std::printf("\n");
     }
   for (const bench::AutoRow& r : bench::auto_study(ps, wp, st, log))
-    std::printf("%-12s tol %.0e  %s %s %.3g  err %.3g  pilot %.1f us  run %.1f us  cheapest %s %.1f us  whole/cheapest %.2f\n",
+    std::printf("%-12s tol %.0e  %s %s %.3g  err %.3g  pilot %.1f us  run %.1f us  cheapest %s %.1f us (sweep %.1f)  "
+                "whole/cheapest %.2f\n",
                 r.problem.c_str(), r.tolerance, r.method.c_str(), r.param_name.c_str(), r.param, r.error,
-                1e6 * r.pilot_cpu_s, 1e6 * r.cpu_s, r.cheapest.c_str(), 1e6 * r.cheapest_cpu_s,
-                (r.pilot_cpu_s + r.cpu_s) / r.cheapest_cpu_s);
+                1e6 * r.pilot_cpu_s, 1e6 * r.cpu_s, r.cheapest.c_str(), 1e6 * r.cheapest_run_cpu_s,
+                1e6 * r.cheapest_cpu_s, (r.pilot_cpu_s + r.cpu_s) / r.cheapest_run_cpu_s);
   return 0;
 }
 

@@ -124,8 +124,9 @@ PYBIND11_MODULE(_tumble, m) {
           d["closed_form_if_free"] = i.closed_form_if_free;
           d["auto_candidate"] = i.auto_candidate;
           d["max_turn_per_step"] = i.max_turn_per_step;
-          d["cost_ns_free"] = i.cost_ns_free;
-          d["cost_ns_forced"] = i.cost_ns_forced;
+          d["cost_ns_free"] = i.cost.free;
+          d["cost_ns_forced"] = i.cost.forced;
+          d["cost_ns_forced_axisymmetric"] = i.cost.forced_axisymmetric;
           out.append(d);
         }
         return out;

@@ -96,7 +96,8 @@ struct AutoRow {
   std::string method, param_name;
   double param = 0, predicted_error = 0, error = 0, predicted_cpu_s = 0, cpu_s = 0, pilot_cpu_s = 0;
   std::string cheapest;       ///< "rk4 dt 0.001"; empty when no configuration met the tolerance
-  double cheapest_cpu_s = NAN;
+  double cheapest_cpu_s = NAN;      ///< its CPU in the sweep (the bare stepping loop)
+  double cheapest_run_cpu_s = NAN;  ///< its CPU run as auto's pick is (a Propagator, guard included)
 };
 /// 1e-3 … 1e-8 (--quick: 1e-3, 1e-5, 1e-8).
 std::vector<double> auto_tolerances(const Settings& st);

@@ -40,6 +40,8 @@ class AdaptiveIntegrator {
   virtual long accepted() const = 0;
   virtual long rejected() const = 0;
   virtual long evaluations() const = 0;  ///< right-hand side evaluations so far
+  virtual double time() const = 0;       ///< s, where the last accepted step ended (at or past the last t asked)
+  virtual double next_step() const = 0;  ///< s, the step the controller will try next
 };
 
 std::unique_ptr<AdaptiveIntegrator> make_rk45(const RigidBodyModel& m, const BodyState& s0, double t0,

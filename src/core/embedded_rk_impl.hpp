@@ -161,6 +161,8 @@ class Engine final : public AdaptiveIntegrator {
   long accepted() const override { return accepted_; }
   long rejected() const override { return rejected_; }
   long evaluations() const override { return sys_.evals; }
+  double time() const override { return t_; }
+  double next_step() const override { return h_; }
 
  private:
   double norm(const V& v) const { return group_error<N>(v, y_, y_, sc_, opt_); }

@@ -65,6 +65,11 @@ std::pair<double, double> half_angle(double y, double x) {
 
 }  // namespace
 
+bool closed_form_is_trigonometric(const Eigen::Vector3d& inertia) {
+  const double I1 = inertia[0], I2 = inertia[1], I3 = inertia[2];
+  return I2 - I1 <= kSymmetricTol * I3 || I3 - I2 <= kSymmetricTol * I3;
+}
+
 FreeRotationExact::FreeRotationExact(const Eigen::Vector3d& inertia, const Eigen::Quaterniond& q0,
                                      const Eigen::Vector3d& L)
     : inertia_(inertia), q0_(q0.normalized()), L_(L), l_(L.norm()) {

@@ -67,6 +67,11 @@ class FreeRotationExact {
   bool periodic_ = true;
 };
 
+/// Whether a body with these principal moments (kg·m², ascending) has a
+/// trigonometric closed form (spherical or symmetric: two moments equal),
+/// rather than the elliptic one. FreeRotationExact's own test.
+bool closed_form_is_trigonometric(const Eigen::Vector3d& inertia);
+
 /// State of a torque-free body at time t (s): c moves uniformly, L and P stay.
 BodyState exact_free_state(const RigidBodyModel& m, const BodyState& s0, double t);
 

@@ -45,6 +45,13 @@ using CoordsStepFn = void (*)(const RigidBodyModel& m, BodyCoords& x, double t, 
 /// kernel::kSplitAxes), for methods whose best order depends on the start.
 using OrderedStepFn = BodyState (*)(const RigidBodyModel& m, const BodyState& s, double t, double h, int order);
 
+/// ns per step, measured by tumble_microbench (scripts/gen_method_costs.sh).
+struct StepCost {
+  double free;                 ///< torque-free T-handle, as a run steps it
+  double forced;               ///< the forced T-handle (triaxial: exact's closed form is elliptic)
+  double forced_axisymmetric;  ///< the torqued symmetric top (exact's closed form is trigonometric)
+};
+
 /// Everything tumble knows about a method, in one row.
 struct MethodInfo {
   Method method;
@@ -68,8 +75,7 @@ struct MethodInfo {
   /// Largest h·|ω| (rad per step) the method follows: beyond it a step cannot
   /// resolve the rotation (explicit methods) or aliases it between samples.
   double max_turn_per_step;
-  double cost_ns_free;       ///< ns/step, torque-free T-handle (method_costs.inc, generated)
-  double cost_ns_forced;     ///< ns/step, the microbench's forced problem
+  StepCost cost;             ///< ns/step (method_costs.inc, generated)
 };
 
 /// The table, in enum order.

@@ -45,11 +45,12 @@ struct MethodChoice {
 /// sqrt((I1+I2+I3)/(2M)) (a shift of one radius counts as one radian).
 double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodyState& b);
 
-/// CPU time of one step (ns), measured by
-/// `tumble_microbench --benchmark_filter='BM_Step/'` (T-handle; "forced" = the
-/// bench's gravity + body-fixed force problem). Used as relative weights, so the
-/// choice does not depend on the load of the machine it runs on.
-double step_cost_ns(Method method, bool forced);
+/// CPU time of one step (ns) on a body like `m`, measured by
+/// `tumble_microbench --benchmark_filter='BM_Step/'`: the torque-free T-handle,
+/// the forced T-handle, or (forced, two equal moments) the torqued symmetric top.
+/// Used as relative weights, so the choice does not depend on the load of the
+/// machine it runs on.
+double step_cost_ns(Method method, const RigidBodyModel& m);
 
 /// `method = "auto"`'s first rule, the one place it is decided: a torque-free
 /// body needs no measurement, as the closed form (`exact`) is exact for it.

@@ -235,6 +235,10 @@ TEST_F(BenchQuick, AutoPicksMeetTheirTolerance) {
     EXPECT_GT(num(r, "cpu_s"), 0);
     EXPECT_GE(num(r, "pilot_cpu_s"), 0);
     EXPECT_FALSE(r.at("cheapest").empty()) << r.at("problem") << " " << r.at("tolerance");
+    // The ratio's denominator is the cheapest configuration run as auto's pick is.
+    EXPECT_GT(num(r, "cheapest_run_cpu_s"), 0);
+    EXPECT_NEAR(num(r, "whole_over_cheapest"), num(r, "whole_cpu_s") / num(r, "cheapest_run_cpu_s"),
+                1e-4 * num(r, "whole_over_cheapest"));
   }
   EXPECT_EQ(problems.size(), 6u);
 }

@@ -57,17 +57,27 @@ TEST(MethodChoice, TorqueFreeBodyGetsTheClosedForm) {
 
 // Under gravity alone the rotation is free and the kicks are exact, so `exact`
 // is right at any step: its runs agree to round-off, no order shows, and it
-// must still qualify (at the coarsest step) and win.
+// must still qualify (at the coarsest step) and, in a scene, win.
 TEST(MethodChoice, ExactWithKicksWinsUnderGravityAlone) {
   RigidBodyModel m = testing::body_with_moments({1, 2, 3}, 0.5, "thrown");
   m.forces.terms.push_back(UniformGravity{Eigen::Vector3d(0, 0, -9.81)});
   BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {2, 9, 1});
   s0.P = m.mass * Eigen::Vector3d(0.8, 0, 8.8);
-  const ChoiceRequest r{1.8, 1.0 / 30, 1e-9, false};
+  ChoiceRequest r{1.8, 1.0 / 30, 1e-9};
   const MethodChoice c = choose_method(m, s0, r);
   EXPECT_EQ(c.config.method, Method::exact) << c.reason;
   const double err = end_state_error(m, run_like_a_scene(m, s0, c.config, r), reference_end(m, s0, r.duration));
   EXPECT_LE(err, r.tolerance) << c.reason;
+  // Every candidate measured: exact qualifies at the ladder's coarsest step.
+  r.prune = false;
+  const MethodChoice all = choose_method(m, s0, r);
+  bool exact_usable = false;
+  for (const MethodEstimate& e : all.candidates)
+    if (e.method == Method::exact) {
+      exact_usable = e.usable;
+      EXPECT_EQ(e.config.dt, r.duration / 64) << e.note;
+    }
+  EXPECT_TRUE(exact_usable);
 }
 
 TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
@@ -108,6 +118,42 @@ TEST(MethodChoice, EveryUsableCandidateMeetsTheTolerance) {
     EXPECT_LE(c.error, tol);
     EXPECT_NE(c.reason.find(std::string(method_name(c.config.method))), std::string::npos) << c.reason;
   }
+}
+
+// A symmetric top under a world torque and angular damping (the bench's torqued
+// top): its closed form is trigonometric, so `exact` with kicks steps cheaply,
+// and at a loose tolerance it beats the pair; its error model is measured on a
+// window and extrapolated, so the pick is checked against the reference here.
+TEST(MethodChoice, TorquedSymmetricTopTakesExactWithKicksWhenLoose) {
+  RigidBodyModel m = testing::body_with_moments({2, 2, 4}, 1.0, "torqued_top");
+  m.forces.terms.push_back(ConstantTorque{Eigen::Vector3d(0.5, 0, 0), Frame::world});
+  m.forces.terms.push_back(AngularDamping{0.02});
+  const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond::Identity(), {3, 1, 5});
+  const ChoiceRequest r{10, 0, 1e-3};
+  const BodyState ref = reference_end(m, s0, r.duration);
+  const MethodChoice loose = choose_method(m, s0, r);
+  EXPECT_EQ(loose.config.method, Method::exact) << loose.reason;
+  ASSERT_EQ(loose.candidates.size(), 2u);
+  EXPECT_GT(loose.candidates[0].cost_s, loose.cost_s);  // the pair was priced, and costs more
+  const double err = end_state_error(m, Propagator(m, s0, loose.config).advance_to(r.duration), ref);
+  EXPECT_LE(err, r.tolerance) << loose.reason;
+  EXPECT_GT(err, r.tolerance / 30) << loose.reason;  // the bound is the right size, not wasteful
+  // Tight: order 2 loses to the pair, and the probe says why.
+  const MethodChoice tight = choose_method(m, s0, {10, 0, 1e-8});
+  EXPECT_EQ(tight.config.method, Method::dop853) << tight.reason;
+  ASSERT_EQ(tight.candidates.size(), 2u);
+  EXPECT_FALSE(tight.candidates[1].usable);
+  EXPECT_NE(tight.candidates[1].note.find("priced above the pair"), std::string::npos) << tight.candidates[1].note;
+}
+
+// The elliptic closed form costs about a pair's step: on a triaxial body `exact`
+// with kicks is not even probed, and the pair is not priced.
+TEST(MethodChoice, TriaxialTorquedBodyGetsThePairUnpriced) {
+  const RigidBodyModel m = thruster_model();
+  const MethodChoice c = choose_method(m, thruster_state(m), {5, 1.0 / 30, 1e-3});
+  ASSERT_EQ(c.candidates.size(), 1u);
+  EXPECT_EQ(c.config.method, Method::dop853);
+  EXPECT_EQ(c.candidates[0].steps, 0);
 }
 
 TEST(MethodChoice, TighterToleranceNeverTakesFewerSteps) {
