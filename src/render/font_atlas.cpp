@@ -36,6 +36,11 @@ constexpr std::array<Range, 14> kRanges = {{{0x20, 95},
                                             {0x22C5, 1},
                                             {0x2501, 1},
                                             {0x2588, 1}}};
+// Padding between packed glyphs (bake px), so mipmap levels do not bleed; a
+// quad reaches kQuadMarginBakePx of it (at most one screen pixel).
+constexpr int kPaddingBakePx = 8;
+constexpr float kQuadMarginBakePx = 4;
+
 constexpr std::array<Range, 2> kShapes = {{{0x25A0, 1}, {0x25CF, 1}}};
 
 // Minimal UTF-8 decoder; malformed bytes come out as '?'.
@@ -67,6 +72,7 @@ FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_
   int ascent = 0, descent = 0, gap = 0;
   stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
   const float scale = stbtt_ScaleForPixelHeight(&info, bake_px);
+  texel_ = {1.0f / static_cast<float>(width_), 1.0f / static_cast<float>(height_)};
   ascent_px_ = ascent * scale;
   line_px_ = (ascent - descent + gap) * scale;
 
@@ -74,7 +80,7 @@ FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_
   // mipmap levels used when text is drawn much smaller than the bake size.
   pixels_.assign(static_cast<std::size_t>(width_) * height_, 0);
   stbtt_pack_context pack;
-  if (!stbtt_PackBegin(&pack, pixels_.data(), width_, height_, 0, 8, nullptr)) {
+  if (!stbtt_PackBegin(&pack, pixels_.data(), width_, height_, 0, kPaddingBakePx, nullptr)) {
     throw std::runtime_error("stbtt_PackBegin failed");
   }
   bool ok = true;
@@ -126,10 +132,16 @@ void FontAtlas::layout(std::string_view text, glm::vec2 top_left_px, float size_
     }
     const Glyph* g = find(c);
     if (g == nullptr) continue;
-    const glm::vec2 p0 = pen + glm::vec2(g->x0, g->y0) * s;
-    const glm::vec2 p1 = pen + glm::vec2(g->x1, g->y1) * s;
-    const TextVertex a{p0, {g->u0, g->v0}, color}, b{{p1.x, p0.y}, {g->u1, g->v0}, color},
-        d{{p0.x, p1.y}, {g->u0, g->v1}, color}, e{p1, {g->u1, g->v1}, color};
+    // The quad reaches a pixel into the glyph's padding: a stem thinner than a
+    // pixel (l, i, I at 8 px) otherwise covers no pixel centre and vanishes,
+    // while the mipmap has spread its coverage into that margin.
+    const float margin = std::min(kQuadMarginBakePx, 1.0f / s);  // bake px
+    const glm::vec2 p0 = pen + (glm::vec2(g->x0, g->y0) - margin) * s;
+    const glm::vec2 p1 = pen + (glm::vec2(g->x1, g->y1) + margin) * s;
+    const glm::vec2 uv0 = glm::vec2(g->u0, g->v0) - margin * texel_;
+    const glm::vec2 uv1 = glm::vec2(g->u1, g->v1) + margin * texel_;
+    const TextVertex a{p0, uv0, color}, b{{p1.x, p0.y}, {uv1.x, uv0.y}, color}, d{{p0.x, p1.y}, {uv0.x, uv1.y}, color},
+        e{p1, uv1, color};
     out.insert(out.end(), {a, b, e, a, e, d});
     pen.x += g->advance * s;
   }

@@ -51,6 +51,7 @@ class FontAtlas {
 
   int width_ = 1024, height_ = 2048;  // the first 1024 rows as before issue 22: the same glyph texels
   glm::vec2 solid_uv_{0};
+  glm::vec2 texel_{0};  // one atlas texel in uv
   float bake_px_;
   float ascent_px_ = 0, line_px_ = 0;  // at bake size
   std::vector<std::uint8_t> pixels_;

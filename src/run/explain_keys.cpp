@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/dynamics.hpp"
 #include "run/explain_views.hpp"
 #include "viz/momentum_sphere.hpp"
 #include "viz/poinsot.hpp"
@@ -14,7 +15,16 @@ namespace tumble::run {
 
 std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
   switch (scene_.render.explain.views[i].kind) {
-    case scene::ViewKind::momentum_sphere: return viz::sphere_key();
+    case scene::ViewKind::momentum_sphere: {  // what it draws: Π and its energy at t = 0 (conserved)
+      viz::MomentumSphereInput in;
+      const RigidBodyModel& m = scene_.bodies[slots_[i].body].model;
+      in.inertia = m.inertia;
+      if (!runs_.empty() && !runs_[0].frames.empty()) {
+        in.momentum = momentum_body(runs_[0].frames[0][slots_[i].body]);
+        in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
+      }
+      return viz::sphere_key(in);
+    }
     case scene::ViewKind::poinsot: return viz::poinsot_key();
     case scene::ViewKind::plot: return {};  // the chart has its own legend
     case scene::ViewKind::world:
@@ -39,6 +49,24 @@ std::string px_text(float px) {
   return s;
 }
 
+struct Room {
+  float w, h, top, margin;  // the view, px; its title's bottom; the key's margin
+};
+
+// Where a view's key goes (nullopt: nowhere): a sphere or Poinsot's
+// construction moves aside for it; bodies in space only where no corner is
+// clear without (the key belongs beside the bodies it explains: the camera pans).
+std::optional<viz::KeySpot> view_key_spot(scene::ViewKind kind, glm::vec2 ks, Room r, const std::vector<viz::Box>& texts,
+                                          const std::vector<viz::Box>& content) {
+  if (kind == scene::ViewKind::momentum_sphere || kind == scene::ViewKind::poinsot)
+    return viz::find_key_spot(ks, r.w, r.h, r.top, r.margin, texts, content,
+                              kind == scene::ViewKind::poinsot ? r.w : viz::sphere_shift_room(r.w, r.h));
+  std::vector<viz::Box> fixed = texts;
+  fixed.insert(fixed.end(), content.begin(), content.end());
+  if (const auto still = viz::find_key_spot(ks, r.w, r.h, r.top, r.margin, fixed, {}, 0.0f)) return still;
+  return viz::find_key_spot(ks, r.w, r.h, r.top, r.margin, texts, content, r.w);
+}
+
 }  // namespace
 
 std::vector<viz::Box> ExplainViews::overlay_boxes() const {
@@ -51,6 +79,19 @@ std::vector<viz::Box> ExplainViews::overlay_boxes() const {
       const auto same = [&](const viz::Box& o) { return o.x0 == b.x0 && o.y0 == b.y0 && o.x1 == b.x1 && o.y1 == b.y1; };
       if (std::none_of(out.begin(), out.end(), same)) out.push_back(b);
     }
+  }
+  return out;
+}
+
+std::vector<viz::Box> ExplainViews::frame_text_boxes(std::size_t i, long k) const {
+  const std::array<double, 4> f = scene_.render.explain.views[i].viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
+  const float ox = static_cast<float>(f[0] * width_), oy = static_cast<float>(f[1] * height_);
+  viz::DrawList dl;
+  add_text(dl, k);
+  std::vector<viz::Box> out;
+  for (const viz::TextItem& t : dl.texts) {
+    out.push_back(moved(viz::text_box(t), -ox, -oy));
+    if (t.backdrop.a > 0) out.push_back(moved({t.backdrop_px.x, t.backdrop_px.y, t.backdrop_px.z, t.backdrop_px.w}, -ox, -oy));
   }
   return out;
 }
@@ -85,15 +126,11 @@ void ExplainViews::place_keys() {
     std::vector<viz::Box> content, texts;
     for (long k = 0; k < count; ++k) viz::keep_clear(view_at(i, k, true), w, h, content, texts);
     for (const viz::Box& b : overlay) texts.push_back(moved(b, -ox, -oy));
-    // A sphere or Poinsot's construction moves aside for its key; bodies in space do not.
-    const bool sphere = vc.kind == scene::ViewKind::momentum_sphere || vc.kind == scene::ViewKind::poinsot;
-    if (!sphere) texts.insert(texts.end(), content.begin(), content.end());
     viz::View head;
     const float top = viz::add_view_title(head, vc.title, w, height_);
     const std::vector<viz::KeyEntry> entries = key_entries(i);
     const glm::vec2 ks = viz::key_size(entries, size);
-    slot.key = viz::find_key_spot(ks, w, h, top, margin, texts, sphere ? content : std::vector<viz::Box>{},
-                                  !sphere ? 0.0f : vc.kind == scene::ViewKind::poinsot ? w : viz::sphere_shift_room(w, h));
+    slot.key = view_key_spot(vc.kind, ks, {w, h, top, margin}, texts, content);
     const float shift = slot.key ? slot.key->shift_px : 0.0f;
     for (const viz::Box& b : content) taken.push_back(moved(b, ox + shift, oy));
     for (const viz::Box& b : texts) taken.push_back(moved(b, ox, oy));

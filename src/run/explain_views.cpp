@@ -154,6 +154,12 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
     cam.position = cam.target + to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
     cam.up = to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
   }
+  if (key && slot.key && slot.key->shift_px != 0) {  // the bodies move aside for their key
+    viz::View panned;
+    panned.camera = cam;
+    viz::shift_content(panned, slot.key->shift_px, static_cast<float>(slot.height_px));
+    cam = panned.camera;
+  }
   viz::View head;
   const float w = static_cast<float>(slot.width_px);
   const float top = viz::add_view_title(head, vc.title, w, height_);
@@ -260,7 +266,7 @@ viz::View ExplainViews::view_at(std::size_t i, long k, bool layout) const {
       if (kk >= 0) v = poinsot_view(i, kk, !layout);
       break;
   }
-  viz::settle_labels(v, static_cast<float>(slot.width_px), static_cast<float>(slot.height_px));
+  viz::settle_labels(v, static_cast<float>(slot.width_px), static_cast<float>(slot.height_px), frame_text_boxes(i, k));
   if (vc.viewport) v.viewport = glm::dvec4((*vc.viewport)[0], (*vc.viewport)[1], (*vc.viewport)[2], (*vc.viewport)[3]);
   else v.viewport = glm::dvec4(0, 0, 1, 1);
   return v;

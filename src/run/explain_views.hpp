@@ -41,6 +41,7 @@ class ExplainViews {
   std::vector<viz::KeyEntry> key_entries(std::size_t i) const;
   void place_keys();
   std::vector<viz::Box> overlay_boxes() const;  // captions and badge over the whole video, frame px
+  std::vector<viz::Box> frame_text_boxes(std::size_t i, long k) const;  // frame k's captions, badge, frame key: view i's px
   void place_frame_key(const std::vector<viz::Box>& taken);
   const FrameBuilder& fb_;
   const scene::Scene& scene_;

@@ -151,14 +151,19 @@ std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vecto
 }
 
 // Body names beside the bodies: screen text, so they always face the camera.
-void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, int width_px, int height_px, float font_px) {
+// Each names its body's box on screen (subject_px): viz::settle_labels keeps it beside, not on, the box.
+void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const viz::DrawOptions& draw, int width_px,
+                int height_px, float font_px) {
+  const float fw = static_cast<float>(width_px), fh = static_cast<float>(height_px);
   for (const viz::BodySnapshot& b : snaps) {
     const glm::dvec3 above = to_glm(b.state.c) + glm::normalize(v.camera.up) * (1.1 * viz::box_radius(*b.model));
     glm::vec2 px;
-    if (!viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;
+    const auto box = viz::screen_box(v.camera, fw, fh, viz::box_corners(viz::body_box(b, draw)));
+    if (!box || !viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;  // none for what is out of view
     const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
     v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
                        "label:" + b.model->name});
+    v.texts.back().subject_px = {box->x0, box->y0, box->x1, box->y1};
   }
 }
 
@@ -294,7 +299,7 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
       v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
     }
     const std::size_t labels_begin = v.texts.size();
-    if (scene_.render.explain.labels) add_labels(v, snaps, width_px, height_px, font_px_);
+    if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);
     const std::size_t labels_end = v.texts.size();
     if (scene_.render.draw.overlay) {
       const std::string line = overlay_line(scene_.render.draw.overlay_items, run, runs_.size(), snaps, t);

@@ -124,6 +124,9 @@ struct TextItem {
   Color backdrop{0, 0, 0, 0};
   glm::vec4 backdrop_px{0};
   bool key = false;         ///< part of a key (the layout report's kind "key")
+  /// What a label names (a body's box on screen), x0, y0, x1, y1 in the
+  /// viewport's pixels; x1 <= x0: none. viz::settle_labels keeps the label beside it.
+  glm::vec4 subject_px{0};
 };
 
 /// Perspective camera (GLM lookAt/perspective conventions).

@@ -97,17 +97,8 @@ Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float wi
 }
 
 void keep_clear(const View& view, float w, float h, std::vector<Box>& out, std::vector<Box>& texts) {
-  const ViewportProjection project(view.camera, w, h);
   auto add_points = [&](const std::vector<glm::dvec3>& pts) {
-    Box b{1e30f, 1e30f, -1e30f, -1e30f};
-    for (const glm::dvec3& p : pts) {
-      glm::vec2 px;
-      if (!project(p, px)) continue;
-      b = {std::min(b.x0, px.x), std::min(b.y0, px.y), std::max(b.x1, px.x), std::max(b.y1, px.y)};
-    }
-    // What the view shows of it: clipped to the view (a body beside the camera projects far out).
-    b = {std::max(b.x0 - 1, 0.0f), std::max(b.y0 - 1, 0.0f), std::min(b.x1 + 1, w), std::min(b.y1 + 1, h)};
-    if (b.x0 < b.x1 && b.y0 < b.y1) out.push_back(b);
+    if (const auto b = screen_box(view.camera, w, h, pts, 1.0f)) out.push_back(*b);
   };
   for (const BoxItem& b : view.boxes) add_points(box_corners(b));
   const glm::dvec3 up = glm::normalize(view.camera.up);
@@ -127,7 +118,7 @@ void keep_clear(const View& view, float w, float h, std::vector<Box>& out, std::
   for (const PolylineItem& l : view.polylines)
     if (l.name == "polhode" || l.name == "herpolhode" || l.name == "momentum_path") add_points(l.points);
   for (const TextItem& t : view.texts)
-    if (!t.key && t.name.rfind("axis_label", 0) != 0) texts.push_back(text_box(t));
+    if (!t.key && !is_label(t)) texts.push_back(text_box(t));
 }
 
 std::optional<KeySpot> find_key_spot(glm::vec2 size, float w, float h, float top, float m, const std::vector<Box>& fixed,

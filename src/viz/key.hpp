@@ -56,7 +56,7 @@ struct KeySpot {
 /// `content`: the bodies' boxes, named points (Π, ω's contact point) and the
 /// opaque ball they sit on, named surfaces, the curves a viewer follows
 /// (polhode, herpolhode, Π's path); and to `texts`: every text but the keys
-/// and the axis labels (those settle around the key).
+/// and the labels (axis and body labels settle around the key).
 void keep_clear(const View& view, float width_px, float height_px, std::vector<Box>& content, std::vector<Box>& texts);
 
 /// The first corner of a width × height view (bottom-right, bottom-left,

@@ -91,13 +91,22 @@ void add_axes(View& view, const MomentumSphereInput& in) {
 
 }  // namespace
 
-std::vector<KeyEntry> sphere_key() {
-  return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
-          key_entry(Meaning::momentum_point, "\u03a0: L in body axes"),
-          key_entry(Meaning::polhode, "polhode (\u03a0's path)"),
-          {Swatch::block, {color_of(Meaning::polhode, 0.35f)}, "energy ellipsoid"},
-          key_entry(Meaning::separatrix, "separatrix"),
-          key_entry(Meaning::other_levels, "other energies")};
+bool draws_energy_ellipsoid(const MomentumSphereInput& in) {
+  // Only while it fits inside the axes' reach: near e₁ its e₃ semi-axis is √(I₃/I₁) |L| and would fill the view.
+  const double L = in.momentum.norm();
+  return in.energy_ellipsoid && L > 0 && in.two_E > 0 && std::sqrt(in.two_E * in.inertia[2]) / L <= kEnergyEllipsoidReach;
+}
+
+std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
+  std::vector<KeyEntry> out{
+      {Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"}};
+  if (in.momentum.norm() <= 0) return out;  // only the axes are drawn
+  out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L in body axes"));
+  out.push_back(key_entry(Meaning::polhode, "polhode (\u03a0's path)"));
+  if (draws_energy_ellipsoid(in)) out.push_back({Swatch::block, {color_of(Meaning::polhode, 0.35f)}, "energy ellipsoid"});
+  out.push_back(key_entry(Meaning::separatrix, "separatrix"));
+  out.push_back(key_entry(Meaning::other_levels, "other energies"));
+  return out;
 }
 
 SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
@@ -121,7 +130,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
   if (in.key) {
     const float size = text_px(TextRole::key, in.frame_h);
-    const std::vector<KeyEntry> entries = sphere_key();
+    const std::vector<KeyEntry> entries = sphere_key(in);
     KeySpot spot;  // by default bottom-left, the sphere moved right by half the key's width so they part
     const glm::vec2 k = key_size(entries, size);
     spot.top_left = {0.5f * size, std::max(top, in.height_px - k.y - 0.5f * size)};
@@ -134,9 +143,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
   add_axes(view, in);
   if (L <= 0) return;
-  // Only while it fits inside the axes' reach: near e₁ its e₃ semi-axis is √(I₃/I₁) |L| and would fill the view.
-  if (in.energy_ellipsoid && !in.outline_only && in.two_E > 0 && std::sqrt(in.two_E * I[2]) / L <= kEnergyEllipsoidReach)
-    view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
+  if (!in.outline_only && draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
       PolylineItem p{{}, c, w, false, name};

@@ -28,7 +28,7 @@ std::vector<std::vector<Eigen::Vector3d>> separatrix(const Eigen::Vector3d& iner
 /// What the momentum-sphere view draws for one body.
 struct MomentumSphereInput {
   Eigen::Vector3d inertia;                  ///< principal moments, ascending, kg·m²
-  Eigen::Vector3d momentum;                 ///< Π now (principal frame), kg·m²/s
+  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();  ///< Π now (principal frame), kg·m²/s
   std::vector<Eigen::Vector3d> history;     ///< past Π, oldest first
   double two_E = 0;                         ///< 2 × rotational energy, J
   std::string title;
@@ -52,8 +52,13 @@ inline constexpr double kEnergyEllipsoidReach = 1.3;
 /// Translucent, in the polhode's colour.
 SurfaceItem energy_ellipsoid(const Eigen::Vector3d& inertia, double L, double two_E);
 
-/// The momentum sphere's key entries.
-std::vector<KeyEntry> sphere_key();
+/// Whether the view of `in` draws the energy ellipsoid: asked for, and its
+/// largest semi-axis within kEnergyEllipsoidReach.
+bool draws_energy_ellipsoid(const MomentumSphereInput& in);
+
+/// The momentum sphere's key entries: what the view of `in` draws, no more
+/// (no energy ellipsoid where it is too large to draw).
+std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in);
 
 /// How far the sphere may move sideways in a width × height view and keep its margin, px.
 float sphere_shift_room(float width_px, float height_px);

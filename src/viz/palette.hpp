@@ -1,9 +1,11 @@
 // One colour per meaning, in every view and in the plot (docs/colours.md
 // holds the same table for readers; tests/viz/palette_test checks they agree).
 // Principal axes follow the moments' order: e₁ (smallest moment) red, e₂
-// green, e₃ (largest) blue; nothing else uses those hues. ω (purple) and the
-// separatrix (Okabe–Ito sky blue) differ in hue and lightness, so they stay
-// apart under the common colour-vision deficiencies (Okabe & Ito 2008).
+// green, e₃ (largest) blue; nothing else uses those hues. The polhode
+// (magenta, a darker Okabe–Ito reddish purple) and the separatrix (Okabe–Ito
+// sky blue), drawn together on the momentum sphere, differ in hue, not only
+// in lightness (Okabe & Ito 2008); docs/colours.md gives their simulated
+// colour-blind differences (scripts/colour_blind_check.py).
 #pragma once
 
 #include <array>
@@ -43,7 +45,7 @@ inline const std::array<MeaningColor, static_cast<std::size_t>(Meaning::count)> 
     {Meaning::L, "L", "orange", {0.95f, 0.60f, 0.05f, 1}},
     {Meaning::omega, "omega", "purple", {0.60f, 0.20f, 0.75f, 1}},
     {Meaning::momentum_point, "momentum_point", "near-black", {0.10f, 0.10f, 0.15f, 1}},
-    {Meaning::polhode, "polhode", "teal", {0.00f, 0.55f, 0.58f, 1}},
+    {Meaning::polhode, "polhode", "magenta", {0.75f, 0.20f, 0.55f, 1}},
     {Meaning::herpolhode, "herpolhode", "brown", {0.50f, 0.30f, 0.12f, 1}},
     {Meaning::separatrix, "separatrix", "sky blue", {0.34f, 0.71f, 0.91f, 1}},
     {Meaning::other_levels, "other_levels", "light grey", {0.55f, 0.56f, 0.60f, 1}},

@@ -64,20 +64,24 @@ std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds) con
   return out;
 }
 
+BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt) {
+  const RigidBodyModel& m = *b.model;
+  const BodyState& s = b.state;
+  Color edge = b.color * 0.45f;
+  edge.a = 1.0f;
+  // Around the particle spheres when they are drawn, so its edges and faces are not buried in them.
+  const double grow = opt.particles && b.cloud ? particle_radius(m) : 0.0;
+  return {to_glm(s.c + s.q * m.box.center), rotation_of(s.q), to_glm(m.box.half_extents) + glm::dvec3(grow), b.color,
+          edge};
+}
+
 void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawOptions& opt,
                 const TrailRecorder* trails, double t) {
   for (const BodySnapshot& b : bodies) {
     const RigidBodyModel& m = *b.model;
     const BodyState& s = b.state;
     const double size = std::max(largest_half_extent(m), 1e-3);
-    if (opt.box) {
-      Color edge = b.color * 0.45f;
-      edge.a = 1.0f;
-      // Around the particle spheres when they are drawn, so its edges and faces are not buried in them.
-      const double grow = opt.particles && b.cloud ? particle_radius(m) : 0.0;
-      view.boxes.push_back({to_glm(s.c + s.q * m.box.center), rotation_of(s.q),
-                            to_glm(m.box.half_extents) + glm::dvec3(grow), b.color, edge});
-    }
+    if (opt.box) view.boxes.push_back(body_box(b, opt));
     if (opt.axes)
       for (int i = 0; i < 3; ++i)
         view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i]});

@@ -64,6 +64,9 @@ class TrailRecorder {
   std::deque<Sample> samples_;
 };
 
+/// The box drawn for body `b` (its principal-axis box, around its particles when they are drawn).
+BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt);
+
 /// Adds the items of `bodies` to `view` (camera and label are the caller's).
 void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawOptions& opt,
                 const TrailRecorder* trails, double t);

@@ -4,7 +4,9 @@
 // the box a TextItem covers, so layout can be checked without a GL context.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 #include <string_view>
 
 #include "viz/draw_list.hpp"
@@ -56,10 +58,19 @@ namespace tumble::viz {
 /// "axis_label"): it may move to stay clear of the view's other text.
 bool is_label(const TextItem& t);
 
-/// Moves each label of `view` (width × height px) up or down by up to two
-/// lines so that it overlaps no other text, backdrop, named point (the Π
-/// dot, ± 3 % of the view's height) or earlier label and
-/// stays inside the view; a label with no such place is left out.
-void settle_labels(View& view, float width_px, float height_px);
+/// Places each label of `view` (width × height px) where it overlaps no
+/// other text, backdrop, named point (the Π dot, ± 3 % of the view's height)
+/// or earlier label, nor any of `also_clear` (e.g. the frame's captions, in
+/// the view's pixels), and stays inside the view; a label with no such place is
+/// left out. A label with a subject (TextItem::subject_px, a body's box) is
+/// tried around it (above, below, right, left, then the corners, stepping
+/// out) and also keeps clear of every body's box and arrow; others move up
+/// or down by up to two lines, then sideways.
+void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
+
+/// The box `points` cover as `camera` sees them in a width × height view,
+/// grown by `pad_px` and clipped to the view; nullopt when none of it shows.
+std::optional<Box> screen_box(const Camera& camera, float width_px, float height_px,
+                              const std::vector<glm::dvec3>& points, float pad_px = 0);
 
 }  // namespace tumble::viz

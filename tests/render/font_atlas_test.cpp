@@ -26,5 +26,24 @@ TEST(FontAtlas, LaysOutTextInPixels) {
   EXPECT_GT(size.y, 30.0f);
 }
 
+// A stem thinner than a pixel must still cover a pixel centre wherever the pen
+// falls: each quad at the 8 px key size spans at least 2 px (a pixel of margin
+// either side, sampled from the mipmapped padding), with uv stretched alike.
+TEST(FontAtlas, ThinGlyphsSpanAPixelCentreAtKeySize) {
+  const FontAtlas atlas(find_font_file(find_resource_dir()));
+  std::vector<TextVertex> quads;
+  atlas.layout("lIi|", {10.3f, 20}, 8, {0, 0, 0, 1}, quads);
+  ASSERT_EQ(quads.size(), 4u * 6u);
+  for (std::size_t q = 0; q < quads.size(); q += 6) {
+    const TextVertex &a = quads[q], &e = quads[q + 2];  // top-left, bottom-right
+    EXPECT_GE(e.position_px.x - a.position_px.x, 2.0f) << "glyph " << q / 6;
+    EXPECT_GT(e.uv.x, a.uv.x);
+    // The same texels per pixel across and down: the margin moved uv with the quad.
+    const float across = (e.uv.x - a.uv.x) * atlas.width() / (e.position_px.x - a.position_px.x);
+    const float down = (e.uv.y - a.uv.y) * atlas.height() / (e.position_px.y - a.position_px.y);
+    EXPECT_NEAR(across, down, 1e-3f * down) << "glyph " << q / 6;
+  }
+}
+
 }  // namespace
 }  // namespace tumble::render

@@ -3,7 +3,8 @@
 // [[views]]) at 640×360, 960×540 and 1920×1080: Π always visible (but under
 // the title card, which covers the animation on purpose), no two
 // visible text boxes overlap, no text under 1.8 % of the frame height, and
-// text at 1080p twice its 540p height (± 15 %), and no key over a body or Π.
+// text at 1080p twice its 540p height (± 15 %), no key over a body or Π, and
+// no body label on a body.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -179,6 +180,28 @@ void keys_cover_no_body_or_momentum_point() {
   EXPECT_GT(keys, 1000) << "keys drawn over all frames";
 }
 
+// Issue 22 follow-up: a body's name sits beside its body, not on it. No
+// visible body label overlaps a body's box (its own or another's) in its view,
+// in any frame.
+void body_labels_clear_of_bodies() {
+  int labels = 0;
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      int bad = 0;
+      for (std::size_t k = 0; k < layouts.frames.size(); ++k)
+        for (const LayoutItem& l : layouts.frames[k]) {
+          if (l.name.rfind("label:", 0) != 0 || !l.visible) continue;
+          ++labels;
+          for (const LayoutItem& b : layouts.frames[k])
+            if (b.kind == "body" && b.visible && b.view == l.view && b.box.overlaps(l.box) && bad++ < 3)
+              ADD_FAILURE() << scene << " at " << h << "p frame " << k << ": \"" << l.text << "\" (" << l.view
+                            << ") lies on a body's box";
+        }
+      EXPECT_EQ(bad, 0) << scene << " at " << h << "p";
+    }
+  EXPECT_GT(labels, 1000) << "body labels drawn over all frames";
+}
+
 // One test: ctest runs each test in its own process, and the layouts (every
 // frame of every scene at three sizes, a few seconds) are made once.
 TEST(Layout, ShippedExplanatoryScenesReadAsAViewerNeeds) {
@@ -188,6 +211,7 @@ TEST(Layout, ShippedExplanatoryScenesReadAsAViewerNeeds) {
   every_text_at_least_1_8_percent_high();
   text_at_1080p_twice_its_540p_height();
   keys_cover_no_body_or_momentum_point();
+  body_labels_clear_of_bodies();
 }
 
 }  // namespace

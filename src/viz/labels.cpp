@@ -1,0 +1,124 @@
+// Where labels go, decided GL-free from a view's draw list: a body's name
+// beside its body, clear of the view's text, the bodies, their arrows and Π.
+#include <algorithm>
+
+#include "viz/captions.hpp"
+#include "viz/text_layout.hpp"
+
+namespace tumble::viz {
+
+std::optional<Box> screen_box(const Camera& camera, float w, float h, const std::vector<glm::dvec3>& points,
+                              float pad) {
+  const ViewportProjection project(camera, w, h);
+  Box b{1e30f, 1e30f, -1e30f, -1e30f};
+  for (const glm::dvec3& p : points) {
+    glm::vec2 px;
+    if (!project(p, px)) continue;
+    b = {std::min(b.x0, px.x), std::min(b.y0, px.y), std::max(b.x1, px.x), std::max(b.y1, px.y)};
+  }
+  // What the view shows of it: clipped to the view (a body beside the camera projects far out).
+  b = {std::max(b.x0 - pad, 0.0f), std::max(b.y0 - pad, 0.0f), std::min(b.x1 + pad, w), std::min(b.y1 + pad, h)};
+  if (b.x0 < b.x1 && b.y0 < b.y1) return b;
+  return std::nullopt;
+}
+
+bool is_label(const TextItem& t) { return t.name.rfind("label", 0) == 0 || t.name.rfind("axis_label", 0) == 0; }
+
+namespace {
+
+Box grown(const Box& b, float g) { return {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g}; }
+
+bool has_subject(const TextItem& t) { return t.subject_px.z > t.subject_px.x; }
+
+// What no label covers: the other text and its backdrops, and named points
+// (the Π dot), ± 3 % of the view's height.
+std::vector<Box> text_obstacles(const View& view, float w, float h) {
+  std::vector<Box> taken;
+  for (const PointItem& p : view.points) {
+    glm::vec2 c;
+    if (p.name.empty() || !project_to_viewport(view.camera, w, h, p.position, c)) continue;
+    const float r = 0.03f * h;
+    taken.push_back({c.x - r, c.y - r, c.x + r, c.y + r});
+  }
+  for (const TextItem& t : view.texts)
+    if (!is_label(t)) {
+      taken.push_back(text_box(t));
+      if (t.backdrop.a > 0) taken.push_back({t.backdrop_px.x, t.backdrop_px.y, t.backdrop_px.z, t.backdrop_px.w});
+    }
+  return taken;
+}
+
+// What a body's label also keeps clear of: every body's box, and each arrow
+// as short pieces along it (a slanted arrow's own box would cover its sides).
+std::vector<Box> solid_obstacles(const View& view, float w, float h) {
+  std::vector<Box> out;
+  for (const BoxItem& b : view.boxes)
+    if (const auto s = screen_box(view.camera, w, h, box_corners(b))) out.push_back(*s);
+  constexpr int kPieces = 12;
+  for (const ArrowItem& a : view.arrows)
+    for (int i = 0; i < kPieces; ++i) {
+      const glm::dvec3 p0 = a.origin + a.vector * (static_cast<double>(i) / kPieces);
+      const glm::dvec3 p1 = a.origin + a.vector * (static_cast<double>(i + 1) / kPieces);
+      if (const auto s = screen_box(view.camera, w, h, {p0, p1}, 2.0f)) out.push_back(*s);
+    }
+  return out;
+}
+
+// A body's label around its subject: above, below, right, left, then the
+// corners, each a line further out in turn.
+std::vector<glm::vec2> around(const glm::vec4& s, glm::vec2 size, float gap) {
+  const float cx = 0.5f * (s.x + s.z - size.x), cy = 0.5f * (s.y + s.w - size.y);
+  std::vector<glm::vec2> out;
+  for (int ring = 0; ring < 4; ++ring) {
+    const float g = gap + static_cast<float>(ring) * size.y;
+    const float above = s.y - g - size.y, below = s.w + g, right = s.z + g, left = s.x - g - size.x;
+    out.insert(out.end(), {{cx, above}, {cx, below}, {right, cy}, {left, cy},
+                           {right, above}, {left, above}, {right, below}, {left, below}});
+  }
+  return out;
+}
+
+// Any other label near its place: up or down by up to two lines, then beside it.
+std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
+  std::vector<glm::vec2> out;
+  for (float dx : {0.0f, 0.7f, -0.7f})
+    for (float dy : {0.0f, 1.1f, -1.1f, 2.2f, -2.2f}) out.push_back(at + glm::vec2(dx * size.x, dy * line));
+  return out;
+}
+
+}  // namespace
+
+void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
+  std::vector<Box> taken = text_obstacles(view, width_px, height_px);
+  taken.insert(taken.end(), also_clear.begin(), also_clear.end());
+  const bool subjects = std::any_of(view.texts.begin(), view.texts.end(), has_subject);
+  const std::vector<Box> solid = subjects ? solid_obstacles(view, width_px, height_px) : std::vector<Box>{};
+  std::vector<TextItem> kept;
+  for (TextItem& t : view.texts) {
+    if (!is_label(t)) {
+      kept.push_back(std::move(t));
+      continue;
+    }
+    // A quarter line apart from everything, so that two labels never crowd into one.
+    const float gap = 0.25f * t.size_px;
+    const Box at = text_box(t);
+    const glm::vec2 size{at.x1 - at.x0, at.y1 - at.y0};
+    const bool subject = has_subject(t);
+    const Box own{t.subject_px.x, t.subject_px.y, t.subject_px.z, t.subject_px.w};
+    for (const glm::vec2 p : subject ? around(t.subject_px, size, gap) : nearby(t.position_px, size, t.size_px)) {
+      const Box b{p.x, p.y, p.x + size.x, p.y + size.y};
+      if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
+      const Box wide = grown(b, gap);
+      const auto hit = [&](const Box& o) { return o.overlaps(wide); };
+      if (std::any_of(taken.begin(), taken.end(), hit)) continue;
+      if (subject && (own.overlaps(wide) || std::any_of(solid.begin(), solid.end(), hit))) continue;
+      t.position_px = p;
+      taken.push_back(b);
+      kept.push_back(std::move(t));
+      break;
+    }
+  }
+  view.texts = std::move(kept);
+}
+
+}  // namespace tumble::viz
