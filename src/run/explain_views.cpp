@@ -266,7 +266,9 @@ viz::View ExplainViews::view_at(std::size_t i, long k, bool layout) const {
       if (kk >= 0) v = poinsot_view(i, kk, !layout);
       break;
   }
-  viz::settle_labels(v, static_cast<float>(slot.width_px), static_cast<float>(slot.height_px), frame_text_boxes(i, k));
+  // Labels are in no key's way (keep_clear passes over them): a layout leaves them unsettled.
+  if (!layout)
+    viz::settle_labels(v, static_cast<float>(slot.width_px), static_cast<float>(slot.height_px), frame_text_boxes(i, k));
   if (vc.viewport) v.viewport = glm::dvec4((*vc.viewport)[0], (*vc.viewport)[1], (*vc.viewport)[2], (*vc.viewport)[3]);
   else v.viewport = glm::dvec4(0, 0, 1, 1);
   return v;
