@@ -29,9 +29,13 @@ struct Dop853 {
   static constexpr int kSlots = 16, kFsal = 12, kDense = 7;
   static constexpr double kExpo = 1.0 / 8;  // 1/(q+1), q = 7 (Hairer's DOP853)
   static constexpr double kFacMin = 0.333, kFacMax = 6;
-  // Delivered end error over the local error per step (embedded_rk.hpp): ~35
-  // on the T-handle and forced, 2 on the symmetric top.
-  static constexpr double kGlobalPerLocal = 6;
+  // Delivered end error over the local error per step (embedded_rk.hpp). At 6
+  // the end error over rtol spanned 0.25 (thruster) to 11.8 (forced T-handle,
+  // rtol 1.8e-10) on the six bench problems for rtol 1e-4…1e-10 (`tumble
+  // bench`, summary.md's proportionality table); 7 brings it to [0.21, 10.1]
+  // (8 would centre it, but makes the T-handle's loosest rtols 2.07× non-monotone:
+  // bench_quick_test's bound is 2).
+  static constexpr double kGlobalPerLocal = 7;
 
   template <class Sys, class K, class V>
   static void stages(const Sys& f, double t, const V& y, double h, K& k, V& dy) {
