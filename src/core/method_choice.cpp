@@ -27,13 +27,9 @@ constexpr double kPriceWindows = 32;      // an adaptive pair is priced on 1/32 
 constexpr double kProbeWindows = 8;       // exact on a torqued body is probed on 1/8 of it
 
 // End state after `duration` with `cfg`, or nullopt when the run diverged.
-std::optional<BodyState> run(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg, double duration,
-                             long* steps = nullptr) {
+std::optional<BodyState> run(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg, double duration) {
   try {
-    Propagator p(m, s0, cfg);
-    BodyState s = p.advance_to(duration);
-    if (steps) *steps = p.steps();
-    return s;
+    return Propagator(m, s0, cfg).advance_to(duration);
   } catch (const Diverged&) {
     return std::nullopt;
   }
@@ -247,13 +243,11 @@ namespace {
 // With `prune` (scenes): `exact` when no force torques the body and its
 // ladder qualifies (the rotation is then the closed form: it agrees at
 // round-off at once); otherwise the highest-order adaptive pair, unpriced
-// and with no pilot at all. On the bench's forced scenes dop853 at
-// tolerance / 10 cost 1.2–1.9× the cheapest configuration meeting the
-// tolerance from 1e-3 to 1e-8 (scripts/adaptive_study.sh auto), where pilot
-// ladders cost 2–10 runs; the exception is the torqued top at 1e-3 (3.2×),
-// whose cheapest is `exact` with kicks at dt = 0.1 s (~20 µs): dop853 at its
-// loosest costs ~46 µs, and a ladder verifying exact's error costs more than
-// exact's run itself.
+// and with no pilot at all (pilot ladders cost 2–10 runs), except on a
+// torqued axisymmetric body, where it is priced and weighed against `exact`
+// with kicks (kicked_exact_estimate). On every bench problem auto's whole
+// cost stays within 1.8× of the cheapest configuration meeting tolerances
+// 1e-3…1e-8, timed alike (`tumble bench`, auto.csv).
 // Without `prune`, every candidate is measured (tests, `tumble info`-like uses).
 std::vector<MethodEstimate> estimate_candidates(const RigidBodyModel& m, const BodyState& s0, const ChoiceRequest& r) {
   std::vector<MethodEstimate> out;

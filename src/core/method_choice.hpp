@@ -64,8 +64,10 @@ MethodChoice auto_without_tolerance(const RigidBodyModel& m, const StepConfig& a
 /// Torque-free bodies get `exact` (auto_takes_closed_form: the closed form, error at round-off). Other
 /// bodies, with `prune` (scenes): `exact` when no force torques the body and
 /// its pilot ladder qualifies, else the highest-order adaptive pair (dop853) at
-/// rtol = tolerance / 10 with no pilot (the pairs' rtol asks for the end error;
-/// embedded_rk.hpp). Without `prune` every candidate is measured: each
+/// rtol = atol = tolerance / 10 with no pilot (the pairs' rtol asks for the end
+/// error; embedded_rk.hpp); on a torqued axisymmetric body that pair is priced
+/// and weighed against `exact` with kicks, probed on the first 1/8 of the run.
+/// Without `prune` every candidate is measured: each
 /// fixed-step method runs the whole duration at N, 2N, 4N, … steps; the
 /// differences of successive end states give its error (Richardson: e(h) ≈
 /// d/(2^p - 1) once two successive ratios match the order p), which fixes the

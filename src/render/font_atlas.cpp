@@ -123,6 +123,10 @@ const FontAtlas::Glyph* FontAtlas::find(char32_t c) const {
 void FontAtlas::layout(std::string_view text, glm::vec2 top_left_px, float size_px,
                        glm::vec4 color, std::vector<TextVertex>& out) const {
   const float s = size_px / bake_px_;
+  // Each quad reaches a pixel into its glyph's padding: a stem thinner than a
+  // pixel (l, i, I at 8 px) otherwise covers no pixel centre and vanishes,
+  // while the mipmap has spread its coverage into that margin.
+  const float margin = std::min(kQuadMarginBakePx, 1.0f / s);  // bake px
   glm::vec2 pen(top_left_px.x, top_left_px.y + ascent_px_ * s);
   for (std::size_t i = 0; i < text.size();) {
     const char32_t c = next_code_point(text, i);
@@ -132,10 +136,6 @@ void FontAtlas::layout(std::string_view text, glm::vec2 top_left_px, float size_
     }
     const Glyph* g = find(c);
     if (g == nullptr) continue;
-    // The quad reaches a pixel into the glyph's padding: a stem thinner than a
-    // pixel (l, i, I at 8 px) otherwise covers no pixel centre and vanishes,
-    // while the mipmap has spread its coverage into that margin.
-    const float margin = std::min(kQuadMarginBakePx, 1.0f / s);  // bake px
     const glm::vec2 p0 = pen + (glm::vec2(g->x0, g->y0) - margin) * s;
     const glm::vec2 p1 = pen + (glm::vec2(g->x1, g->y1) + margin) * s;
     const glm::vec2 uv0 = glm::vec2(g->u0, g->v0) - margin * texel_;
