@@ -31,12 +31,14 @@ std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
     case scene::ViewKind::body_frame: break;
   }
   std::vector<std::pair<std::string, viz::Color>> bodies;
+  const bool own = scene_.render.explain.views[i].kind == scene::ViewKind::body_frame;
   for (const scene::Body& b : scene_.bodies) {
+    if (own && &b != &scene_.bodies[slots_[i].body]) continue;  // it shows its own body only
     const Eigen::Vector3f c = 0.75f * b.color.cast<float>();
     bodies.emplace_back(b.name, viz::Color(c.x(), c.y(), c.z(), 1.0f));
   }
   const scene::DrawConfig& d = scene_.render.draw;
-  return viz::bodies_key({d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0}, bodies);
+  return viz::bodies_key(draw_options(d), bodies);
 }
 
 namespace {

@@ -163,7 +163,8 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
   viz::View head;
   const float w = static_cast<float>(slot.width_px);
   const float top = viz::add_view_title(head, vc.title, w, height_);
-  viz::View v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, top);
+  const auto only = vc.kind == scene::ViewKind::body_frame ? std::optional<std::size_t>(slot.body) : std::nullopt;
+  viz::View v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, top, only);
   v.name = vc.kind == scene::ViewKind::world ? "world" : "body_frame";
   for (viz::TextItem& t : head.texts) v.texts.push_back(std::move(t));
   if (key && slot.key) viz::add_key(v, key_entries(i), slot.key->top_left, viz::text_px(viz::TextRole::key, height_));

@@ -175,6 +175,12 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
     look.surfaces.push_back(viz::make_surface(m.surface));
     look.surface_colors.push_back(rgba(m.color, 1.0f));
   }
+  for (const scene::ShapeSource& sh : b.shapes) {
+    look.surfaces.push_back(viz::solid_surface(sh.shape));
+    look.surface_colors.push_back(rgba(sh.color, 1.0f));
+  }
+  if (!look.surfaces.empty())
+    look.surface_box = viz::principal_extent(look.surfaces, b.model.cloud_from_principal.toRotationMatrix(), b.model.com_cloud);
   if (!particles) return look;
   std::vector<viz::Color> colors;
   colors.reserve(b.cloud.size());
@@ -226,6 +232,13 @@ std::string overlay_line(const scene::OverlayItems& items, const Run& run, std::
 
 }  // namespace
 
+viz::DrawOptions draw_options(const scene::DrawConfig& d) {
+  viz::DrawOptions o;
+  o.box = d.box, o.surface = d.surface, o.axes = d.axes, o.particles = d.particles;
+  o.angular_momentum = d.L, o.omega = d.omega, o.trail_seconds = d.trails, o.grid = d.grid;
+  return o;
+}
+
 viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, double aspect) {
   const scene::CameraConfig& c = s.render.camera;
   viz::Camera camera;
@@ -249,6 +262,30 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, do
   return camera;
 }
 
+viz::GridItem ground_grid(const scene::Scene& s, const std::vector<Run>& runs) {
+  // Fixed for the whole video: below the lowest any body comes, centred
+  // under where the bodies go, wide enough for all of it (0.5 m squares, or
+  // finer for small bodies).
+  double zmin = 1e300, size = 0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  for (const Run& r : runs)
+    for (const auto& states : r.frames)
+      for (std::size_t i = 0; i < states.size() && i < s.bodies.size(); ++i) {
+        if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
+        const double rad = viz::box_radius(s.bodies[i].model);
+        zmin = std::min(zmin, states[i].c.z() - rad);
+        lo = lo.cwiseMin(states[i].c), hi = hi.cwiseMax(states[i].c);
+        size = std::max(size, rad);
+      }
+  if (zmin > 1e299) return {{0, 0, 0}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}};
+  const double spacing = std::clamp(std::pow(10.0, std::floor(std::log10(std::max(size, 1e-6)))), 1e-3, 0.5);
+  const double reach = 0.5 * (hi - lo).head<2>().norm() + 6 * size;
+  const int half = static_cast<int>(std::clamp(std::ceil(reach / spacing), 4.0, 200.0));
+  const Eigen::Vector3d mid = 0.5 * (lo + hi);
+  return {{spacing * std::round(mid.x() / spacing), spacing * std::round(mid.y() / spacing), zmin}, spacing, half,
+          {0.5f, 0.52f, 0.58f, 0.5f}};
+}
+
 FrameBuilder::~FrameBuilder() = default;
 
 FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height)
@@ -260,7 +297,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
   font_px_ = s.render.explain.views.empty() ? std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f)
                                             : viz::text_px(viz::TextRole::label, height);
   const scene::DrawConfig& d = s.render.draw;
-  draw_ = {d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0};
+  draw_ = draw_options(d);
   for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, d.particles));
   const double aspect = (static_cast<double>(width) / columns_) / (static_cast<double>(height) / rows_);
   camera_ = scene_camera(s, runs, aspect);
@@ -270,12 +307,13 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
     for (size_t r = 0; r < runs.size(); ++r)
       for (size_t j = 0; j < runs[r].path.size(); ++j)
         trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
+  grid_ = ground_grid(s, runs);
   if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.hold > 0)
     explain_ = std::make_unique<ExplainViews>(*this, s, runs, width, height);
 }
 
 viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& camera, int width_px,
-                                   int height_px, float top_px) const {
+                                   int height_px, float top_px, std::optional<std::size_t> only_body) const {
   const double t = clock_.time(k);
   const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
   const Run& run = runs_[r];
@@ -285,7 +323,8 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
   const long last = static_cast<long>(run.frames.size()) - 1;
   const long kk = std::min(k, last);
   if (kk >= 0) {
-    const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)], &looks_);
+    auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)], &looks_);
+    if (only_body && *only_body < snaps.size()) snaps = {snaps[*only_body]};
     const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
     if (follow) {
       const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
@@ -293,11 +332,7 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
       v.camera.target = c;
     }
     viz::add_bodies(v, snaps, draw_, &trails_[r], clock_.time(kk));
-    if (draw_.grid) {
-      double zmin = 1e300;
-      for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
-      v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
-    }
+    if (draw_.grid) v.grids.push_back(grid_);
     const std::size_t labels_begin = v.texts.size();
     if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);
     const std::size_t labels_end = v.texts.size();

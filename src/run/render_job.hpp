@@ -49,6 +49,9 @@ std::vector<Run> simulate_runs(const scene::Scene& s, long frame_count, double f
 
 class ExplainViews;
 
+/// What the scene's [draw] asks to draw, as viz takes it.
+viz::DrawOptions draw_options(const scene::DrawConfig& d);
+
 /// The scene's camera for a viewport of `aspect` (width/height): automatic
 /// (frames every body over all runs) or as configured.
 viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, double aspect);
@@ -62,8 +65,9 @@ class FrameBuilder {
 
   /// Run `r`'s world view at frame k (bodies, grid, overlay, labels) seen by
   /// `camera`; its text starts `top_px` below the viewport's top (room for a title).
+  /// `only_body`: draw that body alone (a body_frame view shows its own body only).
   viz::View world_view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
-                       float top_px = 0) const;
+                       float top_px = 0, std::optional<std::size_t> only_body = std::nullopt) const;
   const scene::FrameClock& clock() const { return clock_; }
   float font_px() const { return font_px_; }
 
@@ -79,7 +83,11 @@ class FrameBuilder {
   std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
   std::unique_ptr<ExplainViews> explain_;   // [[views]], captions, title (null without them)
   std::vector<viz::BodyLook> looks_;        // per body: surfaces, visible particles
+  viz::GridItem grid_{};                    // the ground, fixed for the whole video
 };
+
+/// The ground grid ([draw] grid): a fixed plane under the lowest point any body reaches in `runs`.
+viz::GridItem ground_grid(const scene::Scene& s, const std::vector<Run>& runs);
 
 /// Parses "A:B" (inclusive, either end may be empty) against `count` frames.
 std::pair<long, long> parse_frame_range(const std::string& spec, long count);

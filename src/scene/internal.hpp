@@ -19,6 +19,7 @@ struct LoadContext {
   std::size_t particles = 0;       ///< running total, capped at kMaxParticles
   std::vector<std::string> body_names;  ///< every name seen, for the uniqueness check
   std::vector<MeshSource>* meshes = nullptr;  ///< where mesh shapes of the current source go
+  std::vector<ShapeSource>* shapes = nullptr;  ///< where generated shapes of the current source go
 };
 
 /// Reserves `n` particles of the scene budget; false (with an error under `key`) past the cap.

@@ -21,6 +21,7 @@
 #include "core/propagator.hpp"
 #include "scene/explain.hpp"
 #include "scene/frame_settings.hpp"
+#include "core/solid_shape.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace tumble::scene {
@@ -85,7 +86,9 @@ struct OverlayItems {
 };
 
 struct DrawConfig {
-  bool box = true, axes = true, particles = false, L = false, omega = false;
+  std::optional<bool> box;               ///< unset: only for bodies without a surface
+  bool surface = true;                   ///< generated shapes and meshes as lit surfaces
+  bool axes = true, particles = false, L = false, omega = false;
   double trails = 0;                     ///< s of axis-tip history; 0 = off
   bool grid = false, overlay = true, legend = true;
   OverlayItems overlay_items;            ///< which parts of the overlay line (overlay = true)
@@ -125,6 +128,13 @@ struct MeshSource {
   double inertia_error() const { return (cloud_inertia - exact_inertia).norm() / exact_inertia.norm(); }
 };
 
+/// One generated shape of a body (`shape = { type = "box", ... }`), drawn as
+/// its lit surface at the declared dimensions.
+struct ShapeSource {
+  SolidShape shape;                 ///< placed in the body's cloud axes
+  Eigen::Vector3d color{0.3, 0.5, 0.8};  ///< linear RGB (part colour, else the body's)
+};
+
 /// Particles [begin, end) of a body drawn in `color` (a part's colour).
 struct ColorSpan {
   std::size_t begin = 0, end = 0;
@@ -140,6 +150,7 @@ struct Body {
   BodyState initial;                     ///< make_state(model, initial_conditions)
   Eigen::Vector3d color{0.3, 0.5, 0.8};  ///< linear RGB in [0, 1]
   std::vector<MeshSource> meshes;        ///< mesh shapes, drawn as surfaces
+  std::vector<ShapeSource> shapes;       ///< generated shapes, drawn as surfaces
   std::vector<ColorSpan> part_colors;    ///< parts with their own colour
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,9 @@ struct BodySnapshot {
 
 /// What to draw (scene `[draw]`, overridable on the command line).
 struct DrawOptions {
-  bool box = true;
+  /// The principal box: unset = only for a body drawn without a surface
+  /// (translucent, as the seed drew it); true = also around surfaces, as an outline.
+  std::optional<bool> box;
   bool axes = true;          ///< principal axes: red = smallest moment, green, blue = largest
   bool particles = false;
   bool angular_momentum = false;  ///< world L as an arrow
@@ -32,6 +35,7 @@ struct DrawOptions {
   double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
   bool grid = false;
   double grid_z = 0;              ///< m, height of the ground grid
+  bool surface = true;            ///< generated shapes and meshes as their lit surfaces
 };
 
 // From the one colour table (viz/palette.hpp).
@@ -64,7 +68,8 @@ class TrailRecorder {
   std::deque<Sample> samples_;
 };
 
-/// The box drawn for body `b` (its principal-axis box, around its particles when they are drawn).
+/// The box drawn for body `b`: its principal-axis box around its surfaces
+/// (an outline: no faces), else around its particles when they are drawn.
 BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt);
 
 /// Adds the items of `bodies` to `view` (camera and label are the caller's).
