@@ -35,7 +35,7 @@ std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
   for (const scene::Body& b : scene_.bodies) {
     if (own && &b != &scene_.bodies[slots_[i].body]) continue;  // it shows its own body only
     const Eigen::Vector3f c = 0.75f * b.color.cast<float>();
-    bodies.emplace_back(b.name, viz::Color(c.x(), c.y(), c.z(), 1.0f));
+    bodies.emplace_back(b.label.empty() ? b.name : b.label, viz::Color(c.x(), c.y(), c.z(), 1.0f));
   }
   const scene::DrawConfig& d = scene_.render.draw;
   return viz::bodies_key(draw_options(d), bodies);

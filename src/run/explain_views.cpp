@@ -107,7 +107,14 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
     if (vc.kind == scene::ViewKind::body_frame && !runs.empty() && !runs[0].frames.empty())
       slot.camera = body_camera(s, slot.camera, vc.camera, m, runs[0].frames[0][slot.body]);
     if (vc.kind == scene::ViewKind::momentum_sphere) {
-      slot.sphere = sphere_settings(vc.camera, viz::SphereCameraSettings{});
+      // A lesson's default is the fixed textbook figure; a camera table with follow = true follows Π.
+      viz::SphereCameraSettings base;
+      const bool textbook = !vc.camera.follow.value_or(false) && !vc.camera.azimuth_deg && !vc.camera.elevation_deg;
+      if (textbook && !runs.empty() && !runs[0].frames.empty())
+        base = viz::textbook_camera(m.inertia, momentum_body(runs[0].frames[0][slot.body]));
+      base.reach = viz::kSphereReach;
+      if (!textbook) base.follow = vc.camera.follow.value_or(false);
+      slot.sphere = sphere_settings(vc.camera, base);
       if (!runs.empty()) {
         // Followed from t = 0 through every path sample: frame k alone gets the pose of a full run.
         std::vector<Eigen::Vector3d> pi;
@@ -116,7 +123,17 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
       }
     }
     if (vc.kind == scene::ViewKind::poinsot) slot.sphere = sphere_settings(vc.camera, viz::PoinsotInput{}.camera);
-    if (vc.kind == scene::ViewKind::plot && !runs.empty()) {
+    if (vc.kind == scene::ViewKind::world && vc.camera.position) {
+      const auto& c = vc.camera;
+      auto g3 = [](const std::array<double, 3>& a) { return glm::dvec3(a[0], a[1], a[2]); };
+      slot.camera.position = g3(*c.position);
+      slot.camera.target = g3(c.target.value_or(std::array<double, 3>{}));
+      slot.camera.up = g3(c.up.value_or(std::array<double, 3>{0, 0, 1}));
+      slot.camera.fov_y_deg = c.fov_y_deg.value_or(s.render.camera.fov_y_deg);
+    }
+    if (vc.kind == scene::ViewKind::plot && vc.y_range) {
+      slot.lo = (*vc.y_range)[0], slot.hi = (*vc.y_range)[1];
+    } else if (vc.kind == scene::ViewKind::plot && !runs.empty()) {
       // The value axis covers the whole run, so every frame shares it.
       double lo = 1e300, hi = -1e300;
       const Run& run = runs[0];
@@ -200,6 +217,7 @@ viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool layout) const {
   if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
   take_slot(in, slot, vc.title, !layout, height_);
   in.outline_only = layout;
+  in.energy_ellipsoid = vc.energy_ellipsoid;
   viz::View v;
   viz::build_momentum_sphere(v, in);
   return v;
@@ -276,7 +294,9 @@ viz::View ExplainViews::view_at(std::size_t i, long k, bool layout) const {
 }
 
 void ExplainViews::add_views(viz::DrawList& dl, long k) const {
-  for (std::size_t i = 0; i < slots_.size(); ++i) dl.views.push_back(view_at(i, k));
+  const double t = fb_.clock().time(k);
+  for (std::size_t i = 0; i < slots_.size(); ++i)
+    if (t >= scene_.render.explain.views[i].appear) dl.views.push_back(view_at(i, k));  // revealed in order
 }
 
 void ExplainViews::add_text(viz::DrawList& dl, long k) const {
@@ -284,13 +304,15 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   const scene::FrameClock& clock = fb_.clock();
   const double tau = static_cast<double>(k) / clock.fps();  // video time
   const double rate = clock.rate(k);
-  const auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
+  const auto badge = clock.in_hold(k) ? viz::speed_badge("paused", false, width_, height_, true)
+                                      : viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
   // The captions keep clear of the badge's corner.
   const float side = badge ? static_cast<float>(width_) - badge->position_px.x : 0.0f;
   for (const scene::Caption& c : e.captions) {
     const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time(c.end));
     if (a > 0)
-      for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, side)) dl.texts.push_back(std::move(t));
+      for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, side, c.position == scene::CaptionPosition::top))
+        dl.texts.push_back(std::move(t));
   }
   if (badge) dl.texts.push_back(*badge);
   if (!frame_key_.empty()) {

@@ -141,6 +141,10 @@ void read_body_name(TableReader& r, std::size_t index, LoadContext& ctx, Body& b
     r.error("name", "duplicate body name \"" + b.name + "\"; names must be unique");
   }
   ctx.body_names.push_back(b.name);
+  // What people read: any text but line breaks, so "tennis racket" may name the body "racket".
+  b.label = r.string("display_name").value_or(b.name);
+  if (r.has("display_name") && (b.label.empty() || b.label.size() > 64 || b.label.find('\n') != std::string::npos))
+    r.error("display_name", "expected 1-64 characters on one line, found " + quote_token(b.label));
 }
 
 /// The body's particles: its own (particles, shape, cloud) and its [[bodies.parts]].
@@ -207,7 +211,7 @@ bool complete_body(const toml::table& t, const TableReader& r, LoadContext& ctx,
 
 void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene& scene) {
   const std::size_t errors_before = ctx.diag.error_count();
-  std::vector<std::string_view> keys = {"name",        "particles", "shape",      "cloud",       "parts",
+  std::vector<std::string_view> keys = {"name",        "display_name", "particles", "shape",      "cloud",       "parts",
                                         "position",    "orientation", "velocity", "omega_body", "omega_world",
                                         "forces"};
   for (const ForceKind& kind : force_kinds()) keys.push_back(kind.key);

@@ -9,11 +9,18 @@
 namespace tumble::scene {
 
 FrameClock::FrameClock(double duration, double fps, double time_scale, std::vector<SlowMotion> segments,
-                       double hold)
+                       double hold, std::vector<Hold> holds)
     : fps_(fps), time_scale_(time_scale), hold_(std::max(hold, 0.0)) {
-  // Piecewise-constant rate; video time is its integral of 1/rate.
+  // Piecewise-constant rate; video time is its integral of 1/rate. A hold is
+  // a piece of rate 0 that lasts its own video time.
   double t = 0, tau = hold_;
+  std::size_t next_hold = 0;
   auto add = [&](double t_end, double rate) {
+    while (next_hold < holds.size() && holds[next_hold].at <= t_end) {
+      const Hold& h = holds[next_hold++];
+      if (h.at > t) pieces_.push_back({t, tau, rate}), tau += (h.at - t) / rate, t = h.at;
+      if (h.hold > 0) pieces_.push_back({t, tau, 0.0}), tau += h.hold;
+    }
     if (t_end <= t) return;
     pieces_.push_back({t, tau, rate});
     tau += (t_end - t) / rate;
@@ -45,9 +52,10 @@ double FrameClock::time(long k) const {
 double FrameClock::rate(long k) const { return on_title_card(k) ? 0 : piece_at_video(static_cast<double>(k) / fps_).rate; }
 
 double FrameClock::video_time(double t) const {
-  auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double v, const Piece& p) { return v < p.t0; });
-  const Piece& p = *(it == pieces_.begin() ? it : it - 1);
-  return p.tau0 + (t - p.t0) / p.rate;
+  // The first piece that shows t: one starting exactly at t (a hold there), else the last starting before it.
+  auto it = std::lower_bound(pieces_.begin(), pieces_.end(), t, [](const Piece& p, double v) { return p.t0 < v; });
+  const Piece& p = it != pieces_.end() && it->t0 == t ? *it : *(it == pieces_.begin() ? it : it - 1);
+  return p.rate > 0 ? p.tau0 + (t - p.t0) / p.rate : p.tau0;
 }
 
 long FrameClock::frame_at(double t) const {
@@ -77,7 +85,7 @@ std::string speed_text(double rate) {
 
 FrameClock frame_clock(const Scene& s, double fps) {
   return FrameClock(s.simulation.duration, fps, s.render.explain.time_scale, s.render.explain.slow_motion,
-                    s.render.explain.title.hold);
+                    s.render.explain.title.hold, s.render.explain.holds);
 }
 
 }  // namespace tumble::scene

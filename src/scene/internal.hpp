@@ -44,4 +44,8 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene);
 /// (after read_render_config and read_bodies: it checks body names and times).
 void read_explain_config(TableReader& root, LoadContext& ctx, Scene& scene);
 
+/// Warnings (file:line:col) for captions up too briefly to be read at video
+/// speed (under kSecondsPerWord a word) and for captions shown at once in one place.
+void check_pacing(TableReader& root, LoadContext& ctx, const Scene& scene);
+
 }  // namespace tumble::scene::detail

@@ -142,7 +142,8 @@ struct ColorSpan {
 };
 
 struct Body {
-  std::string name;
+  std::string name;                      ///< identifier (views, captions, CSV)
+  std::string label;                     ///< what labels and keys show: display_name, else name
   ParticleCloud cloud;                   ///< cloud axes, as written in the scene
   MassProperties mass_properties;        ///< in cloud axes
   RigidBodyModel model;                  ///< what Propagator integrates (keep the Scene alive)

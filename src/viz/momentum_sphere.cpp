@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "viz/captions.hpp"
+#include "viz/sphere_figure.hpp"
 #include "viz/key.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/surfaces.hpp"
@@ -18,7 +19,9 @@ constexpr double kPi = std::numbers::pi;
 
 glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-// Around axis `a` (0 or 2): the other two components on an ellipse, Π_a from the sphere.
+// Around axis `a` (0 or 2): the other two components on an ellipse, Π_a from
+// the sphere; the parameter refined where the curve bends (near ±e2 a level
+// close to the separatrix turns within a few thousandths of |L|).
 std::vector<std::vector<Eigen::Vector3d>> around(int a, const Eigen::Vector3d& I, double L, double two_E, int n) {
   const int b = a == 0 ? 1 : 0, c = a == 0 ? 2 : 1;
   // Eliminating Π_a: Π_b²(1/I_b - 1/I_a) + Π_c²(1/I_c - 1/I_a) = 2E - L²/I_a.
@@ -27,16 +30,16 @@ std::vector<std::vector<Eigen::Vector3d>> around(int a, const Eigen::Vector3d& I
   std::vector<std::vector<Eigen::Vector3d>> out;
   if (!(sb >= 0 && sc >= 0)) return out;
   for (double sign : {1.0, -1.0}) {
-    std::vector<Eigen::Vector3d> curve;
-    for (int i = 0; i <= n; ++i) {
-      const double phi = 2 * kPi * i / n;
+    auto at = [&](double phi) {
       Eigen::Vector3d p;
       p[b] = std::sqrt(sb) * std::cos(phi);
       p[c] = std::sqrt(sc) * std::sin(phi);
       p[a] = sign * std::sqrt(std::max(0.0, L * L - p[b] * p[b] - p[c] * p[c]));
-      curve.push_back(p);
-    }
-    out.push_back(std::move(curve));
+      return p;
+    };
+    std::vector<double> phis;
+    for (int i = 0; i <= n; ++i) phis.push_back(2 * kPi * i / n);
+    out.push_back(refined_curve(at, phis, 2e-3 * L));
   }
   return out;
 }
@@ -65,32 +68,6 @@ std::vector<std::vector<Eigen::Vector3d>> polhodes(const Eigen::Vector3d& I, dou
   return around(2, I, L, two_E, n);                     // near the largest moment's axis
 }
 
-namespace {
-
-// The axes through the sphere, +e_i arrows and −e_i lines, each +tip named e_i
-// where the ball does not hide it.
-void add_axes(View& view, const MomentumSphereInput& in) {
-  static const char* const kNames[3] = {"e\u2081", "e\u2082", "e\u2083"};  // e₁ e₂ e₃
-  const float size = text_px(TextRole::label, in.frame_h);
-  for (int i = 0; i < 3; ++i) {
-    glm::dvec3 e(0);
-    e[i] = 1.35;
-    view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
-    view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.6f), 1.5f, false});
-    const glm::dvec3 tip = e * (1.47 / 1.35);
-    glm::vec2 px;
-    if (hidden_by_ball(view.camera.position, tip, kSphereBall) ||
-        !project_to_viewport(view.camera, in.width_px, in.height_px, tip, px))
-      continue;
-    TextItem t{kNames[i], {0, 0}, size, kAxisColors[i]};
-    t.position_px = px - 0.5f * glm::vec2(text_width(t.text, size), size);
-    t.name = std::string("axis_label_e") + char('1' + i);
-    view.texts.push_back(std::move(t));
-  }
-}
-
-}  // namespace
-
 bool draws_energy_ellipsoid(const MomentumSphereInput& in) {
   // Only while it fits inside the axes' reach: near e₁ its e₃ semi-axis is √(I₃/I₁) |L| and would fill the view.
   const double L = in.momentum.norm();
@@ -99,12 +76,14 @@ bool draws_energy_ellipsoid(const MomentumSphereInput& in) {
 
 std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   std::vector<KeyEntry> out{
-      {Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"}};
+      {Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "\u00b1e\u2081 \u00b1e\u2082 \u00b1e\u2083: I\u2081 < I\u2082 < I\u2083"}};
   if (in.momentum.norm() <= 0) return out;  // only the axes are drawn
   out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L in body axes"));
-  out.push_back(key_entry(Meaning::polhode, "polhode (\u03a0's path)"));
-  if (draws_energy_ellipsoid(in)) out.push_back({Swatch::block, {color_of(Meaning::polhode, 0.35f)}, "energy ellipsoid"});
+  out.push_back(key_entry(Meaning::polhode, "polhode (\u03a0's path), arrows: its way"));
+  if (draws_energy_ellipsoid(in))
+    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
+  out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082 (unstable)"});
   out.push_back(key_entry(Meaning::other_levels, "other energies"));
   return out;
 }
@@ -112,14 +91,14 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
 SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
   // Σ Π_i²/I_i = 2E in units of |L|: semi-axes √(2E I_i)/|L|, the principal axes its own.
   const glm::dvec3 semi(std::sqrt(two_E * I[0]) / L, std::sqrt(two_E * I[1]) / L, std::sqrt(two_E * I[2]) / L);
-  SurfaceItem s = ellipsoid({0, 0, 0}, glm::dmat3(1.0), semi, color_of(Meaning::polhode, 0.22f));
+  SurfaceItem s = ellipsoid({0, 0, 0}, glm::dmat3(1.0), semi, color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha));
   return s;  // unnamed: a key may cover its caps (keep_clear), never the sphere
 
 }
 
 float sphere_shift_room(float width_px, float height_px) {
-  // The sphere's radius is a third of the height (fov: ±1.5 |L|); it keeps its side margin.
-  return std::max(0.0f, 0.5f * width_px - height_px / 3.0f - 0.02f * height_px);
+  // The sphere's radius is the height's 1/(2 kSphereReach) (fov: ±kSphereReach |L|); it keeps its side margin.
+  return std::max(0.0f, 0.5f * width_px - height_px / (2.0f * static_cast<float>(kSphereReach)) - 0.02f * height_px);
 }
 
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
@@ -141,7 +120,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   }
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
-  add_axes(view, in);
+  add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
   if (L <= 0) return;
   if (!in.outline_only && draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
@@ -151,21 +130,37 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
       view.polylines.push_back(std::move(p));
     }
   };
-  // A family of levels spaced evenly in 2E between L²/I3 and L²/I1.
+  auto unit = [&](const std::vector<Eigen::Vector3d>& curve) {
+    std::vector<Eigen::Vector3d> u;
+    for (const Eigen::Vector3d& x : curve) u.push_back(x / L);
+    return u;
+  };
+  // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
   const double lo = L * L / I[2], hi = L * L / I[0];
   constexpr int kLevels = 10;
   for (int j = 1; j < kLevels && !in.outline_only; ++j) {
     const double two_E = lo + (hi - lo) * j / kLevels;
-    if (std::abs(two_E - L * L / I[1]) > 1e-3 * (hi - lo))
-      add(polhodes(I, L, two_E, 96), color_of(Meaning::other_levels, 0.5f), 1.0f, "");
+    if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
+    const auto curves = polhodes(I, L, two_E, 96);
+    add(curves, color_of(Meaning::other_levels, 0.5f), 1.0f, "");
+    for (const auto& c : curves) add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
   }
-  // The body's own polhode under the separatrix, which stays visible on top of it.
-  add(polhodes(I, L, in.two_E, 192), color_of(Meaning::polhode, 0.9f), 2.0f, "polhode");
+  // Everything from here on shows through the ball, faintly, where it is behind it.
+  const std::size_t front_first = view.polylines.size();
   if (!in.outline_only) add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
-  PolylineItem path{{}, color_of(Meaning::momentum_point), 2.5f, true, "momentum_path"};
+  // The body's own polhode over the separatrix: near it, the two nearly coincide.
+  const auto own = polhodes(I, L, in.two_E, 192);
+  add(own, color_of(Meaning::polhode), 2.5f, "polhode");
+  if (!in.outline_only) {
+    for (const auto& c : own) add_direction_arrows(view, unit(c), I, 4, color_of(Meaning::polhode), 0.13);
+    add_saddles(view);
+  }
+  view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
+  show_far_side(view, front_first, kSphereBall);
+  // Π's recent path, on the near side only (its fade runs oldest to newest).
+  PolylineItem path{{}, color_of(Meaning::momentum_point, 0.8f), 2.0f, true, "momentum_path"};
   for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
   if (path.points.size() >= 2) view.polylines.push_back(std::move(path));
-  view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
 }
 
 }  // namespace tumble::viz

@@ -21,6 +21,7 @@ struct BodySnapshot {
   BodyState state;
   Color color{0.55f, 0.62f, 0.78f, 0.35f};  ///< box face colour (alpha = translucency)
   const BodyLook* look = nullptr;        ///< optional: surfaces, visible particles and their colours
+  std::string label;                     ///< what a label shows (the display name); empty: the model's name
 };
 
 /// What to draw (scene `[draw]`, overridable on the command line).
