@@ -17,6 +17,7 @@ std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
   switch (scene_.render.explain.views[i].kind) {
     case scene::ViewKind::momentum_sphere: {  // what it draws: Π and its energy at t = 0 (conserved)
       viz::MomentumSphereInput in;
+      in.energy_ellipsoid = scene_.render.explain.views[i].energy_ellipsoid;
       const RigidBodyModel& m = scene_.bodies[slots_[i].body].model;
       in.inertia = m.inertia;
       if (!runs_.empty() && !runs_[0].frames.empty()) {

@@ -19,6 +19,8 @@ namespace {
 
 glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
+constexpr double kPiTailSeconds = 0.4;  // simulated s of Π's path drawn behind the dot
+
 // How the plot shows each series of scene::plot_series_names(): its name in
 // the key and its colour (viz/palette.hpp: principal components and angles
 // take their axis' colour; the cloud-axis components, which are no principal
@@ -212,7 +214,10 @@ viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool layout) const {
   viz::MomentumSphereInput in;
   in.inertia = m.inertia;
   in.momentum = momentum_body(run.frames[static_cast<std::size_t>(kk)][slot.body]);
-  for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][slot.body]));
+  // Π's recent path only (a short tail): the whole path is the polhode, drawn in its own colour.
+  const double now = run.path_t[run.path_end(kk) - 1];
+  for (std::size_t j = 0; j < run.path_end(kk); ++j)
+    if (run.path_t[j] >= now - kPiTailSeconds) in.history.push_back(momentum_body(run.path[j][slot.body]));
   in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
   if (!slot.track.empty()) in.pose = slot.track[std::min(run.path_end(kk), slot.track.size()) - 1];
   take_slot(in, slot, vc.title, !layout, height_);
@@ -309,7 +314,7 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   // The captions keep clear of the badge's corner.
   const float side = badge ? static_cast<float>(width_) - badge->position_px.x : 0.0f;
   for (const scene::Caption& c : e.captions) {
-    const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time(c.end));
+    const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time_last(c.end));
     if (a > 0)
       for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, side, c.position == scene::CaptionPosition::top))
         dl.texts.push_back(std::move(t));

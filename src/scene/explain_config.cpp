@@ -268,10 +268,6 @@ void read_holds(TableReader& root, LoadContext& ctx, Scene& s) {
     h.hold = r.number("hold", Range::closed(0.1, 60)).value_or(h.hold);
     if (!at) continue;
     h.at = *at;
-    for (const SlowMotion& m : s.render.explain.slow_motion)
-      if (h.at > m.start && h.at < m.end)
-        r.error("at", "inside a slow_motion segment (" + format_number(m.start) + " to " + format_number(m.end) +
-                          " s); put the hold at its start or end, or outside it");
     out.push_back(h);
   }
   std::stable_sort(out.begin(), out.end(), [](const Hold& x, const Hold& y) { return x.at < y.at; });

@@ -32,6 +32,7 @@ FrameClock::FrameClock(double duration, double fps, double time_scale, std::vect
   }
   add(duration, time_scale);
   if (pieces_.empty()) pieces_.push_back({0, hold_, time_scale});
+  tau_end_ = tau;
   count_ = static_cast<long>(std::floor(tau * fps * (1 + 1e-12))) + 1;
 }
 
@@ -58,6 +59,14 @@ double FrameClock::video_time(double t) const {
   return p.rate > 0 ? p.tau0 + (t - p.t0) / p.rate : p.tau0;
 }
 
+double FrameClock::video_time_last(double t) const {
+  auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double v, const Piece& p) { return v < p.t0; });
+  if (it == pieces_.begin()) return video_time(t);
+  const Piece& p = *(it - 1);
+  if (p.rate > 0) return p.tau0 + (t - p.t0) / p.rate;
+  return it == pieces_.end() ? tau_end_ : it->tau0;  // a hold at the very end lasts to the end of the video
+}
+
 long FrameClock::frame_at(double t) const {
   const long k = std::lround(video_time(t) * fps_);
   if (k < 0 || k >= count_) return -1;
@@ -68,7 +77,9 @@ std::vector<ClockSpan> clock_spans(const FrameClock& c) {
   std::vector<ClockSpan> out;
   for (long k = 0; k < c.count(); ++k) {
     const double r = c.rate(k);
-    if (out.empty() || out.back().rate != r) out.push_back({k, k, r});
+    if (out.empty() || out.back().rate != r || c.on_title_card(out.back().last) != c.on_title_card(k) ||
+        (r == 0 && c.time(k) != c.time(out.back().last)))
+      out.push_back({k, k, r});
     else out.back().last = k;
   }
   return out;

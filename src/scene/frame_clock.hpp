@@ -16,7 +16,7 @@ namespace tumble::scene {
 class FrameClock {
  public:
   /// `segments` must be sorted, disjoint, inside [0, duration] (the loader
-  /// checks); `holds` sorted, each at a simulated time outside the segments' insides.
+  /// checks); `holds` sorted by simulated time (inside a segment or not).
   FrameClock(double duration, double fps, double time_scale = 1, std::vector<SlowMotion> segments = {},
              double hold = 0, std::vector<Hold> holds = {});
 
@@ -31,6 +31,8 @@ class FrameClock {
   /// Whether frame k is in a [[holds]] stop (the animation paused, after the title card).
   bool in_hold(long k) const { return !on_title_card(k) && rate(k) == 0; }
   double video_time(double t) const;           ///< τ(t): the first video s at which simulated t is shown
+  /// The last video s at which simulated t is shown: after a hold at t, else τ(t).
+  double video_time_last(double t) const;
   /// Frame showing simulated `t` exactly (within 1e-9 relative), or -1.
   long frame_at(double t) const;
 
@@ -41,6 +43,7 @@ class FrameClock {
   const Piece& piece_at_video(double tau) const;
   double fps_, time_scale_, hold_;
   std::vector<Piece> pieces_;  // sorted by t0; the first starts at 0
+  double tau_end_ = 0;         // video s at the end of the last piece
   long count_;
 };
 

@@ -19,9 +19,9 @@ std::size_t word_count(const std::string& text) {
   return n;
 }
 
-std::string seconds(double s) {
+std::string seconds(double s, int digits = 1) {
   char b[32];
-  std::snprintf(b, sizeof b, "%.1f s", s);
+  std::snprintf(b, sizeof b, "%.*f s", digits, s);
   return b;
 }
 
@@ -38,20 +38,20 @@ void check_pacing(TableReader& root, LoadContext& ctx, const Scene& scene) {
   };
   for (std::size_t i = 0; i < captions.size(); ++i) {
     const Caption& c = captions[i];
-    const double a = clock.video_time(c.start), b = clock.video_time(c.end);
+    const double a = clock.video_time(c.start), b = clock.video_time_last(c.end);
     const std::size_t words = word_count(c.text);
     const std::string from = c.start_text.empty() ? format_number(c.start) : c.start_text;
     const std::string to = c.end_text.empty() ? format_number(c.end) : c.end_text;
     const double need = kSecondsPerWord * static_cast<double>(words);
     if (b - a < need)
       ctx.diag.warning(where(i, "text"), "captions[" + std::to_string(i) + "].text",
-                       "up for " + seconds(b - a) + " of video (" + from + " to " + to + " simulated s) for " +
+                       "up for " + seconds(b - a, 2) + " of video (" + from + " to " + to + " simulated s) for " +
                            std::to_string(words) + " words; a hall reads about " + seconds(kSecondsPerWord) +
                            " a word, so it needs " + seconds(need) +
                            ": move its end, slow the time down over it ([[slow_motion]], [[holds]]) or shorten it");
     for (std::size_t j = 0; j < i; ++j) {
       const Caption& o = captions[j];
-      const double oa = clock.video_time(o.start), ob = clock.video_time(o.end);
+      const double oa = clock.video_time(o.start), ob = clock.video_time_last(o.end);
       if (o.position == c.position && a < ob && oa < b)
         ctx.diag.warning(where(i, "start"), "captions[" + std::to_string(i) + "].start",
                          "shown at the same time and place as captions[" + std::to_string(j) + "] (video " +

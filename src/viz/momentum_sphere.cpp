@@ -39,7 +39,7 @@ std::vector<std::vector<Eigen::Vector3d>> around(int a, const Eigen::Vector3d& I
     };
     std::vector<double> phis;
     for (int i = 0; i <= n; ++i) phis.push_back(2 * kPi * i / n);
-    out.push_back(refined_curve(at, phis, 2e-3 * L));
+    out.push_back(refined_curve(at, phis, 5e-4 * L));
   }
   return out;
 }
@@ -147,14 +147,14 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   }
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
-  if (!in.outline_only) add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
-  // The body's own polhode over the separatrix: near it, the two nearly coincide.
+  // The separatrix wide, the body's own polhode narrow on top of it: near it
+  // the two nearly coincide, and both stay visible (sky-blue edges, magenta core).
+  if (!in.outline_only) add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 4.5f, "separatrix");
   const auto own = polhodes(I, L, in.two_E, 192);
-  add(own, color_of(Meaning::polhode), 2.5f, "polhode");
-  if (!in.outline_only) {
+  add(own, color_of(Meaning::polhode), 2.0f, "polhode");
+  if (!in.outline_only)
     for (const auto& c : own) add_direction_arrows(view, unit(c), I, 4, color_of(Meaning::polhode), 0.13);
-    add_saddles(view);
-  }
+  add_saddles(view);
   view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
   // Π's recent path, on the near side only (its fade runs oldest to newest).

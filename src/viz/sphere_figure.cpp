@@ -19,7 +19,7 @@ void refine(const std::function<Eigen::Vector3d(double)>& at, double t0, const E
             const Eigen::Vector3d& p1, double tol, int depth, std::vector<Eigen::Vector3d>& out) {
   const double tm = 0.5 * (t0 + t1);
   const Eigen::Vector3d pm = at(tm);
-  if (depth < 10 && (pm - 0.5 * (p0 + p1)).norm() > tol) {
+  if (depth < 10 && ((pm - 0.5 * (p0 + p1)).norm() > tol || (p1 - p0).norm() > 30 * tol)) {
     refine(at, t0, p0, tm, pm, tol, depth + 1, out);
     refine(at, tm, pm, t1, p1, tol, depth + 1, out);
     return;

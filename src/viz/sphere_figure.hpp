@@ -17,7 +17,7 @@ namespace tumble::viz {
 
 /// The curve `at` (parameter → point) through `params` (ascending), each
 /// interval halved until the curve's midpoint is within `tolerance` of the
-/// chord's (at most 2¹⁰ pieces an interval).
+/// chord's and the chord within 30 `tolerance` long (at most 2¹⁰ pieces an interval).
 std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(double)>& at,
                                            const std::vector<double>& params, double tolerance);
 

@@ -138,10 +138,21 @@ TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
     MomentumSphereInput in{I, momentum_body(s), {}, two_E, ""};
     View v;
     build_momentum_sphere(v, in);
-    const glm::dvec3 d = v.points.back().position;  // in units of |L|
-    const Eigen::Vector3d pi = L * Eigen::Vector3d(d.x, d.y, d.z);
+    const auto dot = std::find_if(v.points.begin(), v.points.end(), [](const PointItem& p) { return p.name == "momentum_point"; });
+    ASSERT_NE(dot, v.points.end());
+    const glm::dvec3 d = dot->position;  // in units of |L|
+    const Eigen::Vector3d pi = momentum_body(s);
+    const glm::dvec3 u(pi.x() / L, pi.y() / L, pi.z() / L);
     EXPECT_NEAR(pi.norm() / L, 1.0, 1e-9);
     EXPECT_NEAR(pi.cwiseAbs2().cwiseQuotient(I).sum() / two_E, 1.0, 1e-9);
+    if (hidden_by_ball(v.camera.position, u, kSphereBall)) {
+      // Behind the ball it shows through, faintly: drawn where Π's own pixel is (on the eye's ray to Π).
+      const glm::dvec3 a = glm::normalize(d - v.camera.position), b = glm::normalize(u - v.camera.position);
+      EXPECT_NEAR(glm::dot(a, b), 1.0, 1e-9);
+      EXPECT_LT(dot->color.a, 0.5f);
+    } else {
+      EXPECT_NEAR(glm::length(d - u), 0, 1e-12);
+    }
   }
 }
 
