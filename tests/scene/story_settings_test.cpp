@@ -117,7 +117,7 @@ TEST(Holds, BadHoldsAreErrorsAtTheirPlace) {
   EXPECT_NEAR(c.video_time(1.5), 1 + 5, 1e-12);
   EXPECT_NEAR(c.video_time(2.0), 1 + 10 + 1, 1e-12);
   EXPECT_DOUBLE_EQ(c.time(65), 1.5);
-  EXPECT_EQ(c.count(), 171);  // 1 + 10 + 1 + 5 s of video at 10 fps
+  EXPECT_EQ(c.count(), 161);  // 1 + 10 + 1 + 4 s of video at 10 fps
 }
 
 TEST(Reveal, AViewAppearsAtItsAnchoredTime) {
