@@ -39,8 +39,8 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const
     glm::vec2 px;
     const auto box = viz::screen_box(v.camera, fw, fh, viz::box_corners(viz::body_box(b, draw)));
     if (!box || !viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;  // none for what is out of view
-    const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
-    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+    const float x = viz::centred_x(b.model->name, font_px * 1.1f, px.x);
+    v.texts.push_back({b.model->name, {x, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
                        "label:" + b.model->name});
     v.texts.back().subject_px = {box->x0, box->y0, box->x1, box->y1};
   }

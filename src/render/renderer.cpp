@@ -20,6 +20,7 @@
 #include "render/view_batches.hpp"
 #include "compose/view_layout.hpp"
 #include "viz/captions.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::render {
 
@@ -385,7 +386,7 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
   }
   for (const viz::TextItem& t : items) {
     if (t.backdrop.a > 0) font_.rect(t.backdrop_px, t.backdrop, quads);
-    const float size = compose::fitted_text_px(t, static_cast<float>(rect.width), font_.measure(t.text, t.size_px).x);
+    const float size = compose::fitted_text_px(t, static_cast<float>(rect.width), viz::text_width(t.text, t.size_px));
     font_.layout(t.text, t.position_px, size, t.color, quads);
   }
   if (quads.empty()) return;

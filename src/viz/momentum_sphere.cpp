@@ -83,7 +83,7 @@ void add_axes(View& view, const MomentumSphereInput& in) {
         !project_to_viewport(view.camera, in.width_px, in.height_px, tip, px))
       continue;
     TextItem t{kNames[i], {0, 0}, size, kAxisColors[i]};
-    t.position_px = px - 0.5f * glm::vec2(text_width(t.text, size), size);
+    t.position_px = {centred_x(t.text, size, px.x), px.y - 0.5f * size};
     t.name = std::string("axis_label_e") + char('1' + i);
     view.texts.push_back(std::move(t));
   }
