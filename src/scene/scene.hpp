@@ -22,6 +22,7 @@
 #include "scene/explain.hpp"
 #include "scene/frame_settings.hpp"
 #include "core/solid_shape.hpp"
+#include "viz/draw_options.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace tumble::scene {
@@ -85,12 +86,10 @@ struct OverlayItems {
   bool any() const { return time || method || step || energy; }
 };
 
-struct DrawConfig {
-  std::optional<bool> box;               ///< unset: only for bodies without a surface
-  bool surface = true;                   ///< generated shapes and meshes as lit surfaces
-  bool axes = true, particles = false, L = false, omega = false;
-  double trails = 0;                     ///< s of axis-tip history; 0 = off
-  bool grid = false, overlay = true, legend = true;
+/// `[draw]`: viz's options for the bodies (box, axes, particles, L, ω,
+/// trails, grid: filled by name by the reader) plus the frame's text.
+struct DrawConfig : viz::DrawOptions {
+  bool overlay = true, legend = true;
   OverlayItems overlay_items;            ///< which parts of the overlay line (overlay = true)
 };
 

@@ -59,7 +59,5 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 /// `as_is`: `speed` is the whole text ("paused"), without "slow motion" or "fast".
 std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is = false);
 
-/// Width of `text` at `size_px` (viz::text_width), px.
-float approx_text_width(const std::string& text, float size_px);
 
 }  // namespace tumble::viz

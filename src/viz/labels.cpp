@@ -85,7 +85,7 @@ std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
   std::vector<glm::vec2> out;
   for (float dx : {0.0f, 0.7f, -0.7f})
     for (float dy : {0.0f, 1.1f, -1.1f, 2.2f, -2.2f}) out.push_back(at + glm::vec2(dx * size.x, dy * line));
-  for (float dx : {0.0f, 1.4f, -1.4f, 0.7f, -0.7f})
+  for (float dx : {0.0f, 1.4f, -1.4f, 0.7f, -0.7f, 2.1f, -2.1f})
     for (float dy : {3.3f, -3.3f, 1.1f, -1.1f, 0.0f})
       if (std::abs(dx) > 1.0f || std::abs(dy) > 3.0f) out.push_back(at + glm::vec2(dx * size.x, dy * line));
   return out;

@@ -97,8 +97,10 @@ SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
 }
 
 float sphere_shift_room(float width_px, float height_px) {
-  // The sphere's radius is the height's 1/(2 kSphereReach) (fov: ±kSphereReach |L|); it keeps its side margin.
-  return std::max(0.0f, 0.5f * width_px - height_px / (2.0f * static_cast<float>(kSphereReach)) - 0.02f * height_px);
+  // |L| is the height's 1/(2 kSphereReach) (fov: ±kSphereReach |L|); the axis labels, at
+  // kAxisLabelReach and about 6 % of the height wide, stay inside with a 2 % margin.
+  const float unit = height_px / (2.0f * static_cast<float>(kSphereReach));
+  return std::max(0.0f, 0.5f * width_px - static_cast<float>(kAxisLabelReach) * unit - 0.05f * height_px);
 }
 
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {

@@ -10,6 +10,7 @@
 #include "core/particle_cloud.hpp"
 #include "viz/body_look.hpp"
 #include "viz/draw_list.hpp"
+#include "viz/draw_options.hpp"
 #include "viz/palette.hpp"
 
 namespace tumble::viz {
@@ -22,21 +23,6 @@ struct BodySnapshot {
   Color color{0.55f, 0.62f, 0.78f, 0.35f};  ///< box face colour (alpha = translucency)
   const BodyLook* look = nullptr;        ///< optional: surfaces, visible particles and their colours
   std::string label;                     ///< what a label shows (the display name); empty: the model's name
-};
-
-/// What to draw (scene `[draw]`, overridable on the command line).
-struct DrawOptions {
-  /// The principal box: unset = only for a body drawn without a surface
-  /// (translucent, as the seed drew it); true = also around surfaces, as an outline.
-  std::optional<bool> box;
-  bool axes = true;          ///< principal axes: red = smallest moment, green, blue = largest
-  bool particles = false;
-  bool angular_momentum = false;  ///< world L as an arrow
-  bool omega = false;             ///< ω_world as an arrow
-  double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
-  bool grid = false;
-  double grid_z = 0;              ///< m, height of the ground grid
-  bool surface = true;            ///< generated shapes and meshes as their lit surfaces
 };
 
 // From the one colour table (viz/palette.hpp).

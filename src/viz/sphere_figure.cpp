@@ -72,9 +72,9 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       glm::vec2 px;
       if (hidden_by_ball(view.camera.position, tip, 1.0) || !project(tip, px)) continue;
       TextItem t{sign > 0 ? kPlus[i] : kMinus[i], {0, 0}, label_px, kAxisColors[i]};
-      t.position_px = px - 0.5f * glm::vec2(text_width(t.text, label_px), label_px);
-      if (t.position_px.x < 0 || t.position_px.y < 0 || px.x + 0.5f * text_width(t.text, label_px) > width_px ||
-          t.position_px.y + label_px > height_px)
+      t.position_px = {centred_x(t.text, label_px, px.x), px.y - 0.5f * label_px};
+      const Box b = text_box(t);
+      if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px)
         continue;  // out of the view: the other end is in it
       t.name = std::string(sign > 0 ? "axis_label_e" : "axis_label_-e") + char('1' + i);
       view.texts.push_back(std::move(t));

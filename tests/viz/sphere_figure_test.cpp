@@ -46,7 +46,8 @@ TEST(SphereFigure, ArrowsPointTheWayPiMoves) {
   View v;
   v.camera = sphere_camera({}, textbook_camera(kI, pi));
   std::vector<Eigen::Vector3d> unit;
-  for (const Eigen::Vector3d& p : polhodes(kI, L, two_E(pi), 96)[0]) unit.push_back(p / L);
+  const auto curves = polhodes(kI, L, two_E(pi), 96);
+  for (const Eigen::Vector3d& p : curves[0]) unit.push_back(p / L);
   add_direction_arrows(v, unit, kI, 6, {1, 0, 1, 1}, 0.1);
   ASSERT_GE(v.arrows.size(), 2u);
   for (const ArrowItem& a : v.arrows) {

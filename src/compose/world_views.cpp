@@ -1,138 +1,17 @@
-#include "run/render_job.hpp"
+#include "compose/world_views.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
+#include <string>
 
 #include "core/dynamics.hpp"
-#include "core/error.hpp"
-#include "core/propagator.hpp"
-#include "run/explain_views.hpp"
 #include "viz/captions.hpp"
-#include "viz/text_layout.hpp"
 #include "viz/particle_set.hpp"
+#include "viz/surfaces.hpp"
+#include "viz/text_layout.hpp"
 
-namespace tumble::run {
-
-std::pair<long, long> parse_frame_range(const std::string& spec, long count) {
-  const auto colon = spec.find(':');
-  if (colon == std::string::npos) throw InputError("--frames: expected A:B (inclusive frame numbers), found '" + spec + "'");
-  auto num = [&](const std::string& s, long dflt) -> long {
-    if (s.empty()) return dflt;
-    size_t used = 0;
-    long v = -1;
-    try {
-      v = std::stol(s, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != s.size() || v < 0) throw InputError("--frames: expected a frame number >= 0, found '" + s + "'");
-    return v;
-  };
-  const long a = num(spec.substr(0, colon), 0), b = num(spec.substr(colon + 1), count - 1);
-  if (a > b)
-    throw InputError("--frames " + spec + ": the first frame (" + std::to_string(a) + ") is after the last (" +
-                     std::to_string(b) + "); expected A <= B");
-  if (b >= count)
-    throw InputError("--frames " + spec + ": the scene has frames 0:" + std::to_string(count - 1));
-  return {a, b};
-}
-
-int sub_samples(const std::vector<const RigidBodyModel*>& models, const std::vector<BodyState>& states, double h) {
-  double turn = 0;  // rad, the largest turn of any body over h
-  for (std::size_t b = 0; b < states.size() && b < models.size(); ++b)
-    turn = std::max(turn, omega_world(*models[b], states[b]).norm() * h);
-  if (!std::isfinite(turn)) return 1;
-  return static_cast<int>(std::clamp(std::ceil(turn / kMaxTurnPerSample), 1.0, static_cast<double>(kMaxSubSamples)));
-}
-
-namespace {
-
-using Propagators = std::vector<std::unique_ptr<Propagator>>;
-
-// One Propagator per body for `sim`, with the run's notes, energies at t = 0
-// and labels. Labels list each method and step once, compared whole (by enum
-// for the methods): rk45 and rk4 are two entries, not one substring of the other.
-Propagators start_run(const scene::Scene& s, const scene::SimulationConfig& sim, Run& run) {
-  Propagators props;
-  std::vector<Method> used;
-  std::vector<std::string> steps;
-  for (const scene::Body& b : s.bodies) {
-    const scene::MethodPlan plan = scene::plan_method(sim, b);
-    if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
-    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) run.auto_notes.push_back("warning: " + *w);
-    props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
-    run.energy0.push_back(total_energy(b.model, b.initial));
-    const std::string step = scene::step_label(plan.config, b.model);
-    if (std::find(steps.begin(), steps.end(), step) == steps.end()) {
-      steps.push_back(step);
-      run.step_label += (run.step_label.empty() ? "" : "/") + step;
-    }
-    if (std::find(used.begin(), used.end(), plan.config.method) == used.end()) {
-      used.push_back(plan.config.method);
-      run.label += (run.label.empty() ? "" : "/") + std::string(method_name(plan.config.method));
-    }
-  }
-  return props;
-}
-
-// The run's frames (and, with `curves`, its path: the frames and sub-frame
-// samples between them) until the last frame or a divergence.
-void advance_run(const scene::FrameClock& clock, long frames, bool curves, const std::vector<const RigidBodyModel*>& models,
-                 Propagators& props, Run& run) {
-  try {
-    for (long k = 0; k < frames; ++k) {
-      const double t = clock.time(k);
-      if (curves && k > 0) {
-        // Sub-frame samples: dense output between grid points, never fed
-        // back, so the frames are the same with or without them.
-        const double t0 = clock.time(k - 1);
-        const int n = sub_samples(models, run.frames.back(), t - t0);
-        for (int j = 1; j < n; ++j) {
-          const double tj = t0 + (t - t0) * j / n;
-          std::vector<BodyState> sub;
-          for (auto& p : props) sub.push_back(p->advance_to(tj));
-          run.path.push_back(std::move(sub));
-          run.path_t.push_back(tj);
-        }
-      }
-      std::vector<BodyState> states;
-      for (auto& p : props) states.push_back(p->advance_to(t));
-      if (curves) {
-        run.path_of_frame.push_back(run.path.size());
-        run.path.push_back(states);
-        run.path_t.push_back(t);
-      }
-      run.frames.push_back(std::move(states));
-    }
-  } catch (const Diverged& e) {
-    run.diverged = e.what();
-  }
-}
-
-}  // namespace
-
-std::vector<Run> simulate_runs(const scene::Scene& s, long frames, double fps) {
-  std::vector<std::optional<Method>> methods;
-  for (Method m : s.render.compare_methods) methods.push_back(m);
-  if (methods.empty()) methods.push_back(s.simulation.automatic ? std::nullopt : std::optional(s.simulation.step.method));
-  const scene::FrameClock clock = scene::frame_clock(s, fps);
-  const bool curves = s.render.draw.trails > 0 || !s.render.explain.views.empty();
-  std::vector<const RigidBodyModel*> models;
-  for (const scene::Body& b : s.bodies) models.push_back(&b.model);
-  std::vector<Run> runs;
-  for (const auto& method : methods) {
-    Run run;
-    scene::SimulationConfig sim = s.simulation;
-    sim.automatic = !method;
-    if (method) sim.step.method = *method;
-    Propagators props = start_run(s, sim, run);
-    advance_run(clock, frames, curves, models, props, run);
-    runs.push_back(std::move(run));
-  }
-  return runs;
-}
+namespace tumble::compose {
 
 namespace {
 
@@ -160,9 +39,9 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const
     glm::vec2 px;
     const auto box = viz::screen_box(v.camera, fw, fh, viz::box_corners(viz::body_box(b, draw)));
     if (!box || !viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;  // none for what is out of view
-    const std::string& shown = b.label.empty() ? b.model->name : b.label;
-    const float w = viz::approx_text_width(shown, font_px * 1.1f);
-    v.texts.push_back({shown, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+    const std::string& shown = b.label.empty() ? b.model->name : b.label;  // the display name
+    const float x = viz::centred_x(shown, font_px * 1.1f, px.x);
+    v.texts.push_back({shown, {x, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
                        "label:" + b.model->name});
     v.texts.back().subject_px = {box->x0, box->y0, box->x1, box->y1};
   }
@@ -196,7 +75,7 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
 }
 
 // The overlay line: time, method, step, energy error, as the scene's overlay asks.
-std::string overlay_line(const scene::OverlayItems& items, const Run& run, std::size_t run_count,
+std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
                          const std::vector<viz::BodySnapshot>& snaps, double t) {
   // Largest relative energy error over the bodies: the failure users look
   // for. Only where energy is conserved (gravity is in it, as potential):
@@ -233,21 +112,14 @@ std::string overlay_line(const scene::OverlayItems& items, const Run& run, std::
 
 }  // namespace
 
-viz::DrawOptions draw_options(const scene::DrawConfig& d) {
-  viz::DrawOptions o;
-  o.box = d.box, o.surface = d.surface, o.axes = d.axes, o.particles = d.particles;
-  o.angular_momentum = d.L, o.omega = d.omega, o.trail_seconds = d.trails, o.grid = d.grid;
-  return o;
-}
-
-viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, double aspect) {
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
   const scene::CameraConfig& c = s.render.camera;
   viz::Camera camera;
   if (c.automatic) {
     // Frame every body over the whole run (all runs: a failing method may drift).
     std::vector<glm::dvec3> centres;
     std::vector<double> radii;
-    for (const Run& r : runs)
+    for (const scene::Run& r : runs)
       for (const auto& states : r.frames)
         for (size_t i = 0; i < states.size(); ++i) {
           if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
@@ -263,13 +135,13 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, do
   return camera;
 }
 
-viz::GridItem ground_grid(const scene::Scene& s, const std::vector<Run>& runs) {
+viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& runs) {
   // Fixed for the whole video: below the lowest any body comes, centred
   // under where the bodies go, wide enough for all of it (0.5 m squares, or
   // finer for small bodies).
   double zmin = 1e300, size = 0;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-  for (const Run& r : runs)
+  for (const scene::Run& r : runs)
     for (const auto& states : r.frames)
       for (std::size_t i = 0; i < states.size() && i < s.bodies.size(); ++i) {
         if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
@@ -287,21 +159,10 @@ viz::GridItem ground_grid(const scene::Scene& s, const std::vector<Run>& runs) {
           {0.5f, 0.52f, 0.58f, 0.5f}};
 }
 
-FrameBuilder::~FrameBuilder() = default;
-
-FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height)
-    : scene_(s), runs_(runs), fps_(fps), clock_(scene::frame_clock(s, fps)), width_(width), height_(height) {
-  const int n = std::max<int>(1, static_cast<int>(runs.size()));
-  columns_ = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  rows_ = (n + columns_ - 1) / columns_;
-  // Explanatory views: the label size of the text roles (in proportion to the frame).
-  font_px_ = s.render.explain.views.empty() ? std::clamp(static_cast<float>(height) / rows_ / 24.0f, 11.0f, 18.0f)
-                                            : viz::text_px(viz::TextRole::label, height);
-  const scene::DrawConfig& d = s.render.draw;
-  draw_ = draw_options(d);
-  for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, d.particles));
-  const double aspect = (static_cast<double>(width) / columns_) / (static_cast<double>(height) / rows_);
-  camera_ = scene_camera(s, runs, aspect);
+WorldViews::WorldViews(const scene::Scene& s, const std::vector<scene::Run>& runs, const scene::FrameClock& clock,
+                       float font_px)
+    : scene_(s), runs_(runs), clock_(clock), font_px_(font_px), draw_(s.render.draw) {
+  for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, draw_.particles));
   // Trails see every frame from t = 0, so a frame range draws what a full run does.
   trails_.resize(runs.size());
   if (draw_.trail_seconds > 0)
@@ -309,15 +170,13 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, 
       for (size_t j = 0; j < runs[r].path.size(); ++j)
         trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
   grid_ = ground_grid(s, runs);
-  if (!s.render.explain.views.empty() || !s.render.explain.captions.empty() || s.render.explain.title.hold > 0)
-    explain_ = std::make_unique<ExplainViews>(*this, s, runs, width, height);
 }
 
-viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& camera, int width_px,
-                                   int height_px, float top_px, std::optional<std::size_t> only_body) const {
+viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
+                           float top_px, std::optional<std::size_t> only_body) const {
   const double t = clock_.time(k);
   const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
-  const Run& run = runs_[r];
+  const scene::Run& run = runs_[r];
   viz::View v;
   v.camera = camera;
   v.label = runs_.size() > 1 ? run.label : "";
@@ -353,27 +212,4 @@ viz::View FrameBuilder::world_view(std::size_t r, long k, const viz::Camera& cam
   return v;
 }
 
-viz::DrawList FrameBuilder::build(long k) const {
-  viz::DrawList dl;
-  const Eigen::Vector3d& bg = scene_.render.output.background;
-  dl.background = rgba(bg, 1.0f);
-  dl.columns = columns_;
-  const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
-  if (explain_ && explain_->title_card(dl, k)) return dl;  // the animation waits
-  if (explain_ && !scene_.render.explain.views.empty()) {
-    explain_->add_views(dl, k);
-  } else {
-    for (size_t r = 0; r < runs_.size(); ++r)
-      dl.views.push_back(world_view(r, k, camera_, width_ / columns_, height_ / rows_));
-  }
-  if (scene_.render.draw.legend && scene_.render.draw.axes) {
-    std::string legend = "principal axes:  red = smallest moment   green = intermediate   blue = largest";
-    if (draw_.angular_momentum) legend += "   orange = L";
-    if (draw_.omega) legend += "   purple = omega";
-    dl.texts.push_back({legend, {12.0f, static_cast<float>(height_) - 26.0f}, 15.0f, ink});
-  }
-  if (explain_) explain_->add_text(dl, k);
-  return dl;
-}
-
-}  // namespace tumble::run
+}  // namespace tumble::compose

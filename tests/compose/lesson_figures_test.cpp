@@ -10,7 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "scene/frame_runs.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
 #include "viz/draw_list.hpp"
@@ -19,8 +20,8 @@
 namespace {
 
 namespace fs = std::filesystem;
-using tumble::run::FrameBuilder;
-using tumble::run::simulate_runs;
+using tumble::compose::FrameBuilder;
+using tumble::scene::simulate_runs;
 
 std::vector<fs::path> sphere_scenes() {
   std::vector<fs::path> out;
