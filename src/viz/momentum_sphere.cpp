@@ -88,14 +88,6 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   return out;
 }
 
-SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
-  // Σ Π_i²/I_i = 2E in units of |L|: semi-axes √(2E I_i)/|L|, the principal axes its own.
-  const glm::dvec3 semi(std::sqrt(two_E * I[0]) / L, std::sqrt(two_E * I[1]) / L, std::sqrt(two_E * I[2]) / L);
-  SurfaceItem s = ellipsoid({0, 0, 0}, glm::dmat3(1.0), semi, color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha));
-  return s;  // unnamed: a key may cover its caps (keep_clear), never the sphere
-
-}
-
 float sphere_shift_room(float width_px, float height_px) {
   // |L| is the height's 1/(2 kSphereReach) (fov: ±kSphereReach |L|); the axis labels, at
   // kAxisLabelReach and about 6 % of the height wide, stay inside with a 2 % margin.

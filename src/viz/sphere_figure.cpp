@@ -16,7 +16,7 @@ namespace {
 glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 void refine(const std::function<Eigen::Vector3d(double)>& at, double t0, const Eigen::Vector3d& p0, double t1,
-            const Eigen::Vector3d& p1, double tol, int depth, std::vector<Eigen::Vector3d>& out) {
+            const Eigen::Vector3d& p1, double tol, int depth, std::vector<double>& out) {
   const double tm = 0.5 * (t0 + t1);
   const Eigen::Vector3d pm = at(tm);
   if (depth < 10 && ((pm - 0.5 * (p0 + p1)).norm() > tol || (p1 - p0).norm() > 30 * tol)) {
@@ -24,7 +24,7 @@ void refine(const std::function<Eigen::Vector3d(double)>& at, double t0, const E
     refine(at, tm, pm, t1, p1, tol, depth + 1, out);
     return;
   }
-  out.push_back(p1);
+  out.push_back(t1);
 }
 
 // The faint look of what lies behind the ball: a third of the colour's opacity.
@@ -44,17 +44,24 @@ glm::dvec3 near_side(const glm::dvec3& eye, const glm::dvec3& p, double r) {
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(double)>& at,
-                                           const std::vector<double>& params, double tolerance) {
-  std::vector<Eigen::Vector3d> out;
+std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>& at, const std::vector<double>& params,
+                                   double tolerance) {
+  std::vector<double> out;
   if (params.empty()) return out;
+  out.push_back(params[0]);
   Eigen::Vector3d prev = at(params[0]);
-  out.push_back(prev);
   for (std::size_t i = 1; i < params.size(); ++i) {
     const Eigen::Vector3d next = at(params[i]);
     refine(at, params[i - 1], prev, params[i], next, tolerance, 0, out);
     prev = next;
   }
+  return out;
+}
+
+std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(double)>& at,
+                                           const std::vector<double>& params, double tolerance) {
+  std::vector<Eigen::Vector3d> out;
+  for (double t : refined_params(at, params, tolerance)) out.push_back(at(t));
   return out;
 }
 

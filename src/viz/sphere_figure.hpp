@@ -21,6 +21,10 @@ namespace tumble::viz {
 std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(double)>& at,
                                            const std::vector<double>& params, double tolerance);
 
+/// The parameters refined_curve would draw `at` at.
+std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>& at, const std::vector<double>& params,
+                                   double tolerance);
+
 /// Where the ±e_i labels go: 1.6 |L| from the centre, past the axes' ends (1.45).
 inline constexpr double kAxisReach = 1.45, kAxisLabelReach = 1.6;
 
