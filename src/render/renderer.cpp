@@ -289,8 +289,12 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
                          const glm::vec3& background) {
   set_viewport(rect);
   draw_background(background);
+  // The 3D passes see and are clipped to the content rectangle; the text the whole view.
+  const PixelRect content = compose::content_rect(view, rect);
+  if (content.width <= 0 || content.height <= 0) return draw_text(view.texts, view.label, rect);
+  set_viewport(content);
 
-  const CameraMatrices cam = compose::camera_matrices(view.camera, rect.aspect());
+  const CameraMatrices cam = compose::camera_matrices(view.camera, content.aspect());
   const glm::mat4 view_proj = cam.proj * cam.view;
   const ViewBatches batches = build_view_batches(view);
 
@@ -303,7 +307,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   gl_.DepthMask(GL_TRUE);
 
   surfaces_.draw(view.surfaces, cam.view, cam.proj, kLightDir);
-  spheres_.draw(view.particles, view.camera, cam.view, cam.proj, rect.height, sphere_shading());
+  spheres_.draw(view.particles, view.camera, cam.view, cam.proj, content.height, sphere_shading());
   // A solid of particles or an opaque mesh hides the arrows inside it: show
   // them faintly (a translucent surface alone, the momentum sphere's energy
   // ellipsoid, hides nothing, and its opaque ball must keep hiding the far side).
@@ -321,6 +325,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   surfaces_.draw_translucent(view.surfaces, cam.view, cam.proj, kLightDir);
 
   gl_.Disable(GL_DEPTH_TEST);
+  set_viewport(rect);
   draw_text(view.texts, view.label, rect);
 }
 

@@ -227,6 +227,12 @@ void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
       if (*pos == "top") c.position = CaptionPosition::top;
       else if (*pos != "bottom") r.error("position", "expected \"bottom\" or \"top\", found " + quote_token(*pos));
     }
+    // The captions share one strip across the frame: they agree where it is.
+    const auto& before = s.render.explain.captions;
+    if (!before.empty() && before.front().position != c.position)
+      r.error("position", "every caption shares one strip: captions[0] puts it at the " +
+                              std::string(before.front().position == CaptionPosition::top ? "top" : "bottom") +
+                              "; give each caption the same position");
     s.render.explain.captions.push_back(std::move(c));
   }
 }

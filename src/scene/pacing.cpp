@@ -52,12 +52,11 @@ void check_pacing(TableReader& root, LoadContext& ctx, const Scene& scene) {
     for (std::size_t j = 0; j < i; ++j) {
       const Caption& o = captions[j];
       const double oa = clock.video_time(o.start), ob = clock.video_time_last(o.end);
-      if (o.position == c.position && a < ob && oa < b)
+      if (a < ob && oa < b)
         ctx.diag.warning(where(i, "start"), "captions[" + std::to_string(i) + "].start",
-                         "shown at the same time and place as captions[" + std::to_string(j) + "] (video " +
+                         "shown at the same time as captions[" + std::to_string(j) + "] (video " +
                              seconds(std::max(a, oa)) + " to " + seconds(std::min(b, ob)) +
-                             "), so one hides the other; end the first before the second starts, or give one "
-                             "position = \"top\"");
+                             ") in the one caption strip, so one hides the other; end the first before the second starts");
     }
   }
 }

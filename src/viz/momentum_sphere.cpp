@@ -100,6 +100,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const double L = in.momentum.norm();
   view.name = "momentum_sphere";
   view.camera = sphere_camera(in.pose, in.camera);
+  if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
   if (in.key) {
     const float size = text_px(TextRole::key, in.frame_h);

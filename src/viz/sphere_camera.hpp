@@ -35,8 +35,8 @@ struct SphereCameraSettings {
   double reach = 1.5;          ///< half the view's height, in |L| (the momentum sphere: its axis labels)
 };
 
-/// Half the momentum sphere view's height, |L|: its axes (1.45) and their labels (1.6) fit.
-inline constexpr double kSphereReach = 1.75;
+/// Half the momentum sphere view's height, |L|: its axes (1.5) and their labels fit.
+inline constexpr double kSphereReach = 1.85;
 
 /// The momentum sphere's default camera, a fixed textbook view for a body
 /// whose Π starts at `pi0` (principal moments `inertia`, ascending): it looks
@@ -52,6 +52,10 @@ std::vector<SpherePose> follow_track(const std::vector<double>& t, const std::ve
 
 /// The camera at `pose` (follow) or at the fixed direction (no follow).
 Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s);
+
+/// The vertical field of view, degrees, that shows a ball of `radius` around
+/// `c`'s target whole in a rectangle of `aspect` (width / height).
+double fov_for_ball(const Camera& c, double radius, double aspect);
 
 /// True when the segment from `eye` to `p` passes through the ball of radius
 /// `r` at the origin (p itself outside it): p is hidden behind the ball.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "viz/captions.hpp"
+#include "viz/momentum_sphere.hpp"
 #include "viz/palette.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/sphere_camera.hpp"
@@ -65,28 +66,77 @@ std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(d
   return out;
 }
 
+namespace {
+
+// Whether `box` lies on one of the six half-axes as `project` draws them (the
+// + arrows thickened by their heads' `head_px`).
+bool on_an_axis(const ViewportProjection& project, const Box& box, float head_px) {
+  glm::vec2 base, tip;
+  if (!project(glm::dvec3(0), base)) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int sign : {1, -1}) {
+      glm::dvec3 e(0);
+      e[i] = sign * kAxisReach;
+      if (!project(e, tip)) continue;
+      for (int s = 0; s <= 24; ++s) {
+        const glm::vec2 p = base + (tip - base) * (static_cast<float>(s) / 24);
+        const float r = s == 24 && sign > 0 ? head_px + 1 : 2.5f;
+        if (p.x + r > box.x0 && p.x - r < box.x1 && p.y + r > box.y0 && p.y - r < box.y1) return true;
+      }
+    }
+  return false;
+}
+
+}  // namespace
+
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px) {
   static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
   static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
   const ViewportProjection project(view.camera, width_px, height_px);
+  // The sphere's radius on screen (a perspective silhouette is a little wider than |L|).
+  glm::vec2 c0, c1;
+  const glm::dvec3 side = glm::normalize(glm::cross(view.camera.target - view.camera.position, view_up(view.camera)));
+  const float ball_px = project(glm::dvec3(0), c0) && project(1.06 * side, c1) ? glm::length(c1 - c0) : 0.0f;
+  float head_px = 0;
   for (int i = 0; i < 3; ++i) {
     glm::dvec3 e(0);
     e[i] = kAxisReach;
     view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
     view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.75f), 2.0f, false});
+    glm::vec2 tip, head;
+    if (project(e, tip) && project(e + 0.029 * glm::normalize(view.camera.up), head))
+      head_px = std::max(head_px, glm::length(head - tip));
+  }
+  for (int i = 0; i < 3; ++i)
     for (int sign : {1, -1}) {
-      const glm::dvec3 tip = e * (sign * kAxisLabelReach / kAxisReach);
-      glm::vec2 px;
-      if (hidden_by_ball(view.camera.position, tip, 1.0) || !project(tip, px)) continue;
+      glm::dvec3 end(0);
+      end[i] = sign * kAxisReach;
+      glm::vec2 tip, base;
+      if (hidden_by_ball(view.camera.position, end, kSphereBall) || !project(end, tip) || !project(glm::dvec3(0), base))
+        continue;
       TextItem t{sign > 0 ? kPlus[i] : kMinus[i], {0, 0}, label_px, kAxisColors[i]};
-      t.position_px = {centred_x(t.text, label_px, px.x), px.y - 0.5f * label_px};
+      const InkSpan ink = text_ink(t.text, label_px);
+      const glm::vec2 along = tip - base;
+      const float len = glm::length(along);
+      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : glm::vec2(0, -1);
+      // An end in front of the ball: its label at the ball's rim, off the curves on it.
+      const glm::vec2 from = len < ball_px ? base + ball_px * d0 : tip;
+      const float past = sign > 0 ? head_px : 1.0f;
+      // Along the axis as drawn, else turned a little at a time until clear of the axes.
+      for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f}) {
+        const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
+        const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.25f * label_px;
+        const glm::vec2 centre = from + reach * d;
+        t.position_px = {centred_x(t.text, label_px, centre.x), centre.y - 0.5f * label_px};
+        if (!on_an_axis(project, text_box(t), head_px)) break;
+      }
+      // Pushed back inside the view where it would leave it (a narrow view, an axis along its edge).
       const Box b = text_box(t);
-      if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px)
-        continue;  // out of the view: the other end is in it
+      t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - width_px);
+      t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - height_px);
       t.name = std::string(sign > 0 ? "axis_label_e" : "axis_label_-e") + char('1' + i);
       view.texts.push_back(std::move(t));
     }
-  }
 }
 
 void add_saddles(View& view) {

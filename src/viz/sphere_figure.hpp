@@ -25,12 +25,14 @@ std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(d
 std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>& at, const std::vector<double>& params,
                                    double tolerance);
 
-/// Where the ±e_i labels go: 1.6 |L| from the centre, past the axes' ends (1.45).
-inline constexpr double kAxisReach = 1.45, kAxisLabelReach = 1.6;
+/// The axes' ends, |L| from the centre, and how far out their labels reach (about).
+inline constexpr double kAxisReach = 1.5, kAxisLabelReach = 1.65;
 
 /// Adds the axes through the sphere (+e_i arrows, −e_i lines) and a label at
-/// each end the ball does not hide and the view shows: "e₁" named
-/// axis_label_e1, "−e₁" named axis_label_-e1, and so on.
+/// each end the ball does not hide and the view shows ("e₁" named
+/// axis_label_e1, "−e₁" named axis_label_-e1, ...): just past the end on
+/// screen, along the axis as drawn (at the ball's rim when the axis points at
+/// the camera), turned until it is clear of the six half-axes.
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px);
 
 /// The saddles ±e₂ (points named saddle_+e2, saddle_-e2) on the unit sphere.

@@ -74,10 +74,10 @@ bool is_label(const TextItem& t);
 /// other text, backdrop, named point (the Π dot, ± 3 % of the view's height)
 /// or earlier label, nor any of `also_clear` (e.g. the frame's captions, in
 /// the view's pixels), and stays inside the view; a label with no such place is
-/// left out. A label with a subject (TextItem::subject_px, a body's box) is
-/// tried around it (above, below, right, left, then the corners, stepping
-/// out) and also keeps clear of every body's box and arrow; others move up
-/// or down by up to two lines, then sideways.
+/// left out. Every label keeps clear of every body's box and arrow. A label
+/// with a subject (TextItem::subject_px, a body's box) is tried around it
+/// (above, below, right, left, then the corners, stepping out); others move
+/// up or down by up to two lines, then sideways.
 void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
 
 /// The box `points` cover as `camera` sees them in a width × height view,

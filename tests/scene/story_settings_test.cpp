@@ -75,8 +75,10 @@ text = "Two."
 )";
   const Scene s = load(two);
   ASSERT_EQ(count_with(s.warnings, "captions[1].start"), 1u);
-  EXPECT_NE(s.warnings[0].find("same time and place as captions[0]"), std::string::npos) << s.warnings[0];
-  EXPECT_EQ(count_with(load(two + "position = \"top\"\n").warnings, "captions[1].start"), 0u);
+  EXPECT_NE(s.warnings[0].find("same time as captions[0]"), std::string::npos) << s.warnings[0];
+  // One caption strip: the captions agree on where it is.
+  EXPECT_NE(error_of(two + "position = \"top\"\n").find("story.toml:21:12: error: captions[1].position: every caption shares one strip"),
+            std::string::npos) << error_of(two + "position = \"top\"\n");
 }
 
 TEST(Holds, TheAnimationStopsAtTheEventForTheHold) {
