@@ -79,11 +79,11 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
       {Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "\u00b1e\u2081 \u00b1e\u2082 \u00b1e\u2083: I\u2081 < I\u2082 < I\u2083"}};
   if (in.momentum.norm() <= 0) return out;  // only the axes are drawn
   out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L in body axes"));
-  out.push_back(key_entry(Meaning::polhode, "polhode (\u03a0's path), arrows: its way"));
+  out.push_back(key_entry(Meaning::polhode, "polhode (arrows: \u03a0's way)"));
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
-  out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082 (unstable)"});
+  out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});
   out.push_back(key_entry(Meaning::other_levels, "other energies"));
   return out;
 }
