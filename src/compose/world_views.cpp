@@ -137,8 +137,7 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& r
 
 viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& runs) {
   // Fixed for the whole video: below the lowest any body comes, centred
-  // under where the bodies go, wide enough for all of it (0.5 m squares, or
-  // finer for small bodies).
+  // under where the bodies go, wide enough for all of it.
   double zmin = 1e300, size = 0;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
   for (const scene::Run& r : runs)
@@ -151,9 +150,11 @@ viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& 
         size = std::max(size, rad);
       }
   if (zmin > 1e299) return {{0, 0, 0}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}};
-  const double spacing = std::clamp(std::pow(10.0, std::floor(std::log10(std::max(size, 1e-6)))), 1e-3, 0.5);
-  const double reach = 0.5 * (hi - lo).head<2>().norm() + 6 * size;
-  const int half = static_cast<int>(std::clamp(std::ceil(reach / spacing), 4.0, 200.0));
+  // About ten squares across where the bodies go: 1, 2 or 5 times a power of ten, m.
+  const double reach = 0.5 * (hi - lo).head<2>().norm() + 4 * size;
+  const double rough = reach / 5, decade = std::pow(10.0, std::floor(std::log10(std::max(rough, 1e-6))));
+  const double spacing = rough >= 5 * decade ? 5 * decade : rough >= 2 * decade ? 2 * decade : decade;
+  const int half = static_cast<int>(std::clamp(std::ceil(3 * reach / spacing), 8.0, 40.0));  // it fades out at its rim
   const Eigen::Vector3d mid = 0.5 * (lo + hi);
   return {{spacing * std::round(mid.x() / spacing), spacing * std::round(mid.y() / spacing), zmin}, spacing, half,
           {0.5f, 0.52f, 0.58f, 0.5f}};
