@@ -65,4 +65,7 @@ struct FramePlan {
 
 FramePlan plan_frame(const FrameNeeds& needs);
 
+/// How notes name view i: "view 1 ('Π on the sphere')".
+std::string view_name(std::size_t i, const std::string& title);
+
 }  // namespace tumble::compose
