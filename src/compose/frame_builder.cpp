@@ -72,6 +72,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     ViewNeeds v;
     if (!views.empty()) v.viewport = views[i].viewport;
+    v.kind = panels_[i]->name();
     v.title = titles_[i];
     v.overlay_lines = panels_[i]->overlay_lines();
     v.key = panels_[i]->key();
@@ -104,7 +105,7 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   const viz::Box& c = p.content;
   // Labels settle inside the content rectangle, clear of its other text; then move with it into the view.
   for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0))
-    notes.push_back(view_name(i, titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
+    notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
                     "the view's other text, bodies, arrows and curves");
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);

@@ -20,7 +20,7 @@ std::string px(float v) {
   return s;
 }
 
-std::string view_name(std::size_t i, const ViewNeeds& v) { return compose::view_name(i, v.title); }
+std::string view_name(std::size_t i, const ViewNeeds& v) { return compose::view_name(i, v.kind, v.title); }
 
 // The caption strip: as tall as the longest caption wraps (viz::caption_items
 // places each inside it), the speed badge at its right.
@@ -127,8 +127,8 @@ void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float p
 
 }  // namespace
 
-std::string view_name(std::size_t i, const std::string& title) {
-  return "view " + std::to_string(i) + (title.empty() ? "" : " ('" + title + "')");
+std::string view_name(std::size_t i, const std::string& kind, const std::string& title) {
+  return "view " + std::to_string(i) + " (" + kind + (title.empty() ? "" : ", '" + title + "'") + ")";
 }
 
 FramePlan plan_frame(const FrameNeeds& n) {
