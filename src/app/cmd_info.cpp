@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_info.hpp"
+#include "compose/layout_notes.hpp"
 #include "core/format.hpp"
 #include "io/json.hpp"
 #include "scene/events.hpp"
@@ -92,7 +93,7 @@ std::string frames_text(const scene::Scene& s) {
   return o.str();
 }
 
-std::string to_json(const scene::Scene& s) {
+io::Json to_json(const scene::Scene& s) {
   io::Json bodies = io::Json::array();
   for (const scene::Body& b : s.bodies) {
     const BodyInfo i = world_info(b);
@@ -116,7 +117,7 @@ std::string to_json(const scene::Scene& s) {
   io::Json times = io::Json::array();
   for (long k = 0; k < clock.count(); ++k) times.push_back(clock.time(k));
   io::Json frames{{"count", clock.count()}, {"fps", clock.fps()}, {"hold", clock.hold()}, {"times", std::move(times)}};
-  return io::json_text(io::Json{{"bodies", std::move(bodies)}, {"frames", std::move(frames)}});
+  return io::Json{{"bodies", std::move(bodies)}, {"frames", std::move(frames)}};
 }
 
 std::string to_text(const scene::Scene& s) {
@@ -163,9 +164,25 @@ std::string to_text(const scene::Scene& s) {
   return o.str();
 }
 
+// What the layout leaves out of which frames at the scene's size (as `tumble render` would warn).
+std::string layout_text(const std::vector<std::string>& notes, const scene::Scene& s) {
+  std::string o = "\nlayout at " + std::to_string(s.render.output.width) + "x" +
+                  std::to_string(s.render.output.height) + " (every frame, as `tumble render` composes it)\n";
+  if (notes.empty()) return o + "  nothing left out\n";
+  for (const std::string& n : notes) o += "  " + n + "\n";
+  return o;
+}
+
 int run_info(const InfoOptions& o) {
   const scene::Scene s = load_scene_verbose(o.scene);
-  std::cout << (o.json ? to_json(s) : to_text(s));
+  const std::vector<std::string> notes = compose::check_layout(s).lines();
+  if (o.json) {
+    io::Json j = to_json(s);
+    j["layout"] = {{"width", s.render.output.width}, {"height", s.render.output.height}, {"notes", notes}};
+    std::cout << io::json_text(j);
+  } else {
+    std::cout << to_text(s) << layout_text(notes, s);
+  }
   return kOk;
 }
 

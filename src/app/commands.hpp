@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -47,10 +48,22 @@ void add_golden_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_methods_command(CLI::App& app, Action& action);
 void add_export_command(CLI::App& app, Action& action);
+void add_storyboard_command(CLI::App& app, Action& action);
 
 /// The README's "Integration methods" table (markdown), one row per row of
 /// core's method table: name, order, description.
 std::string methods_markdown();
+
+/// The options that are scene keys ([output] width, height, fps, aa, msaa),
+/// shared by `render` and `storyboard`: they go into the scene before it is
+/// validated, so the loader's checks cover them too.
+struct FrameOverrides {
+  std::optional<int> width, height, msaa;
+  std::optional<double> fps;
+  std::string aa;
+};
+std::vector<scene::Override> frame_overrides(const FrameOverrides& o);
+void add_frame_override_options(CLI::App* cmd, FrameOverrides& o);
 
 /// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
 /// naming the option for an unknown name, so it fails before any work.

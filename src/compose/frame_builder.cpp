@@ -73,6 +73,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     ViewNeeds v;
     if (!views.empty()) v.viewport = views[i].viewport;
+    v.kind = panels_[i]->name();
     v.title = titles_[i];
     v.overlay_lines = panels_[i]->overlay_lines();
     v.key = panels_[i]->key();
@@ -103,12 +104,14 @@ std::string FrameBuilder::legend() const {
   return legend;
 }
 
-viz::View FrameBuilder::view_at(std::size_t i, long k) const {
+viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>& notes) const {
   const ViewPlan& p = plan_.views[i];
   viz::View v = panels_[i]->content(k);
   const viz::Box& c = p.content;
   // Labels settle inside the content rectangle, clear of its other text; then move with it into the view.
-  viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0);
+  for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0))
+    notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
+                    "the view's other text, bodies, arrows and curves");
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);
   v.viewport = p.viewport;
@@ -123,16 +126,25 @@ viz::View FrameBuilder::view_at(std::size_t i, long k) const {
   return v;
 }
 
-void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
+std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) const {
   const scene::FrameClock& clock = world_.clock();
   const double tau = static_cast<double>(k) / clock.fps();  // video time
+  std::vector<std::pair<std::size_t, float>> out;
+  const auto& captions = scene_.render.explain.captions;
+  for (std::size_t i = 0; i < captions.size(); ++i) {
+    // Up from the first frame showing `start` to the last showing `end` (through a hold there).
+    const float a = viz::fade_alpha(tau, clock.video_time(captions[i].start), clock.video_time_last(captions[i].end));
+    if (a > 0) out.emplace_back(i, a);
+  }
+  return out;
+}
+
+void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
+  const scene::FrameClock& clock = world_.clock();
   const double rate = clock.rate(k);
   const glm::vec2 shift{0, plan_.caption_shift};
-  for (const scene::Caption& c : scene_.render.explain.captions) {
-    // Up from the first frame showing `start` to the last showing `end` (through a hold there).
-    const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time_last(c.end));
-    if (a <= 0) continue;
-    for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, plan_.badge_side)) {
+  for (const auto& [i, a] : captions_at(k)) {
+    for (viz::TextItem& t : viz::caption_items(scene_.render.explain.captions[i].text, a, width_, height_, plan_.badge_side)) {
       move_text(t, shift);
       dl.texts.push_back(std::move(t));
     }
@@ -149,7 +161,6 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
     dl.texts.push_back({viz::wrap_text(legend(), plan_.legend_px, static_cast<float>(width_) - 2 * pad),
                         {pad, plan_.legend.y0 + pad}, plan_.legend_px, kInk, "legend"});
   }
-  dl.notes = plan_.notes;
 }
 
 bool FrameBuilder::title_card(viz::DrawList& dl, long k) const {
@@ -168,10 +179,11 @@ viz::DrawList FrameBuilder::build(long k) const {
   const Eigen::Vector3d& bg = scene_.render.output.background;
   dl.background = {static_cast<float>(bg.x()), static_cast<float>(bg.y()), static_cast<float>(bg.z()), 1.0f};
   if (title_card(dl, k)) return dl;  // the animation waits
+  dl.notes = plan_.notes;
   const double t = world_.clock().time(k);
   const auto& views = scene_.render.explain.views;
   for (std::size_t i = 0; i < panels_.size(); ++i)
-    if (views.empty() || t >= views[i].appear) dl.views.push_back(view_at(i, k));  // revealed in order, in their room
+    if (views.empty() || t >= views[i].appear) dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
   add_frame_text(dl, k);
   return dl;
 }

@@ -20,9 +20,7 @@ std::string px(float v) {
   return s;
 }
 
-std::string view_name(std::size_t i, const ViewNeeds& v) {
-  return "view " + std::to_string(i) + (v.title.empty() ? "" : " ('" + v.title + "')");
-}
+std::string view_name(std::size_t i, const ViewNeeds& v) { return compose::view_name(i, v.kind, v.title); }
 
 // The caption strip: as tall as the longest caption wraps (viz::caption_items
 // places each inside it), the speed badge at its right.
@@ -104,7 +102,7 @@ void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float p
   if (v.key.empty()) return;
   vp.key_px = viz::text_px(viz::TextRole::key, frame_h);
   if (vp.key_px < viz::kMinKeyPx) {
-    notes.push_back(view_name(i, v) + ": key left out in every frame: its text would be " + px(vp.key_px) +
+    notes.push_back(view_name(i, v) + ": key left out: its text would be " + px(vp.key_px) +
                     " high, under the " + px(viz::kMinKeyPx) + " a key needs to be read");
     return;
   }
@@ -121,13 +119,17 @@ void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float p
     vp.content.y1 = vp.key_at->y - pad;
     return;
   }
-  notes.push_back(view_name(i, v) + ": key left out in every frame: it is " + px(ks.x) + " × " + px(ks.y) +
+  notes.push_back(view_name(i, v) + ": key left out: it is " + px(ks.x) + " × " + px(ks.y) +
                   "; beside the content it would leave " + px(std::max(0.0f, beside_w)) + " of the view's " + px(w) +
                   " width, below it " + px(std::max(0.0f, below_h)) + " of its " + px(h - top) +
                   " height (a key needs the content to keep " + std::to_string(int(kMinContentShare * 100)) + " %)");
 }
 
 }  // namespace
+
+std::string view_name(std::size_t i, const std::string& kind, const std::string& title) {
+  return "view " + std::to_string(i) + " (" + kind + (title.empty() ? "" : ", '" + title + "'") + ")";
+}
 
 FramePlan plan_frame(const FrameNeeds& n) {
   FramePlan p;

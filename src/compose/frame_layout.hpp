@@ -21,6 +21,7 @@ namespace tumble::compose {
 /// What the layout needs to know of one view.
 struct ViewNeeds {
   std::optional<std::array<double, 4>> viewport;  ///< x, y, w, h: fractions of the views' area; none: a grid cell
+  std::string kind;                                ///< its kind's name ("world", "plot", ...), for notes
   std::string title;
   int overlay_lines = 0;                           ///< lines under the title (the overlay)
   std::vector<viz::KeyEntry> key;                  ///< its key (none: no key strip)
@@ -64,5 +65,8 @@ struct FramePlan {
 };
 
 FramePlan plan_frame(const FrameNeeds& needs);
+
+/// How notes name view i: "view 1 (momentum_sphere, 'Π on the sphere')".
+std::string view_name(std::size_t i, const std::string& kind, const std::string& title);
 
 }  // namespace tumble::compose

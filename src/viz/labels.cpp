@@ -98,12 +98,12 @@ std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
 
 }  // namespace
 
-void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
+std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());
   const bool labels = std::any_of(view.texts.begin(), view.texts.end(), is_label);
   const std::vector<Box> solid = labels ? solid_obstacles(view, width_px, height_px) : std::vector<Box>{};
-  std::vector<TextItem> kept;
+  std::vector<TextItem> kept, left_out;
   for (TextItem& t : view.texts) {
     if (!is_label(t)) {
       kept.push_back(std::move(t));
@@ -115,6 +115,7 @@ void settle_labels(View& view, float width_px, float height_px, const std::vecto
     const glm::vec2 size{at.x1 - at.x0, at.y1 - at.y0};
     const bool subject = has_subject(t);
     const Box own{t.subject_px.x, t.subject_px.y, t.subject_px.z, t.subject_px.w};
+    bool placed = false;
     for (const glm::vec2 p : subject ? around(t.subject_px, size, gap) : nearby(t.position_px, size, t.size_px)) {
       const Box b{p.x, p.y, p.x + size.x, p.y + size.y};
       if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
@@ -125,10 +126,13 @@ void settle_labels(View& view, float width_px, float height_px, const std::vecto
       t.position_px = p;
       taken.push_back(b);
       kept.push_back(std::move(t));
+      placed = true;
       break;
     }
+    if (!placed) left_out.push_back(std::move(t));
   }
   view.texts = std::move(kept);
+  return left_out;
 }
 
 }  // namespace tumble::viz

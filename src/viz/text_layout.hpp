@@ -77,8 +77,8 @@ bool is_label(const TextItem& t);
 /// left out. Every label keeps clear of every body's box and arrow. A label
 /// with a subject (TextItem::subject_px, a body's box) is tried around it
 /// (above, below, right, left, then the corners, stepping out); others move
-/// up or down by up to two lines, then sideways.
-void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
+/// up or down by up to two lines, then sideways. Returns the labels left out.
+std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
 
 /// The box `points` cover as `camera` sees them in a width × height view,
 /// grown by `pad_px` and clipped to the view; nullopt when none of it shows.
