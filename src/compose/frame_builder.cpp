@@ -76,7 +76,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     v.kind = panels_[i]->name();
     v.title = titles_[i];
     v.overlay_lines = panels_[i]->overlay_lines();
-    v.key = panels_[i]->key();
+    if (views.empty() || views[i].key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
     v.edge_to_edge = !views.empty() && views[i].kind == scene::ViewKind::plot;
     needs.views.push_back(std::move(v));
   }

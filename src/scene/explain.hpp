@@ -71,6 +71,7 @@ struct ViewConfig {
   std::string title;                ///< drawn in the view's corner
   ViewCamera camera;
   bool energy_ellipsoid = true;     ///< momentum_sphere: the energy ellipsoid (when it fits)
+  bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")

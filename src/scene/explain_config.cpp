@@ -129,7 +129,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
-                  {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "appear"});
+                  {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "appear", "key"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -157,6 +157,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"w1", "w2", "w3"};
     read_view_camera(r, ctx, v);
     read_kind_options(r, v);
+    v.key = r.boolean("key").value_or(true);
     if (v.kind != ViewKind::plot && r.has("series")) r.error("series", "only a plot view has series");
     const std::size_t body = v.body.empty() || !s.find_body(v.body) ? 0 : static_cast<std::size_t>(s.find_body(v.body) - s.bodies.data());
     v.appear = read_time(r, "appear", s, body, &v.appear_text).value_or(0);

@@ -153,6 +153,7 @@ y_range = [-10, 10]
 [[views]]
 kind = "momentum_sphere"
 energy_ellipsoid = false
+key = false
 [[captions]]
 text = "Up here."
 position = "top"
@@ -165,6 +166,8 @@ position = "top"
   ASSERT_TRUE(v[1].y_range);
   EXPECT_EQ((*v[1].y_range)[0], -10);
   EXPECT_FALSE(v[2].energy_ellipsoid);
+  EXPECT_FALSE(v[2].key);
+  EXPECT_TRUE(v[1].key);
   EXPECT_EQ(s.render.explain.captions[0].position, CaptionPosition::top);
 }
 
