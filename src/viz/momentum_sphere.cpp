@@ -150,13 +150,8 @@ SurfaceItem energy_ellipsoid(const Eigen::Vector3d& I, double L, double two_E) {
   // Σ Π_i²/I_i = 2E in units of |L|: semi-axes √(2E I_i)/|L|, the principal axes its own.
   const glm::dvec3 semi(std::sqrt(two_E * I[0]) / L, std::sqrt(two_E * I[1]) / L, std::sqrt(two_E * I[2]) / L);
   SurfaceItem s = ellipsoid({0, 0, 0}, glm::dmat3(1.0), semi, color_of(Meaning::polhode, 0.22f));
-  return s;  // unnamed: a key may cover its caps (keep_clear), never the sphere
+  return s;
 
-}
-
-float sphere_shift_room(float width_px, float height_px) {
-  // The sphere's radius is a third of the height (fov: ±1.5 |L|); it keeps its side margin.
-  return std::max(0.0f, 0.5f * width_px - height_px / 3.0f - 0.02f * height_px);
 }
 
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
@@ -165,23 +160,11 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   view.name = "momentum_sphere";
   view.camera = sphere_camera(in.pose, in.camera);
   if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
-  const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
-  if (in.key) {
-    const float size = text_px(TextRole::key, in.frame_h);
-    const std::vector<KeyEntry> entries = sphere_key(in);
-    KeySpot spot;  // by default bottom-left, the sphere moved right by half the key's width so they part
-    const glm::vec2 k = key_size(entries, size);
-    spot.top_left = {0.5f * size, std::max(top, in.height_px - k.y - 0.5f * size)};
-    spot.shift_px = std::min(0.5f * k.x, sphere_shift_room(in.width_px, in.height_px));
-    if (in.key_spot) spot = *in.key_spot;
-    add_key(view, entries, spot.top_left, size);
-    shift_content(view, spot.shift_px, in.height_px);
-  }
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
   add_axes(view, in);
   if (L <= 0) return;
-  if (!in.outline_only && draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
+  if (draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
       PolylineItem p{{}, c, w, false, name};
@@ -192,14 +175,14 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // A family of levels spaced evenly in 2E between L²/I3 and L²/I1.
   const double lo = L * L / I[2], hi = L * L / I[0];
   constexpr int kLevels = 10;
-  for (int j = 1; j < kLevels && !in.outline_only; ++j) {
+  for (int j = 1; j < kLevels; ++j) {
     const double two_E = lo + (hi - lo) * j / kLevels;
     if (std::abs(two_E - L * L / I[1]) > 1e-3 * (hi - lo))
       add(polhodes(I, L, two_E, 96), color_of(Meaning::other_levels, 0.5f), 1.0f, "");
   }
   // The body's own polhode under the separatrix, which stays visible on top of it.
   add(polhodes(I, L, in.two_E, 192), color_of(Meaning::polhode, 0.9f), 2.0f, "polhode");
-  if (!in.outline_only) add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
+  add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 2.5f, "separatrix");
   PolylineItem path{{}, color_of(Meaning::momentum_point), 2.5f, true, "momentum_path"};
   for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
   if (path.points.size() >= 2) view.polylines.push_back(std::move(path));

@@ -108,17 +108,3 @@ Box text_box(const TextItem& t) {
 }
 
 }  // namespace tumble::viz
-
-namespace tumble::viz {
-
-float add_view_title(View& view, const std::string& title, float width_px, int frame_h) {
-  if (title.empty()) return 0;
-  const float size = text_px(TextRole::view_title, frame_h), pad = 0.5f * size;
-  TextItem t{wrap_text(title, size, width_px - 2 * pad), {pad, 0.35f * size}, size, color_of(Meaning::ink, 0.95f)};
-  t.name = "view_title";
-  const float bottom = text_box(t).y1 + 0.3f * size;
-  view.texts.push_back(std::move(t));
-  return bottom;
-}
-
-}  // namespace tumble::viz

@@ -67,7 +67,6 @@ class PoinsotPanel : public Panel {
     in.camera.azimuth_deg = c.azimuth_deg.value_or(in.camera.azimuth_deg);
     in.camera.elevation_deg = c.elevation_deg.value_or(in.camera.elevation_deg);
     in.camera.distance = c.distance.value_or(in.camera.distance);
-    in.key = false;  // the layout draws it, beside the content
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     viz::View v;
