@@ -90,4 +90,72 @@ Box add_key(View& view, const std::vector<KeyEntry>& entries, glm::vec2 top_left
   return box;
 }
 
+namespace {
+
+constexpr float kEntryGap = 1.6f;  // between entries in a row, in sizes
+
+float entry_width(const KeyEntry& e, float size_px) {
+  return swatch_width(e, size_px) + kGap * size_px + text_width(e.text, size_px);
+}
+
+// The swatches and text of one entry from pen x, line top y.
+void add_entry(std::vector<TextItem>& texts, const KeyEntry& e, float x, float y, float size_px) {
+  const float step = swatch_step(e.swatch, size_px);
+  for (std::size_t c = 0; c < e.colors.size(); ++c) {
+    TextItem swatch{swatch_glyphs(e.swatch), {x + step * static_cast<float>(c), y}, size_px, e.colors[c], "key_swatch"};
+    swatch.key = true;
+    texts.push_back(std::move(swatch));
+  }
+  TextItem text{e.text, {x + swatch_width(e, size_px) + kGap * size_px, y}, size_px, color_of(Meaning::ink), "key"};
+  text.key = true;
+  texts.push_back(std::move(text));
+}
+
+}  // namespace
+
+KeyRows key_rows(const std::vector<KeyEntry>& entries, float size_px, float max_width_px) {
+  KeyRows k;
+  const float room = max_width_px - 2 * kPad * size_px;
+  float row_w = 0, widest = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const float w = entry_width(entries[i], size_px);
+    if (k.rows.empty() || (row_w + kEntryGap * size_px + w > room && !k.rows.back().empty())) {
+      k.rows.emplace_back();
+      row_w = -kEntryGap * size_px;
+    }
+    row_w += kEntryGap * size_px + w;
+    widest = std::max(widest, row_w);
+    k.rows.back().push_back(i);
+  }
+  const float n = static_cast<float>(k.rows.size());
+  if (!k.rows.empty()) k.size = {widest + 2 * kPad * size_px, ((n - 1) * kLine + 1 + 2 * kPad) * size_px};
+  return k;
+}
+
+Box add_key_row(std::vector<TextItem>& texts, const std::vector<KeyEntry>& entries, float centre_x, float top,
+                float size_px, float max_width_px) {
+  const KeyRows k = key_rows(entries, size_px, max_width_px);
+  const Box box{centre_x - 0.5f * k.size.x, top, centre_x + 0.5f * k.size.x, top + k.size.y};
+  if (k.rows.empty()) return box;
+  const std::size_t first = texts.size();
+  for (std::size_t r = 0; r < k.rows.size(); ++r) {
+    float w = -kEntryGap * size_px;
+    for (std::size_t i : k.rows[r]) w += kEntryGap * size_px + entry_width(entries[i], size_px);
+    float x = centre_x - 0.5f * w;
+    const float y = top + (kPad + kLine * static_cast<float>(r)) * size_px;
+    for (std::size_t i : k.rows[r]) {
+      add_entry(texts, entries[i], x, y, size_px);
+      x += entry_width(entries[i], size_px) + kEntryGap * size_px;
+    }
+  }
+  // The whole key's backdrop, drawn before its first glyph.
+  texts[first].backdrop = {0.99f, 0.99f, 1.0f, 0.85f};
+  texts[first].backdrop_px = {box.x0, box.y0, box.x1, box.y1};
+  return box;
+}
+
+bool same_entry(const KeyEntry& a, const KeyEntry& b) {
+  return a.swatch == b.swatch && a.colors == b.colors && a.text == b.text;
+}
+
 }  // namespace tumble::viz

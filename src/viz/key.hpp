@@ -37,6 +37,23 @@ glm::vec2 key_size(const std::vector<KeyEntry>& entries, float size_px);
 /// px) and returns the backdrop's box.
 Box add_key(View& view, const std::vector<KeyEntry>& entries, glm::vec2 top_left, float size_px);
 
+/// A key laid out in rows across `max_width_px` (entries left to right, a
+/// new row when the next does not fit; each row centred): what
+/// key_row_lines and add_key_row share.
+struct KeyRows {
+  std::vector<std::vector<std::size_t>> rows;  ///< entry indices per row
+  glm::vec2 size{0};                           ///< the backdrop's size, px
+};
+KeyRows key_rows(const std::vector<KeyEntry>& entries, float size_px, float max_width_px);
+
+/// Adds the key in rows (key_rows) centred on `centre_x`, its backdrop's top
+/// at `top` (px of the texts' frame), to `texts`; returns the backdrop's box.
+Box add_key_row(std::vector<TextItem>& texts, const std::vector<KeyEntry>& entries, float centre_x, float top,
+                float size_px, float max_width_px);
+
+/// Whether two entries are the same (swatch, colours and text).
+bool same_entry(const KeyEntry& a, const KeyEntry& b);
+
 /// Keys need glyphs this tall, px, to be read at all: in a frame whose key
 /// text (2.4 % of its height) is smaller, below 334 px high, keys are left out.
 inline constexpr float kMinKeyPx = 8.0f;

@@ -1,6 +1,7 @@
 // Where labels go, decided GL-free from a view's draw list: a body's name
 // beside its body, clear of the view's text, the bodies, their arrows and Π.
 #include <algorithm>
+#include <cmath>
 
 #include "viz/captions.hpp"
 #include "viz/text_layout.hpp"
@@ -83,11 +84,15 @@ std::vector<glm::vec2> around(const glm::vec4& s, glm::vec2 size, float gap) {
   return out;
 }
 
-// Any other label near its place: up or down by up to two lines, then beside it.
+// Any other label near its place: up or down by up to two lines, then beside
+// it; then, as a last resort, a little further (an axis' end must keep its name).
 std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
   std::vector<glm::vec2> out;
   for (float dx : {0.0f, 0.7f, -0.7f})
     for (float dy : {0.0f, 1.1f, -1.1f, 2.2f, -2.2f}) out.push_back(at + glm::vec2(dx * size.x, dy * line));
+  for (float dx : {0.0f, 1.4f, -1.4f, 0.7f, -0.7f, 2.1f, -2.1f})
+    for (float dy : {3.3f, -3.3f, 1.1f, -1.1f, 0.0f})
+      if (std::abs(dx) > 1.0f || std::abs(dy) > 3.0f) out.push_back(at + glm::vec2(dx * size.x, dy * line));
   return out;
 }
 
