@@ -16,6 +16,7 @@ namespace {
 constexpr double kMargin = 0.04;  // of the content's half size, kept clear at each edge
 constexpr long kFitSamples = 240;  // frames looked at to fit the camera
 constexpr double kClosest = 0.1;   // a camera moves at most this much closer to fit
+constexpr double kFillMargin = 0.1;  // room around what a camera moved closer frames
 
 class WorldPanel : public Panel {
  public:
@@ -57,9 +58,10 @@ class WorldPanel : public Panel {
   // Room at the edges: the margin, and above and below a name label's line
   // (labels sit beside their bodies: above or below, or at their sides).
   Margins margins(glm::vec2 size) const {
-    if (!ctx_.scene.render.explain.labels) return kMargin;
+    const double m = closest() < 1 ? kFillMargin : kMargin;
+    if (!ctx_.scene.render.explain.labels) return m;
     const double line = 1.2 * 1.1 * ctx_.world.font_px();
-    return {kMargin, std::max(kMargin, line / (0.5 * std::max(size.y, 1.0f)))};
+    return {m, std::max(m, line / (0.5 * std::max(size.y, 1.0f)))};
   }
 
   viz::View content(long k) const override {
