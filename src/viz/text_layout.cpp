@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <sstream>
 
 #include "viz/captions.hpp"
 #include "viz/font_metrics.hpp"
@@ -33,6 +32,12 @@ InkSpan line_ink(std::string_view line, float size_px) {
 }
 
 float line_width(std::string_view line, float size_px) { return line_ink(line, size_px).width(); }
+
+// Where the spaces before the word at `i` of `para` start.
+std::size_t line_gap_start(std::string_view para, std::size_t i) {
+  while (i > 0 && para[i - 1] == ' ') --i;
+  return i;
+}
 
 }  // namespace
 
@@ -82,16 +87,21 @@ std::string wrap_text(std::string_view text, float size_px, float max_width_px) 
   std::size_t start = 0;
   while (true) {
     const std::size_t end = text.find('\n', start);
-    std::istringstream words{std::string(text.substr(start, end - start))};
-    std::string word, line;
-    while (words >> word) {
-      const std::string longer = line.empty() ? word : line + " " + word;
+    const std::string_view para = text.substr(start, end == std::string_view::npos ? end : end - start);
+    std::string line;
+    // Words keep the spaces written between them ("red = I1   green = I2"); a break drops them.
+    for (std::size_t i = para.find_first_not_of(' '); i != std::string_view::npos;) {
+      const std::size_t word_end = std::min(para.find(' ', i), para.size());
+      const std::size_t gap = i - line_gap_start(para, i);
+      const std::string word(para.substr(i, word_end - i));
+      const std::string longer = line.empty() ? word : line + std::string(gap, ' ') + word;
       if (!line.empty() && line_width(longer, size_px) > max_width_px) {
         out += line + "\n";
         line = word;
       } else {
         line = longer;
       }
+      i = para.find_first_not_of(' ', word_end);
     }
     out += line;
     if (end == std::string_view::npos) break;

@@ -38,6 +38,13 @@ TEST(TextLayout, WrapsAtTheWidthAndKeepsExplicitBreaks) {
   EXPECT_LE(text_width(w, 20), 250.0f);
   EXPECT_GE(text_lines(w), 3);
   EXPECT_NE(w.find("\nSecond line"), std::string::npos);
+  // Spaces written between words stay within a line (a legend's "   " between
+  // items); a break drops them, and none lead a line.
+  EXPECT_EQ(wrap_text("red = I1   green = I2", 20, 1000), "red = I1   green = I2");
+  const std::string legend = wrap_text("red = smallest moment   green = intermediate   blue = largest", 20, 300);
+  EXPECT_GE(text_lines(legend), 2);
+  EXPECT_EQ(legend.find("\n "), std::string::npos);
+  EXPECT_NE(legend.find("moment   green"), std::string::npos) << legend;
   // Widths follow DejaVu Sans drawn at the renderer's scale, where the size is
   // ascent − descent (2384 font units; an em is 2048): "H" advances 1540 units.
   EXPECT_NEAR(glyph_metrics(U'H').advance, 1540.0f / 2384.0f, 1e-4f);
