@@ -105,9 +105,9 @@ void add_compare_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "compare",
                                     "Compare two PNGs as golden images (exit 0 same, "
                                     "1 different, 2 bad input)", run_compare);
-  cmd->add_option("actual", o->a, "PNG (e.g. a new render)")->required();
-  cmd->add_option("expected", o->b, "PNG (e.g. the golden)")->required();
-  cmd->add_option("--diff", o->diff, "Write |actual - expected| x16 as a PNG");
+  cmd->add_option("actual", o->a, "PNG (e.g. a new render)")->required()->check(kPath);
+  cmd->add_option("expected", o->b, "PNG (e.g. the golden)")->required()->check(kPath);
+  cmd->add_option("--diff", o->diff, "Write |actual - expected| x16 as a PNG")->check(kPath);
   add_golden_tolerance_options(cmd, o->cmp);
 }
 

@@ -97,6 +97,7 @@ void step_rows(const SimulateOptions& o, const scene::Scene& s, Propagators& pro
 int run_simulate(const SimulateOptions& o) {
   io::check_output_file("--csv", o.csv);
   scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  io::check_output_file("--csv", o.csv);  // again, now that the scene, clouds and meshes are known inputs
   check_sampling(o, s);
   Propagators props = make_propagators(s);
   // Ctrl-C / SIGTERM: stop at the next row, write nothing (the temp file goes
@@ -142,7 +143,7 @@ int run_simulate(const SimulateOptions& o) {
 void add_simulate_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "simulate",
                                     "Integrate a scene and write a CSV of the states", run_simulate);
-  cmd->add_option("--csv", o->csv, "Output CSV file (written atomically)")->required();
+  cmd->add_option("--csv", o->csv, "Output CSV file (written atomically)")->required()->check(kPath);
   o->method_opt = cmd->add_option("--method", o->method, "auto or " + method_list());
   o->dt_opt = cmd->add_option("--dt", o->dt, "Step size, s (overrides the scene)");
   o->duration_opt = cmd->add_option("--duration", o->duration, "Run length, s (overrides the scene)");

@@ -106,9 +106,13 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, const std::st
   if (fs::exists(dir / "manifest.json", ec)) manifests.insert(manifests.begin(), dir / "manifest.json");
   std::string problem;
   std::vector<std::string> videos;
+  std::size_t seen = 0;
   for (const fs::path& mpath : manifests) {
     const std::string name = mpath.filename().string();
-    const std::optional<io::Json> m = io::read_json_file(mpath);
+    bool missing = false;
+    const std::optional<io::Json> m = io::read_json_file(mpath, &missing);
+    if (missing) continue;  // removed since it was listed (a shard beside us finished replacing it)
+    ++seen;
     const std::optional<std::string> hash = m ? string_field(*m, "scene_hash") : std::nullopt;
     const std::optional<std::string> old_video = m ? string_field(*m, "video") : std::nullopt;
     if (old_video) videos.push_back(*old_video);
@@ -136,7 +140,7 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, const std::st
         ex.first = (*r)[0].get<long>(), ex.last = (*r)[1].get<long>();
     }
   }
-  if (manifests.empty() && !frames.empty())
+  if (seen == 0 && !frames.empty())
     problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";
   if (problem.empty()) {
     if (ex.replacing) ex.resumable = false, ex.first = 0, ex.last = -1;
