@@ -78,7 +78,11 @@ std::pair<std::vector<Part>, std::size_t> tumble_parts(const fs::path& dir) {
                      dir.string() + " --frames A:B");
   std::size_t ref = 0;
   while (ref < parts.size() && !parts[ref].ok) ++ref;
-  if (ref == parts.size()) throw InputError("tumble assemble: no manifest part in " + dir.string() + " was written by tumble");
+  if (ref == parts.size()) {
+    std::string why;
+    for (const Part& p : parts) why += "\n  " + p.file + ": " + (p.bad_field.empty() ? "unreadable, or not JSON" : p.bad_field);
+    throw InputError("tumble assemble: no manifest part in " + dir.string() + " was written by tumble:" + why);
+  }
   return {std::move(parts), ref};
 }
 
