@@ -13,7 +13,6 @@
 #include "render/worker_threads.hpp"
 #include "run/layout_run.hpp"
 #include "run/render_folder.hpp"
-#include "run/render_job.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {

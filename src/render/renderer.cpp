@@ -18,10 +18,14 @@
 #include "render/surface_pass.hpp"
 #include "render/text_pass.hpp"
 #include "render/view_batches.hpp"
-#include "render/view_layout.hpp"
+#include "compose/view_layout.hpp"
 #include "viz/captions.hpp"
 
 namespace tumble::render {
+
+using compose::CameraMatrices;
+using compose::PixelRect;
+
 namespace {
 
 constexpr float kEdgeWidthPx = 1.5f;
@@ -229,7 +233,7 @@ void Renderer::Impl::draw(const viz::DrawList& frame) {
   const int count = static_cast<int>(frame.views.size());
   std::vector<PixelRect> rects;
   for (int i = 0; i < count; ++i) {
-    rects.push_back(view_rect(frame.views[i], i, count, frame.columns, target_.width(), target_.height()));
+    rects.push_back(compose::view_rect(frame.views[i], i, count, frame.columns, target_.width(), target_.height()));
     if (rects.back().width > 0 && rects.back().height > 0) {
       draw_view(frame.views[i], rects.back(), background);
     }
@@ -285,7 +289,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   set_viewport(rect);
   draw_background(background);
 
-  const CameraMatrices cam = camera_matrices(view.camera, rect.aspect());
+  const CameraMatrices cam = compose::camera_matrices(view.camera, rect.aspect());
   const glm::mat4 view_proj = cam.proj * cam.view;
   const ViewBatches batches = build_view_batches(view);
 
@@ -381,7 +385,7 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
   }
   for (const viz::TextItem& t : items) {
     if (t.backdrop.a > 0) font_.rect(t.backdrop_px, t.backdrop, quads);
-    const float size = fitted_text_px(t, static_cast<float>(rect.width), font_.measure(t.text, t.size_px).x);
+    const float size = compose::fitted_text_px(t, static_cast<float>(rect.width), font_.measure(t.text, t.size_px).x);
     font_.layout(t.text, t.position_px, size, t.color, quads);
   }
   if (quads.empty()) return;

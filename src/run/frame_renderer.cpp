@@ -15,12 +15,12 @@ SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
                      std::to_string(count_ - 1) + ")");
   // Laid-out views (a plot's value axis) also depend on the whole run.
   const long frames = s.render.camera.automatic || !s.render.explain.views.empty() ? count_ : last_needed + 1;
-  runs_ = simulate_runs(s, frames, fps_);
+  runs_ = scene::simulate_runs(s, frames, fps_);
 }
 
 std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks,
                                            const scene::FrameSettings& f, int* samples_used) const {
-  const FrameBuilder builder(scene_, runs_, fps_, f.width, f.height);
+  const compose::FrameBuilder builder(scene_, runs_, fps_, f.width, f.height);
   render::Renderer renderer(ctx, f.width, f.height, f.samples(), f.fxaa());
   if (samples_used) *samples_used = renderer.samples();
   std::vector<io::Image> out;
@@ -38,7 +38,7 @@ std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
   std::string out = std::string(io::kTrajectoryHeader) + "\n";
   const scene::FrameClock clock = scene::frame_clock(scene_, fps_);
   for (long k : ks) {
-    for (const Run& run : runs_) {
+    for (const scene::Run& run : runs_) {
       if (k >= static_cast<long>(run.frames.size())) continue;  // diverged: the row count shows it
       const auto& states = run.frames[static_cast<std::size_t>(k)];
       for (std::size_t i = 0; i < states.size() && i < scene_.bodies.size(); ++i) {

@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "run/frame_range.hpp"
 #include "render/gl_context.hpp"
 #include "io/image.hpp"
 #include "scene/scene.hpp"
@@ -22,7 +23,7 @@ class SceneFrames {
 
   double fps() const { return fps_; }
   long count() const { return count_; }  ///< frames of the whole scene
-  const std::vector<Run>& runs() const { return runs_; }
+  const std::vector<scene::Run>& runs() const { return runs_; }
 
   /// Draws frames `ks` at the size and anti-aliasing of `f` on `ctx`.
   /// Throws InputError for a frame that was not simulated or diverged before it.
@@ -37,7 +38,7 @@ class SceneFrames {
   const scene::Scene& scene_;
   double fps_;
   long count_;
-  std::vector<Run> runs_;
+  std::vector<scene::Run> runs_;
 };
 
 }  // namespace tumble::run

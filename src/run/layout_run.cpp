@@ -5,8 +5,9 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
-#include "render/layout_report.hpp"
-#include "run/render_job.hpp"
+#include "compose/layout_report.hpp"
+#include "compose/frame_builder.hpp"
+#include "run/frame_range.hpp"
 
 namespace tumble::run {
 
@@ -14,11 +15,11 @@ LayoutSummary write_layout_report(const scene::Scene& s, const std::string& fram
   const scene::OutputConfig& out = s.render.output;
   const long count = scene::frame_clock(s, out.fps).count();
   const auto [first, last] = frames.empty() ? std::pair<long, long>{0, count - 1} : parse_frame_range(frames, count);
-  const std::vector<Run> runs = simulate_runs(s, count, out.fps);
-  const FrameBuilder builder(s, runs, out.fps, out.width, out.height);
+  const std::vector<scene::Run> runs = scene::simulate_runs(s, count, out.fps);
+  const compose::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
   std::ostringstream text;
   for (long k = first; k <= last; ++k)
-    render::write_layout(text, k, render::layout_items(builder.build(k), out.width, out.height));
+    compose::write_layout(text, k, compose::layout_items(builder.build(k), out.width, out.height));
   io::atomic_write_file(path, text.str());
   return {first, last, count, out.width, out.height};
 }

@@ -7,7 +7,8 @@
 #include <cstdio>
 
 #include "run/frame_renderer.hpp"
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "run/frame_range.hpp"
 #include "run/render_stream.hpp"
 #include "run/video.hpp"
 #include "run/video_stream.hpp"
@@ -49,8 +50,8 @@ EndToEnd end_to_end(const scene::Scene& s, long frames, render::Renderer& render
   const auto t0 = Clock::now();
   const double c0 = cpu_seconds();
   {
-    const std::vector<Run> runs = simulate_runs(s, frames, s.render.output.fps);
-    const FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
+    const std::vector<scene::Run> runs = scene::simulate_runs(s, frames, s.render.output.fps);
+    const compose::FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
     render::FrameEncoder encoder(jobs);
     render::RawFrame raw;
     auto submit = [&] {
@@ -167,8 +168,8 @@ void measure_video(const scene::Scene& s, long frames, render::Renderer& high, c
   }
   const auto ts = Clock::now();
   const double cs = cpu_seconds();
-  const std::vector<Run> runs = simulate_runs(s, frames, s.render.output.fps);
-  const FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
+  const std::vector<scene::Run> runs = scene::simulate_runs(s, frames, s.render.output.fps);
+  const compose::FrameBuilder builder(s, runs, s.render.output.fps, kW, kH);
   VideoStream stream(kW, kH, fps, VideoFormat::mp4, 18, out_dir / "stream_path.mp4", encoder);
   if (stream.running()) stream_frames(high, builder, frames, stream, r.threads, {});
   if (const VideoResult sv = stream.finish(); sv.ok()) {
@@ -190,8 +191,8 @@ std::string paths_name(render::GpuPaths p) {
 double encode_only_fps(const scene::Scene& s, long frames, render::Renderer& high, const std::filesystem::path& out_dir,
                        int threads) {
   const double fps = s.render.output.fps;
-  const std::vector<Run> runs = simulate_runs(s, frames, fps);
-  const FrameBuilder builder(s, runs, fps, kW, kH);
+  const std::vector<scene::Run> runs = scene::simulate_runs(s, frames, fps);
+  const compose::FrameBuilder builder(s, runs, fps, kW, kH);
   std::vector<io::Image> kept;
   kept.reserve(static_cast<size_t>(frames));
   for (long k = 0; k < frames; ++k) kept.push_back(high.render(builder.build(k)));

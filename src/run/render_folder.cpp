@@ -19,7 +19,8 @@
 #include "render/renderer.hpp"
 #include "render/worker_threads.hpp"
 #include "run/manifest_parts.hpp"
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "run/frame_range.hpp"
 #include "run/render_output.hpp"
 #include "run/render_stream.hpp"
 #include "run/video.hpp"
@@ -137,12 +138,12 @@ void open_folder(Job& j) {
 }
 
 /// What the manifest records of the runs, the GL context and the frames.
-void describe(Job& j, const std::vector<Run>& runs, const render::GlContext& ctx, int samples,
+void describe(Job& j, const std::vector<scene::Run>& runs, const render::GlContext& ctx, int samples,
               const VideoEncoder& encoder) {
   const scene::Scene& s = j.req.scene;
   Manifest& man = j.man;
-  for (const Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
-  for (const Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
+  for (const scene::Run& r : runs) man.method += (man.method.empty() ? "" : ",") + r.label;
+  for (const scene::Run& r : runs) man.step += (man.step.empty() ? "" : ",") + r.step_label;
   man.dt = s.simulation.step.dt;
   man.fps = s.render.output.fps;
   man.frame = s.render.output;
@@ -177,7 +178,7 @@ struct Drawn {
 /// Draws first..last (up to `good`, where the simulation stopped) into PNG
 /// files, skipping those a resumed render already has. A frame that cannot be
 /// written (disk full) records what is on disk and throws io::IoError.
-Drawn draw_frames(Job& j, const FrameBuilder& builder, render::Renderer& renderer, long good) {
+Drawn draw_frames(Job& j, const compose::FrameBuilder& builder, render::Renderer& renderer, long good) {
   Drawn d;
   std::error_code ec;
   // A frame on disk is kept only if it is what was recorded when written (io/frame_sums.hpp).
@@ -301,10 +302,10 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
   Job j{r, l};
   j.count = scene::frame_clock(s, out.fps).count();
   open_folder(j);
-  const std::vector<Run> runs = simulate_runs(s, j.count, out.fps);
-  for (const Run& run : runs)
+  const std::vector<scene::Run> runs = scene::simulate_runs(s, j.count, out.fps);
+  for (const scene::Run& run : runs)
     for (const std::string& note : run.auto_notes) l.note(note);
-  const FrameBuilder builder(s, runs, out.fps, out.width, out.height);
+  const compose::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
   // Frames every run could reach (a single run stops at its divergence).
   const long good = runs.size() == 1 ? static_cast<long>(runs[0].frames.size()) : j.count;
   const std::string diverged = runs[0].diverged.value_or("stopped early");

@@ -10,7 +10,7 @@
 
 namespace tumble::run {
 
-Streamed stream_frames(render::Renderer& renderer, const FrameBuilder& builder, long count, VideoStream& stream,
+Streamed stream_frames(render::Renderer& renderer, const compose::FrameBuilder& builder, long count, VideoStream& stream,
                        int jobs, const StopPoll& stop, const std::function<void(long)>& advance) {
   Streamed s;
   // The sink polls `stop` while ffmpeg's pipe is full: once a signal came,

@@ -9,7 +9,8 @@
 
 #include "render/renderer.hpp"
 #include "run/listener.hpp"
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "run/frame_range.hpp"
 #include "run/render_output.hpp"
 #include "run/video.hpp"
 #include "run/video_stream.hpp"
@@ -19,7 +20,7 @@ namespace tumble::run {
 struct StreamJob {
   const std::filesystem::path& dir;
   const scene::Scene& scene;
-  const FrameBuilder& builder;
+  const compose::FrameBuilder& builder;
   render::Renderer& renderer;
   Manifest& manifest;         ///< filled in; written at every outcome
   const Existing& existing;   ///< a replaced render's frames go once the video exists
@@ -42,7 +43,7 @@ struct Streamed {
 /// reading. The drawing thread only draws and reads back; `jobs` workers
 /// (render::FrameEncoder) finish the frames (FXAA) meanwhile, and the stream
 /// takes them strictly in order. `advance` is told each frame drawn.
-Streamed stream_frames(render::Renderer& renderer, const FrameBuilder& builder, long count, VideoStream& stream,
+Streamed stream_frames(render::Renderer& renderer, const compose::FrameBuilder& builder, long count, VideoStream& stream,
                        int jobs, const StopPoll& stop, const std::function<void(long)>& advance = {});
 
 /// Draws frames 0..count-1 into the video: done, failed (ffmpeg missing or

@@ -73,9 +73,9 @@ void read_draw(TableReader& r, Scene& s) {
   d.box = r.boolean("box").value_or(d.box);
   d.axes = r.boolean("axes").value_or(d.axes);
   d.particles = r.boolean("particles").value_or(d.particles);
-  d.L = r.boolean("L").value_or(d.L);
+  d.angular_momentum = r.boolean("L").value_or(d.angular_momentum);
   d.omega = r.boolean("omega").value_or(d.omega);
-  d.trails = r.number("trails", Range::closed(0, 1e4)).value_or(d.trails);
+  d.trail_seconds = r.number("trails", Range::closed(0, 1e4)).value_or(d.trail_seconds);
   d.grid = r.boolean("grid").value_or(d.grid);
   if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
     // A list of the overlay's items: only those are shown.

@@ -21,6 +21,7 @@
 #include "core/propagator.hpp"
 #include "scene/explain.hpp"
 #include "scene/frame_settings.hpp"
+#include "viz/draw_options.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace tumble::scene {
@@ -84,10 +85,10 @@ struct OverlayItems {
   bool any() const { return time || method || step || energy; }
 };
 
-struct DrawConfig {
-  bool box = true, axes = true, particles = false, L = false, omega = false;
-  double trails = 0;                     ///< s of axis-tip history; 0 = off
-  bool grid = false, overlay = true, legend = true;
+/// `[draw]`: viz's options for the bodies (box, axes, particles, L, ω,
+/// trails, grid: filled by name by the reader) plus the frame's text.
+struct DrawConfig : viz::DrawOptions {
+  bool overlay = true, legend = true;
   OverlayItems overlay_items;            ///< which parts of the overlay line (overlay = true)
 };
 

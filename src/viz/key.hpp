@@ -46,7 +46,7 @@ Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float wi
 /// text (2.4 % of its height) is smaller, below 334 px high, keys are left out.
 inline constexpr float kMinKeyPx = 8.0f;
 
-/// Where a view's key goes, decided once per video (run::ExplainViews), so it never jumps.
+/// Where a view's key goes, decided once per video (compose::ExplainViews), so it never jumps.
 struct KeySpot {
   glm::vec2 top_left{0};  ///< the backdrop's corner, viewport px
   float shift_px = 0;     ///< the view's content moves this far right (< 0: left), away from the key

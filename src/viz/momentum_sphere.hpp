@@ -39,7 +39,7 @@ struct MomentumSphereInput {
   /// Only what placing a key reads (viz::keep_clear): no level curves,
   /// separatrix or energy ellipsoid, which it passes over.
   bool outline_only = false;
-  std::optional<KeySpot> key_spot = {};     ///< where (run::ExplainViews decides once per video); unset: bottom-left
+  std::optional<KeySpot> key_spot = {};     ///< where (compose::ExplainViews decides once per video); unset: bottom-left
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
 };

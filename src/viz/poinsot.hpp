@@ -44,7 +44,7 @@ struct PoinsotInput {
   /// unused. By default 40° above the plane, so the herpolhode opens up.
   SphereCameraSettings camera = {16.4, 39.8, 4.69, false, 0, 0};
   bool key = true;                          ///< the key of colours and meanings
-  std::optional<KeySpot> key_spot = {};     ///< where (run::ExplainViews decides once per video); unset: bottom-right
+  std::optional<KeySpot> key_spot = {};     ///< where (compose::ExplainViews decides once per video); unset: bottom-right
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
 };

@@ -9,6 +9,7 @@
 #include "core/particle_cloud.hpp"
 #include "viz/body_look.hpp"
 #include "viz/draw_list.hpp"
+#include "viz/draw_options.hpp"
 #include "viz/palette.hpp"
 
 namespace tumble::viz {
@@ -20,18 +21,6 @@ struct BodySnapshot {
   BodyState state;
   Color color{0.55f, 0.62f, 0.78f, 0.35f};  ///< box face colour (alpha = translucency)
   const BodyLook* look = nullptr;        ///< optional: surfaces, visible particles and their colours
-};
-
-/// What to draw (scene `[draw]`, overridable on the command line).
-struct DrawOptions {
-  bool box = true;
-  bool axes = true;          ///< principal axes: red = smallest moment, green, blue = largest
-  bool particles = false;
-  bool angular_momentum = false;  ///< world L as an arrow
-  bool omega = false;             ///< ω_world as an arrow
-  double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
-  bool grid = false;
-  double grid_z = 0;              ///< m, height of the ground grid
 };
 
 // From the one colour table (viz/palette.hpp).

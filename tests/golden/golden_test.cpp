@@ -7,7 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "run/frame_renderer.hpp"
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "scene/frame_runs.hpp"
 #include "cli_fixture.hpp"
 #include "golden/compare.hpp"
 #include "golden/trajectory.hpp"
@@ -74,8 +75,8 @@ INSTANTIATE_TEST_SUITE_P(Golden, Scenes, testing::ValuesIn(kScenes),
 TEST(Overlay, EnergyErrorOnlyWhereEnergyIsConserved) {
   auto overlay = [](const char* name) {
     const tumble::scene::Scene s = tumble::scene::load_scene(kSource / "scenes" / (std::string(name) + ".toml"));
-    const std::vector<tumble::run::Run> runs = tumble::run::simulate_runs(s, 3, 30);
-    const tumble::viz::DrawList dl = tumble::run::FrameBuilder(s, runs, 30, 320, 240).build(2);
+    const std::vector<tumble::scene::Run> runs = tumble::scene::simulate_runs(s, 3, 30);
+    const tumble::viz::DrawList dl = tumble::compose::FrameBuilder(s, runs, 30, 320, 240).build(2);
     std::string all;
     for (const auto& v : dl.views)
       for (const auto& t : v.texts) all += t.text + "\n";

@@ -4,14 +4,15 @@
 # Rank per folder: a file may include its own folder and lower ranks only.
 set(rank_core 0)
 set(rank_io 1)
-set(rank_scene 1)
 set(rank_viz 1)
-set(rank_render 2)
-set(rank_golden 2)
-set(rank_gltf 2)   # glTF export (tinygltf): core, io, scene and viz, beside render
-set(rank_bench 2)  # the benchmark's peers and kernels: core and io only
-set(rank_run 3)
-set(rank_app 4)
+set(rank_scene 2)     # the TOML reader fills viz's option structs (viz/draw_options.hpp)
+set(rank_compose 3)   # frame composition: scene + viz -> draw lists, view rectangles, layout report (GL-free)
+set(rank_render 4)
+set(rank_golden 4)
+set(rank_gltf 4)   # glTF export (tinygltf): core, io, scene and viz, beside render
+set(rank_bench 4)  # the benchmark's peers and kernels: core and io only
+set(rank_run 5)
+set(rank_app 6)
 
 if(NOT IS_DIRECTORY "${SRC}")
   message(FATAL_ERROR "SRC='${SRC}' is not a folder")
@@ -47,6 +48,6 @@ if(files_checked EQUAL 0)
   message(FATAL_ERROR "no source files under ${SRC}")
 endif()
 if(errors)
-  message(FATAL_ERROR "includes against the layer order core -> {io, scene, viz} -> {render, golden, gltf, bench} -> run -> app:${errors}")
+  message(FATAL_ERROR "includes against the layer order core -> {io, viz} -> scene -> compose -> {render, golden, gltf, bench} -> run -> app:${errors}")
 endif()
 message(STATUS "layers: ${files_checked} files, every include points down")

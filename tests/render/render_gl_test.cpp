@@ -16,7 +16,7 @@
 #include "render/gl_context.hpp"
 #include "io/png.hpp"
 #include "render/renderer.hpp"
-#include "render/view_layout.hpp"
+#include "compose/view_layout.hpp"
 #include "test_scenes.hpp"
 #include "viz/particle_set.hpp"
 
@@ -77,12 +77,12 @@ TEST_P(RenderTest, AxisArrowsLandWhereProjected) {
   ASSERT_EQ(img.rgb.size(), std::size_t{kW * kH * 3});
   maybe_save(img, "axis_arrows_" + case_name({GetParam(), 0}));
 
-  const PixelRect rect = view_rect(0, 1, 1, kW, kH);
+  const compose::PixelRect rect = compose::view_rect(0, 1, 1, kW, kH);
   const viz::View& view = dl.views[0];
   for (int axis = 0; axis < 3; ++axis) {
     // A point inside the cone head, a little short of the tip.
     const viz::ArrowItem& a = view.arrows[axis];
-    const glm::vec2 px = project_to_pixel(view.camera, rect, a.origin + 0.9 * a.vector);
+    const glm::vec2 px = compose::project_to_pixel(view.camera, rect, a.origin + 0.9 * a.vector);
     glm::vec3 mean(0);
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {

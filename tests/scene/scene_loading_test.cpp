@@ -191,8 +191,8 @@ TEST(SceneKeys, RenderSections) {
   EXPECT_FALSE(r.camera.automatic);
   EXPECT_EQ(r.camera.follow, "a");
   EXPECT_DOUBLE_EQ(r.camera.fov_y_deg, 50);
-  EXPECT_TRUE(r.draw.particles && r.draw.L);
-  EXPECT_DOUBLE_EQ(r.draw.trails, 2.5);
+  EXPECT_TRUE(r.draw.particles && r.draw.angular_momentum);
+  EXPECT_DOUBLE_EQ(r.draw.trail_seconds, 2.5);
 }
 
 TEST(SceneKeys, AntialiasingKeys) {

@@ -5,17 +5,15 @@
 
 #include <gtest/gtest.h>
 
-#include "run/render_job.hpp"
+#include "scene/frame_runs.hpp"
 #include "core/error.hpp"
 #include "core/dynamics.hpp"
 #include "scene/scene.hpp"
-#include "viz/draw_list.hpp"
-#include "viz/text_layout.hpp"
 
 namespace {
 
-using AppRun = tumble::run::Run;  // not gtest's Test::Run
-using tumble::run::simulate_runs;
+using AppRun = tumble::scene::Run;  // not gtest's Test::Run
+using tumble::scene::simulate_runs;
 
 // A fast Dzhanibekov spin (|omega| ≈ 10 rad/s at 30 fps turns 0.33 rad a frame).
 std::string scene_text(double trails, const std::string& method) {
@@ -52,7 +50,7 @@ TEST(SmoothCurves, NoBodyTurnsMoreThanTheLimitBetweenPathSamples) {
     ASSERT_LT(r.path_t[j - 1], r.path_t[j]);
     // The rotation between consecutive samples, from the quaternions: 2·acos|q_a·q_b|.
     const double turn = 2 * std::acos(std::min(1.0, std::abs(r.path[j - 1][0].q.dot(r.path[j][0].q))));
-    EXPECT_LE(turn, tumble::run::kMaxTurnPerSample * 1.01) << "between t = " << r.path_t[j - 1] << " and " << r.path_t[j];
+    EXPECT_LE(turn, tumble::scene::kMaxTurnPerSample * 1.01) << "between t = " << r.path_t[j - 1] << " and " << r.path_t[j];
   }
   for (std::size_t k = 0; k < r.frames.size(); ++k) EXPECT_EQ(r.path[r.path_of_frame[k]][0].q.coeffs(), r.frames[k][0].q.coeffs());
 }
@@ -76,11 +74,11 @@ TEST(SmoothCurves, SubSamplesFollowTheTurnPerFrame) {
   tumble::BodyState s;
   s.L = Eigen::Vector3d(0, 2 * 10, 0);  // |omega| = 10 rad/s about the intermediate axis
   const std::vector<const tumble::RigidBodyModel*> models{&m};
-  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 1.0 / 30), 7);   // 0.333 rad / 0.05 rad → 7
-  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 1e-4), 1);       // already fine
-  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 10.0), tumble::run::kMaxSubSamples);
+  EXPECT_EQ(tumble::scene::sub_samples(models, {s}, 1.0 / 30), 7);   // 0.333 rad / 0.05 rad → 7
+  EXPECT_EQ(tumble::scene::sub_samples(models, {s}, 1e-4), 1);       // already fine
+  EXPECT_EQ(tumble::scene::sub_samples(models, {s}, 10.0), tumble::scene::kMaxSubSamples);
   s.L.setZero();
-  EXPECT_EQ(tumble::run::sub_samples(models, {s}, 1.0), 1);        // at rest: frames only
+  EXPECT_EQ(tumble::scene::sub_samples(models, {s}, 1.0), 1);        // at rest: frames only
 }
 
 }  // namespace
@@ -90,31 +88,4 @@ namespace {
 // Issue 11: text in small views does not overlap. The poinsot scene at the
 // golden size (320 × 240) has four 160 × 120 views with titles, an overlay
 // line and body name labels.
-TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
-  const tumble::scene::Scene s = tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/poinsot.toml");
-  const double fps = s.render.output.fps;
-  const long k = 420;
-  const auto runs = simulate_runs(s, k + 1, fps);
-  const tumble::run::FrameBuilder fb(s, runs, fps, 320, 240);
-  const tumble::viz::DrawList dl = fb.build(k);
-  int overlays = 0;
-  for (const tumble::viz::View& v : dl.views) {
-    for (const tumble::viz::TextItem& o : v.texts) {
-      if (o.text.rfind("t =", 0) != 0) continue;
-      ++overlays;
-      // The title: renderer.cpp's draw_text puts it at the top-left, 11 px high here.
-      if (!v.label.empty()) {
-        EXPECT_GE(o.position_px.y, 0.6f * 7 + 1.25f * 11) << v.label;
-      }
-      // No other text (name labels, the key beside it) on its box.
-      const tumble::viz::Box ob = tumble::viz::text_box(o);
-      for (const tumble::viz::TextItem& t : v.texts) {
-        if (&t == &o) continue;
-        EXPECT_FALSE(tumble::viz::text_box(t).overlaps(ob)) << "'" << t.text << "' on '" << o.text << "'";
-      }
-    }
-  }
-  EXPECT_EQ(overlays, 2);  // the two world views (the poinsot views have none)
-}
-
 }  // namespace

@@ -1,8 +1,8 @@
-// `tumble render`: simulate a scene at its frame times, draw each frame
-// headless, write PNGs atomically, a manifest and a video.
+// A scene's bodies stepped to every frame time of its clock (FrameClock), one
+// run per method of [compare] (else the scene's), with sub-frame samples for
+// smooth curves: what the frame composition (src/compose) draws from.
 #pragma once
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,10 +10,8 @@
 #include "core/body.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
-#include "viz/draw_list.hpp"
-#include "viz/scene_view.hpp"
 
-namespace tumble::run {
+namespace tumble::scene {
 
 /// One simulated run of all bodies with one method (several in a comparison),
 /// stored at every frame time t_k (k/fps, or the scene's FrameClock).
@@ -47,41 +45,4 @@ int sub_samples(const std::vector<const RigidBodyModel*>& models, const std::vec
 /// `frame_count` frames of the scene's clock at `fps`. A diverging run keeps its frames so far.
 std::vector<Run> simulate_runs(const scene::Scene& s, long frame_count, double fps);
 
-class ExplainViews;
-
-/// The scene's camera for a viewport of `aspect` (width/height): automatic
-/// (frames every body over all runs) or as configured.
-viz::Camera scene_camera(const scene::Scene& s, const std::vector<Run>& runs, double aspect);
-
-/// Everything drawn for frame k (GL-free, so tests can inspect it).
-class FrameBuilder {
- public:
-  FrameBuilder(const scene::Scene& s, const std::vector<Run>& runs, double fps, int width, int height);
-  ~FrameBuilder();
-  viz::DrawList build(long k) const;
-
-  /// Run `r`'s world view at frame k (bodies, grid, overlay, labels) seen by
-  /// `camera`; its text starts `top_px` below the viewport's top (room for a title).
-  viz::View world_view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
-                       float top_px = 0) const;
-  const scene::FrameClock& clock() const { return clock_; }
-  float font_px() const { return font_px_; }
-
- private:
-  const scene::Scene& scene_;
-  const std::vector<Run>& runs_;
-  double fps_;
-  scene::FrameClock clock_;
-  int width_, height_, columns_, rows_;
-  float font_px_;  // overlay text size, px
-  viz::DrawOptions draw_;
-  viz::Camera camera_;
-  std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
-  std::unique_ptr<ExplainViews> explain_;   // [[views]], captions, title (null without them)
-  std::vector<viz::BodyLook> looks_;        // per body: surfaces, visible particles
-};
-
-/// Parses "A:B" (inclusive, either end may be empty) against `count` frames.
-std::pair<long, long> parse_frame_range(const std::string& spec, long count);
-
-}  // namespace tumble::run
+}  // namespace tumble::scene

@@ -1,12 +1,12 @@
-#include "render/layout_report.hpp"
+#include "compose/layout_report.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "io/json.hpp"
-#include "render/view_layout.hpp"
+#include "compose/view_layout.hpp"
 
-namespace tumble::render {
+namespace tumble::compose {
 
 namespace {
 
@@ -170,4 +170,4 @@ void write_layout(std::ostream& out, long frame, const std::vector<LayoutItem>& 
   }
 }
 
-}  // namespace tumble::render
+}  // namespace tumble::compose

@@ -5,15 +5,15 @@
 
 #include <vector>
 
-#include "run/render_job.hpp"
+#include "compose/world_views.hpp"
 #include "viz/key.hpp"
 #include "viz/sphere_camera.hpp"
 
-namespace tumble::run {
+namespace tumble::compose {
 
 class ExplainViews {
  public:
-  ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const std::vector<Run>& runs, int width, int height);
+  ExplainViews(const WorldViews& world, const scene::Scene& s, const std::vector<scene::Run>& runs, int width, int height);
   /// One view per [[views]] table, each in its viewport.
   void add_views(viz::DrawList& dl, long k) const;
   /// Captions and the slow-motion badge over the whole frame.
@@ -43,9 +43,9 @@ class ExplainViews {
   std::vector<viz::Box> overlay_boxes() const;  // captions and badge over the whole video, frame px
   std::vector<viz::Box> frame_text_boxes(std::size_t i, long k) const;  // frame k's captions, badge, frame key: view i's px
   void place_frame_key(const std::vector<viz::Box>& taken);
-  const FrameBuilder& fb_;
+  const WorldViews& world_;
   const scene::Scene& scene_;
-  const std::vector<Run>& runs_;
+  const std::vector<scene::Run>& runs_;
   int width_, height_;
   std::vector<Slot> slots_;
   std::vector<viz::KeyEntry> frame_key_;   // the entries of views too small for their own key
@@ -56,4 +56,4 @@ class ExplainViews {
 /// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).
 double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0);
 
-}  // namespace tumble::run
+}  // namespace tumble::compose

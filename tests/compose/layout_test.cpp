@@ -13,14 +13,15 @@
 
 #include <gtest/gtest.h>
 
-#include "run/render_job.hpp"
-#include "render/layout_report.hpp"
+#include "compose/frame_builder.hpp"
+#include "scene/frame_runs.hpp"
+#include "compose/layout_report.hpp"
 #include "scene/scene.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using tumble::render::LayoutItem;
+using tumble::compose::LayoutItem;
 
 struct Size {
   int w, h;
@@ -53,11 +54,11 @@ const std::map<std::string, std::map<int, Layouts>>& all_layouts() {
       const tumble::scene::Scene s = tumble::scene::load_scene(p);
       const double fps = s.render.output.fps;
       const long count = tumble::scene::frame_clock(s, fps).count();
-      const std::vector<tumble::run::Run> runs = tumble::run::simulate_runs(s, count, fps);
+      const std::vector<tumble::scene::Run> runs = tumble::scene::simulate_runs(s, count, fps);
       for (const Size& z : kSizes) {
-        const tumble::run::FrameBuilder fb(s, runs, fps, z.w, z.h);
+        const tumble::compose::FrameBuilder fb(s, runs, fps, z.w, z.h);
         Layouts& l = out[p.stem().string()][z.h];
-        for (long k = 0; k < count; ++k) l.frames.push_back(tumble::render::layout_items(fb.build(k), z.w, z.h));
+        for (long k = 0; k < count; ++k) l.frames.push_back(tumble::compose::layout_items(fb.build(k), z.w, z.h));
       }
     }
     return out;

@@ -1,17 +1,17 @@
-// Where the keys of an explanatory video go (issue 22; docs/colours.md,
+// Where the keys of an explanatory video go (docs/colours.md,
 // "Where the keys go"): decided once per video, from every frame's content.
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "core/dynamics.hpp"
-#include "run/explain_views.hpp"
+#include "compose/explain_views.hpp"
 #include "viz/momentum_sphere.hpp"
 #include "viz/poinsot.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/text_layout.hpp"
 
-namespace tumble::run {
+namespace tumble::compose {
 
 std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
   switch (scene_.render.explain.views[i].kind) {
@@ -35,8 +35,7 @@ std::vector<viz::KeyEntry> ExplainViews::key_entries(std::size_t i) const {
     const Eigen::Vector3f c = 0.75f * b.color.cast<float>();
     bodies.emplace_back(b.name, viz::Color(c.x(), c.y(), c.z(), 1.0f));
   }
-  const scene::DrawConfig& d = scene_.render.draw;
-  return viz::bodies_key({d.box, d.axes, d.particles, d.L, d.omega, d.trails, d.grid, 0.0}, bodies);
+  return viz::bodies_key(world_.draw(), bodies);
 }
 
 namespace {
@@ -71,7 +70,7 @@ std::optional<viz::KeySpot> view_key_spot(scene::ViewKind kind, glm::vec2 ks, Ro
 
 std::vector<viz::Box> ExplainViews::overlay_boxes() const {
   std::vector<viz::Box> out;
-  for (long k = 0; k < fb_.clock().count(); ++k) {
+  for (long k = 0; k < world_.clock().count(); ++k) {
     viz::DrawList dl;
     add_text(dl, k);
     for (const viz::TextItem& t : dl.texts) {
@@ -109,7 +108,7 @@ void ExplainViews::place_keys() {
                      px_text(viz::kMinKeyPx) + " a key needs to be read");
     return;
   }
-  const long count = fb_.clock().count();
+  const long count = world_.clock().count();
   const std::vector<viz::Box> overlay = overlay_boxes();
   std::vector<viz::Box> taken;  // every view's content and keys, frame px
   std::vector<viz::KeyEntry> shown;  // by the views' own keys
@@ -184,4 +183,4 @@ void ExplainViews::place_frame_key(const std::vector<viz::Box>& taken) {
   frame_key_.clear();
 }
 
-}  // namespace tumble::run
+}  // namespace tumble::compose

@@ -1,4 +1,4 @@
-#include "run/explain_views.hpp"
+#include "compose/explain_views.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "viz/strip_chart.hpp"
 #include "viz/text_layout.hpp"
 
-namespace tumble::run {
+namespace tumble::compose {
 
 namespace {
 
@@ -93,9 +93,9 @@ viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, con
 
 }  // namespace
 
-ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const std::vector<Run>& runs, int width,
+ExplainViews::ExplainViews(const WorldViews& world, const scene::Scene& s, const std::vector<scene::Run>& runs, int width,
                            int height)
-    : fb_(fb), scene_(s), runs_(runs), width_(width), height_(height) {
+    : world_(world), scene_(s), runs_(runs), width_(width), height_(height) {
   for (const scene::ViewConfig& vc : s.render.explain.views) {
     Slot slot;
     const std::array<double, 4> f = vc.viewport.value_or(std::array<double, 4>{0, 0, 1, 1});
@@ -119,7 +119,7 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
     if (vc.kind == scene::ViewKind::plot && !runs.empty()) {
       // The value axis covers the whole run, so every frame shares it.
       double lo = 1e300, hi = -1e300;
-      const Run& run = runs[0];
+      const scene::Run& run = runs[0];
       for (const auto& states : run.frames)
         for (const std::string& name : vc.series) {
           const double v = series_value(name, m, states[slot.body], run.energy0[slot.body]);
@@ -137,7 +137,7 @@ ExplainViews::ExplainViews(const FrameBuilder& fb, const scene::Scene& s, const 
 viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
-  const Run& run = runs_[0];
+  const scene::Run& run = runs_[0];
   const long kk = std::min(k, static_cast<long>(run.frames.size()) - 1);
   viz::Camera cam = slot.camera;
   const bool turn_with_body = vc.camera.follow.value_or(true);
@@ -163,7 +163,7 @@ viz::View ExplainViews::bodies_view(std::size_t i, long k, bool key) const {
   viz::View head;
   const float w = static_cast<float>(slot.width_px);
   const float top = viz::add_view_title(head, vc.title, w, height_);
-  viz::View v = fb_.world_view(0, k, cam, slot.width_px, slot.height_px, top);
+  viz::View v = world_.view(0, k, cam, slot.width_px, slot.height_px, top);
   v.name = vc.kind == scene::ViewKind::world ? "world" : "body_frame";
   for (viz::TextItem& t : head.texts) v.texts.push_back(std::move(t));
   if (key && slot.key) viz::add_key(v, key_entries(i), slot.key->top_left, viz::text_px(viz::TextRole::key, height_));
@@ -189,7 +189,7 @@ void take_slot(Input& in, const Slot& slot, const std::string& title, bool key, 
 viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool layout) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
-  const Run& run = runs_[0];
+  const scene::Run& run = runs_[0];
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
   viz::MomentumSphereInput in;
   in.inertia = m.inertia;
@@ -207,17 +207,17 @@ viz::View ExplainViews::sphere_view(std::size_t i, long kk, bool layout) const {
 viz::View ExplainViews::plot_view(std::size_t i, long k) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
-  const Run& run = runs_[0];
+  const scene::Run& run = runs_[0];
   const long kk = std::min(k, static_cast<long>(run.frames.size()) - 1);
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
   viz::StripChartInput in;
   in.t0 = 0, in.t1 = scene_.simulation.duration, in.lo = slot.lo, in.hi = slot.hi;
-  in.playhead = fb_.clock().time(k);
+  in.playhead = world_.clock().time(k);
   in.title = vc.title;
   for (const scene::SlowMotion& sm : scene_.render.explain.slow_motion)
     in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
   in.frame_h = height_;
-  for (long j = 0; j <= kk; ++j) in.times.push_back(fb_.clock().time(j));
+  for (long j = 0; j <= kk; ++j) in.times.push_back(world_.clock().time(j));
   for (const std::string& name : vc.series) {
     const SeriesLook& look = series_look(name);
     viz::Series series{look.shown, {}, look.color};
@@ -233,7 +233,7 @@ viz::View ExplainViews::plot_view(std::size_t i, long k) const {
 viz::View ExplainViews::poinsot_view(std::size_t i, long kk, bool key) const {
   const scene::ViewConfig& vc = scene_.render.explain.views[i];
   const Slot& slot = slots_[i];
-  const Run& run = runs_[0];
+  const scene::Run& run = runs_[0];
   const RigidBodyModel& m = scene_.bodies[slot.body].model;
   const BodyState& s = run.frames[static_cast<std::size_t>(kk)][slot.body];
   viz::PoinsotInput in;
@@ -280,7 +280,7 @@ void ExplainViews::add_views(viz::DrawList& dl, long k) const {
 
 void ExplainViews::add_text(viz::DrawList& dl, long k) const {
   const scene::ExplainConfig& e = scene_.render.explain;
-  const scene::FrameClock& clock = fb_.clock();
+  const scene::FrameClock& clock = world_.clock();
   const double tau = static_cast<double>(k) / clock.fps();  // video time
   const double rate = clock.rate(k);
   const auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
@@ -302,8 +302,8 @@ void ExplainViews::add_text(viz::DrawList& dl, long k) const {
 
 bool ExplainViews::title_card(viz::DrawList& dl, long k) const {
   const scene::TitleCard& t = scene_.render.explain.title;
-  if (t.hold <= 0 || !fb_.clock().on_title_card(k)) return false;
-  const double tau = static_cast<double>(k) / fb_.clock().fps();
+  if (t.hold <= 0 || !world_.clock().on_title_card(k)) return false;
+  const double tau = static_cast<double>(k) / world_.clock().fps();
   dl.background = viz::kTitleCardBackground;
   dl.views.clear();
   for (viz::TextItem& item : viz::title_items(t.text, t.subtitle, viz::fade_alpha(tau, -1.0, t.hold), width_, height_))
@@ -311,4 +311,4 @@ bool ExplainViews::title_card(viz::DrawList& dl, long k) const {
   return true;
 }
 
-}  // namespace tumble::run
+}  // namespace tumble::compose

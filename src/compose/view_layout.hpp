@@ -11,7 +11,7 @@
 
 #include "viz/draw_list.hpp"
 
-namespace tumble::render {
+namespace tumble::compose {
 
 /// A viewport in pixels with a top-left origin (image convention).
 struct PixelRect {
@@ -82,4 +82,4 @@ inline glm::vec2 project_to_pixel(const viz::Camera& cam, const PixelRect& rect,
           float(rect.y) + (0.5f - ndc.y * 0.5f) * float(rect.height)};
 }
 
-}  // namespace tumble::render
+}  // namespace tumble::compose

@@ -11,7 +11,7 @@
 #include "viz/draw_list.hpp"
 #include "viz/text_layout.hpp"
 
-namespace tumble::render {
+namespace tumble::compose {
 
 struct LayoutItem {
   std::string view;   ///< "frame" (overlay) or "<index>:<view name>"
@@ -31,4 +31,4 @@ std::vector<LayoutItem> layout_items(const viz::DrawList& dl, int frame_w, int f
 /// One JSON Lines record per item: frame, view, name, kind, box, visible (and text, size_px).
 void write_layout(std::ostream& out, long frame, const std::vector<LayoutItem>& items);
 
-}  // namespace tumble::render
+}  // namespace tumble::compose

@@ -7,7 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "run/render_job.hpp"
+#include "compose/frame_builder.hpp"
+#include "scene/frame_runs.hpp"
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
@@ -35,8 +36,8 @@ Scene racket(double wobble, const std::string& start, const std::string& end) {
 // Opacity of the caption in frame k (0 when it is not drawn).
 float caption_alpha(const Scene& s, long k) {
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, s.render.output.fps);
-  const auto runs = tumble::run::simulate_runs(s, clock.count(), clock.fps());
-  const tumble::run::FrameBuilder fb(s, runs, clock.fps(), 320, 180);
+  const auto runs = tumble::scene::simulate_runs(s, clock.count(), clock.fps());
+  const tumble::compose::FrameBuilder fb(s, runs, clock.fps(), 320, 180);
   for (const tumble::viz::TextItem& t : fb.build(k).texts)
     if (t.text == kCaption) return t.color.a;
   return 0;

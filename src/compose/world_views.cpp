@@ -1,0 +1,186 @@
+#include "compose/world_views.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/dynamics.hpp"
+#include "viz/captions.hpp"
+#include "viz/particle_set.hpp"
+#include "viz/surfaces.hpp"
+#include "viz/text_layout.hpp"
+
+namespace tumble::compose {
+
+namespace {
+
+viz::Color rgba(const Eigen::Vector3d& c, float a) {
+  return {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()), a};
+}
+glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vector<BodyState>& states,
+                                         const std::vector<viz::BodyLook>* looks = nullptr) {
+  std::vector<viz::BodySnapshot> out;
+  for (size_t i = 0; i < s.bodies.size() && i < states.size(); ++i)
+    out.push_back({&s.bodies[i].model, &s.bodies[i].cloud, states[i], rgba(s.bodies[i].color, 0.38f),
+                   looks ? &(*looks)[i] : nullptr});
+  return out;
+}
+
+// Body names beside the bodies: screen text, so they always face the camera.
+// Each names its body's box on screen (subject_px): viz::settle_labels keeps it beside, not on, the box.
+void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const viz::DrawOptions& draw, int width_px,
+                int height_px, float font_px) {
+  const float fw = static_cast<float>(width_px), fh = static_cast<float>(height_px);
+  for (const viz::BodySnapshot& b : snaps) {
+    const glm::dvec3 above = to_glm(b.state.c) + glm::normalize(v.camera.up) * (1.1 * viz::box_radius(*b.model));
+    glm::vec2 px;
+    const auto box = viz::screen_box(v.camera, fw, fh, viz::box_corners(viz::body_box(b, draw)));
+    if (!box || !viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;  // none for what is out of view
+    const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
+    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+                       "label:" + b.model->name});
+    v.texts.back().subject_px = {box->x0, box->y0, box->x1, box->y1};
+  }
+}
+
+// Once per body: mesh surfaces, the particles that can be seen, part colours.
+viz::BodyLook body_look(const scene::Body& b, bool particles) {
+  viz::BodyLook look;
+  for (const scene::MeshSource& m : b.meshes) {
+    if (m.surface.triangles.empty()) continue;
+    look.surfaces.push_back(viz::make_surface(m.surface));
+    look.surface_colors.push_back(rgba(m.color, 1.0f));
+  }
+  if (!particles) return look;
+  std::vector<viz::Color> colors;
+  colors.reserve(b.cloud.size());
+  for (std::size_t i = 0; i < b.cloud.size(); ++i) {
+    Eigen::Vector3d c = b.color;
+    for (const scene::ColorSpan& span : b.part_colors)
+      if (i >= span.begin && i < span.end) c = span.color;
+    colors.push_back(rgba(0.75 * c, 1.0f));
+  }
+  look.particles = viz::make_particle_set(b.cloud, colors, static_cast<float>(viz::particle_radius(b.model)));
+  return look;
+}
+
+// The overlay line: time, method, step, energy error, as the scene's overlay asks.
+std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
+                         const std::vector<viz::BodySnapshot>& snaps, double t) {
+  // Largest relative energy error over the bodies: the failure users look
+  // for. Only where energy is conserved (gravity is in it, as potential):
+  // a thruster, torque or damping does work, and its change is no error.
+  double rel = 0;
+  bool conserved = true;
+  for (size_t i = 0; i < snaps.size(); ++i) {
+    conserved = conserved && snaps[i].model->forces.conserves_energy();
+    const double e0 = run.energy0[i];
+    const double e = total_energy(*snaps[i].model, snaps[i].state);
+    rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
+  }
+  // In a comparison grid the label names the method; keep the line short
+  // and the font in proportion to the viewport.
+  // Below 1e-13 the digits are round-off: they would change with the
+  // compiler and break golden images for no physical reason.
+  char energy[40];
+  if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
+  else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
+  else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
+  char time[40];
+  if (run_count > 1) std::snprintf(time, sizeof time, "t = %.2f s", t);
+  else std::snprintf(time, sizeof time, "t = %6.2f s", t);
+  std::string line;
+  auto part = [&](bool on, const std::string& text) {
+    if (on) line += (line.empty() ? "" : "   ") + text;
+  };
+  part(items.time, time);
+  part(items.method && run_count == 1, run.label);
+  part(items.step, run.step_label);
+  part(items.energy, energy);
+  return line;
+}
+
+}  // namespace
+
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
+  const scene::CameraConfig& c = s.render.camera;
+  viz::Camera camera;
+  if (c.automatic) {
+    // Frame every body over the whole run (all runs: a failing method may drift).
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (const scene::Run& r : runs)
+      for (const auto& states : r.frames)
+        for (size_t i = 0; i < states.size(); ++i) {
+          if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
+          centres.push_back(to_glm(states[i].c));
+          radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
+        }
+    return viz::auto_camera(centres, radii, c.fov_y_deg, aspect);
+  }
+  camera.position = to_glm(c.position);
+  camera.target = to_glm(c.target);
+  camera.up = to_glm(c.up);
+  camera.fov_y_deg = c.fov_y_deg;
+  return camera;
+}
+
+WorldViews::WorldViews(const scene::Scene& s, const std::vector<scene::Run>& runs, const scene::FrameClock& clock,
+                       float font_px)
+    : scene_(s), runs_(runs), clock_(clock), font_px_(font_px), draw_(s.render.draw) {
+  for (const scene::Body& b : s.bodies) looks_.push_back(body_look(b, draw_.particles));
+  // Trails see every frame from t = 0, so a frame range draws what a full run does.
+  trails_.resize(runs.size());
+  if (draw_.trail_seconds > 0)
+    for (size_t r = 0; r < runs.size(); ++r)
+      for (size_t j = 0; j < runs[r].path.size(); ++j)
+        trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
+}
+
+viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
+                           float top_px) const {
+  const double t = clock_.time(k);
+  const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
+  const scene::Run& run = runs_[r];
+  viz::View v;
+  v.camera = camera;
+  v.label = runs_.size() > 1 ? run.label : "";
+  const long last = static_cast<long>(run.frames.size()) - 1;
+  const long kk = std::min(k, last);
+  if (kk >= 0) {
+    const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)], &looks_);
+    const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
+    if (follow) {
+      const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
+      v.camera.position += c - v.camera.target;
+      v.camera.target = c;
+    }
+    viz::add_bodies(v, snaps, draw_, &trails_[r], clock_.time(kk));
+    if (draw_.grid) {
+      double zmin = 1e300;
+      for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
+      v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
+    }
+    const std::size_t labels_begin = v.texts.size();
+    if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);
+    const std::size_t labels_end = v.texts.size();
+    if (scene_.render.draw.overlay) {
+      const std::string line = overlay_line(scene_.render.draw.overlay_items, run, runs_.size(), snaps, t);
+      const float y = top_px + (runs_.size() > 1 ? 30.0f : 12.0f);
+      v.texts.push_back({line, {12.0f, y}, font_px_, ink});
+      // Name labels stay clear of the overlay line (a body near the top of a
+      // small view put its name on it).
+      for (std::size_t i = labels_begin; i < labels_end; ++i)
+        v.texts[i].position_px.y = std::max(v.texts[i].position_px.y, y + 1.5f * font_px_);
+    }
+  }
+  if (run.diverged && k > last)
+    v.texts.push_back({"diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s",
+                       {12.0f, top_px + 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
+  return v;
+}
+
+}  // namespace tumble::compose

@@ -1,0 +1,18 @@
+// What a view of bodies draws: viz owns these options; the scene reader
+// (scene::DrawConfig, `[draw]`) and the command line fill them by name.
+#pragma once
+
+namespace tumble::viz {
+
+/// What to draw (scene `[draw]`, overridable on the command line).
+struct DrawOptions {
+  bool box = true;
+  bool axes = true;          ///< principal axes: red = smallest moment, green, blue = largest
+  bool particles = false;
+  bool angular_momentum = false;  ///< world L as an arrow
+  bool omega = false;             ///< ω_world as an arrow
+  double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
+  bool grid = false;
+};
+
+}  // namespace tumble::viz
