@@ -68,7 +68,7 @@ int run_golden(const GoldenOptions& o) {
   // make or check: exit 3 (as every command), before any golden is written. (In
   // a [compare] scene a method that fails is part of the picture.)
   if (frames.runs().size() == 1)
-    if (const run::Run& r = frames.runs()[0]; r.diverged && static_cast<long>(r.frames.size()) <= ks.back())
+    if (const scene::Run& r = frames.runs()[0]; r.diverged && static_cast<long>(r.frames.size()) <= ks.back())
       throw Diverged(*r.diverged + "; no golden was written or checked", 0, static_cast<long>(r.frames.size()));
   run::GoldenCheck g{s, frames, ks, o.dir, report, std::cout, o.update, o.every, o.cmp, o.tol};
   g.check_physics();

@@ -102,6 +102,18 @@ std::vector<Crossing> row_crossings(const TriangleMesh& mesh, const Eigen::Vecto
   return out;
 }
 
+/// The tree's winding number at p, its work counted in `out` against `limits`.
+double counted_winding(const WindingTree& tree, const Eigen::Vector3d& p, const FillLimits& limits, VolumeFill& out) {
+  ++out.winding_evaluations;
+  const double w = tree.winding_number(p, &out.winding_work);
+  if (static_cast<double>(out.winding_work) > limits.max_winding_work)
+    throw FillTooCostly("the winding-number test needed more than " + format_number(limits.max_winding_work, 3) +
+                        " steps by lattice point " + std::to_string(out.winding_evaluations) + " of " +
+                        format_number(out.lattice_points, 3) +
+                        " (open surfaces stacked or lying on each other keep every point near all of them)");
+  return w;
+}
+
 }  // namespace
 
 double winding_number(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
@@ -132,14 +144,7 @@ VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const Latti
   std::optional<WindingTree> tree;  // built only for a mesh with holes
   if (!watertight) tree.emplace(mesh);
   auto gwn = [&](long i, long j, long k) {
-    ++out.winding_evaluations;
-    const double w = tree->winding_number(point_at(lo, l, double(i), double(j), double(k)), &out.winding_work);
-    if (static_cast<double>(out.winding_work) > limits.max_winding_work)
-      throw FillTooCostly("the winding-number test needed more than " + format_number(limits.max_winding_work, 3) +
-                          " steps by lattice point " + std::to_string(out.winding_evaluations) + " of " +
-                          format_number(out.lattice_points, 3) +
-                          " (open surfaces stacked or lying on each other keep every point near all of them)");
-    return w;
+    return counted_winding(*tree, point_at(lo, l, double(i), double(j), double(k)), limits, out);
   };
   std::size_t c = 0;
   for (long k = 0; k < nz; ++k)
@@ -171,8 +176,7 @@ VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const Latti
         const bool settled = std::abs(w0 - r) < 0.1 && std::abs(w1 - r) < 0.1 && std::abs(w2 - r) < 0.1;
         for (long q = i; q < end; ++q) {
           const double w = settled ? r : gwn(q, j, k);
-          if (w > 0.25 && w < 0.75) ++out.ambiguous;
-          if (w > 0.25) ++out.near;
+          if (w > 0.25) ++out.near, out.ambiguous += w < 0.75;
           if (w >= 1.5 || w <= -0.5) ++out.overlapped;
           if (w >= 0.5) inside.push_back(point_at(lo, l, double(q), double(j), double(k)));
         }

@@ -93,6 +93,18 @@ bool same_scene_file(const std::optional<std::string>& path, const std::optional
   return !ec1 && !ec2 && a == b;
 }
 
+/// --force: the old render goes, so none of its frames can pass for ours later
+/// (a resumed run trusts every frame file in the folder).
+void remove_render(const fs::path& dir, const std::vector<fs::path>& frames, const std::vector<std::string>& videos,
+                   const std::vector<fs::path>& manifests) {
+  std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
+            << " frames)\n";
+  for (const fs::path& f : frames) remove_file(f);
+  for (const std::string& v : videos)
+    if (fs::path(v).filename() == v && is_video_name(v)) remove_file(dir / v);
+  for (const fs::path& m : manifests) remove_file(m);
+}
+
 }  // namespace
 
 Existing inspect_output(const fs::path& dir, const Manifest& want, const std::string& own, bool force) {
@@ -149,14 +161,7 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, const std::st
   if (!force)
     throw InputError("tumble: output folder " + dir.string() + " " + problem +
                      ".\ntumble: choose another folder with -o, or add --force to replace that render");
-  // --force: the old render goes, so none of its frames can pass for ours later
-  // (a resumed run trusts every frame file in the folder).
-  std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
-            << " frames)\n";
-  for (const fs::path& f : frames) remove_file(f);
-  for (const std::string& v : videos)
-    if (fs::path(v).filename() == v && is_video_name(v)) remove_file(dir / v);
-  for (const fs::path& m : manifests) remove_file(m);
+  remove_render(dir, frames, videos, manifests);
   return {};
 }
 

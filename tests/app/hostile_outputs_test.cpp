@@ -3,6 +3,7 @@
 // FIFO or reads /dev/zero, and the late errors come early with their exit
 // codes. None needs GL; each case failed on the code before its fix.
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 #include <gtest/gtest.h>
 
@@ -88,13 +89,19 @@ TEST_F(HostileOutput, ACsvOntoAFifoOrDeviceIsRefusedAndLeftAsItWas) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("is a FIFO (named pipe), not a regular file"), std::string::npos) << r.err;
   EXPECT_TRUE(is_fifo(pipe)) << "the FIFO was replaced";
-  // /dev/null: as root the rename used to turn it into a regular file.
-  r = bounded("simulate '" + scene.string() + "' --csv /dev/null");
+  // A character device: as root the rename used to turn /dev/null into a
+  // regular file. Root gets a null device of its own here, so a broken tumble
+  // breaks only that one; anyone else uses /dev/null, whose folder they cannot write.
+  const fs::path null = ::geteuid() == 0 ? dir_ / "null" : fs::path("/dev/null");
+  if (::geteuid() == 0) {
+    ASSERT_EQ(::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)), 0);
+  }
+  r = bounded("simulate '" + scene.string() + "' --csv '" + null.string() + "'");
   EXPECT_EQ(r.code, 1) << r.err;
-  EXPECT_NE(r.err.find("/dev/null: is a character device"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(null.string() + ": is a character device"), std::string::npos) << r.err;
   struct stat st {};
-  ASSERT_EQ(::stat("/dev/null", &st), 0);
-  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  ASSERT_EQ(::stat(null.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode)) << null << " was replaced";
 }
 
 TEST_F(HostileOutput, AnEmptyPathIsRefusedNotTakenAsTheDefault) {
