@@ -84,6 +84,10 @@ setup
 run "compare /dev/zero" "1|2" tumble compare /dev/zero /dev/zero
 setup; mkdir g; mkfifo g/s.trajectory.csv
 run "golden trajectory a FIFO" "1|2" tumble golden s.toml --dir g --frames 1 --physics-only
+setup; mkdir g; "$bin" golden s.toml --dir g --frames 1 --update >/dev/null 2>&1; png=$(ls g/*.png | head -1); rm -f "$png"; mkfifo "$png"
+run "golden PNG a FIFO" "1|2" tumble golden s.toml --dir g --frames 1
+setup; mkdir sh; mkfifo sh/manifest.part-000000-000001.json
+run "shard part a FIFO" "1|2" tumble assemble sh --progress none
 setup; mkfifo R.md
 run "methods --readme a FIFO" "1|2" tumble methods --readme R.md
 setup
