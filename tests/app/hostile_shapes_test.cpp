@@ -101,6 +101,9 @@ TEST_F(HostileShape, ExtremeSizesSayWhatIsWrongNotNanOrEmpty) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(r.err.find("empty"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("overflow"), std::string::npos) << r.err;
+  r = info("shape = { type = \"cylinder\", radius = 1e-300, length = 1, mass = 1 }");
+  EXPECT_EQ(r.code, 2) << r.err;  // was "lower the resolution", which no resolution helps
+  EXPECT_NE(r.err.find("length / diameter = 5e+299"), std::string::npos) << r.err;
 }
 
 TEST_F(HostileShape, TinyPlyMassesRescaledToAShapeMassStayFinite) {
