@@ -111,7 +111,8 @@ FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_
     }
   }
   stbtt_PackEnd(&pack);
-  if (!ok) throw std::runtime_error("font atlas too small for " + ttf.string());
+  // DejaVu Sans fills about half the atlas; only a damaged font's glyph boxes overflow it.
+  if (!ok) throw ResourceError(ttf.string() + ": damaged font: its glyphs do not fit the atlas (boxes too large)" + kFontPackage);
   std::sort(glyphs_.begin(), glyphs_.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   // The middle of the full block: coverage 1 at every mipmap level text uses.

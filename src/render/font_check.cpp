@@ -76,6 +76,8 @@ void read_metrics(Font& f) {
   const Bytes& hmtx = f.table("hmtx", 0);
   f.glyphs = maxp.u16(maxp.begin + 4);
   if (f.glyphs == 0) throw Bad("maxp says the font has no glyphs");
+  if (hhea.s16(hhea.begin + 4) - hhea.s16(hhea.begin + 6) <= 0)  // the pixel scale divides by it
+    throw Bad("hhea's ascent is not above its descent");
   const unsigned long_metrics = hhea.u16(hhea.begin + 34);
   if (long_metrics == 0 || long_metrics > f.glyphs)
     throw Bad("hhea's numberOfHMetrics " + std::to_string(long_metrics) + " is not in 1.." + std::to_string(f.glyphs));
@@ -132,6 +134,9 @@ void check_glyph(const Font& f, unsigned index, std::vector<char>& state, int de
   const Bytes& glyf = f.tables.at("glyf");
   const Bytes g = glyf.sub(glyf.begin + a, b - a, "glyph " + std::to_string(index));
   const int contours = g.s16(g.begin);
+  // The box sizes the glyph's bitmap: a reversed one gave a negative width.
+  if (g.s16(g.begin + 2) > g.s16(g.begin + 6) || g.s16(g.begin + 4) > g.s16(g.begin + 8))
+    throw Bad(g.where + " has a reversed bounding box");
   if (contours >= 0) {
     check_simple(g, contours);
     state[index] = 2;
