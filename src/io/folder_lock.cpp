@@ -46,16 +46,20 @@ void write_holder(int fd, const std::string& holder, const std::string& key) {
 class Gate {
  public:
   explicit Gate(const std::filesystem::path& dir) {
+    // A folder we may not read, or a filesystem that cannot lock one (NFS
+    // emulates flock with write locks, which a read-only descriptor cannot
+    // take): no gate; the lock file decides alone, as it did before the gate.
     fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd_ < 0) throw IoError("cannot open the output folder " + dir.string() + ": " + std::strerror(errno));
-    while (::flock(fd_, LOCK_EX) != 0) {
+    while (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
       if (errno == EINTR) continue;
-      const int e = errno;
       ::close(fd_);
-      throw IoError("cannot lock the output folder " + dir.string() + ": " + std::strerror(e));
+      fd_ = -1;
+      break;
     }
   }
-  ~Gate() { ::close(fd_); }  // closing drops the flock
+  ~Gate() {
+    if (fd_ >= 0) ::close(fd_);  // closing drops the flock
+  }
   Gate(const Gate&) = delete;
   Gate& operator=(const Gate&) = delete;
 

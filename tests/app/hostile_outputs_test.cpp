@@ -102,6 +102,9 @@ TEST_F(HostileOutput, ACsvOntoAFifoOrDeviceIsRefusedAndLeftAsItWas) {
   struct stat st {};
   ASSERT_EQ(::stat(null.c_str(), &st), 0);
   EXPECT_TRUE(S_ISCHR(st.st_mode)) << null << " was replaced";
+  r = bounded("simulate '" + scene.string() + "' --csv -");  // what to give instead: standard output
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("t,body,", 0), 0u) << r.out;
 }
 
 TEST_F(HostileOutput, AnEmptyPathIsRefusedNotTakenAsTheDefault) {
