@@ -6,7 +6,7 @@
 # said "internal error", exited as the case expects, and every input (and
 # special file) is as it was; otherwise what went wrong.
 #
-#   scripts/hostile_probe.sh TUMBLE               one binary: a TSV (case, command, verdict)
+#   scripts/hostile_probe.sh TUMBLE               one binary: a TSV (case, command, verdict); exit 1 unless all ok
 #   scripts/hostile_probe.sh OLD_TUMBLE NEW_TUMBLE  a markdown table: case | command | before | after
 #
 # Needs GL (OSMesa) for the render cases, ffmpeg for none. Runs in a temp folder.
@@ -15,7 +15,7 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 
 if [ $# -eq 2 ]; then
   a=$(mktemp) b=$(mktemp)
-  "$0" "$1" >"$a"
+  "$0" "$1" >"$a" 2>/dev/null
   "$0" "$2" >"$b"
   echo "| case | command | before | after |"
   echo "|---|---|---|---|"
@@ -62,9 +62,10 @@ run() {
   else verdict="ok: exit $rc"
   fi
   printf '%s\t%s\t%s, %s s: %s\n' "$name" "$shown" "$verdict" "$secs" "${err:-(no message)}"
+  [[ $verdict == ok:* ]] || failures=$((failures + 1))
   pre="" check=""
 }
-pre="" check=""
+pre="" check="" failures=0
 
 # --- special files ---------------------------------------------------------
 setup; mkfifo out.fifo; check='[ -p out.fifo ]'
@@ -150,3 +151,5 @@ setup; pre="ulimit -f 4;"; check='! ls ./*.tmp-* 2>/dev/null'
 run "export under ulimit -f 4" "1" tumble export m.toml --gltf x.glb
 setup; printf 'name = "e"\n[[bodies]]\nshape = { type = "ellipsoid", semi_axes = [1e-200, 1, 1], mass = 1 }\n' >e.toml
 run "ellipsoid semi-axis 1e-200 (a disc)" "0|2" tumble info e.toml
+
+[ "$failures" -eq 0 ] || { echo "hostile probe: $failures case(s) not ok" >&2; exit 1; }
