@@ -1,12 +1,16 @@
 // Everything drawn in frame k of a scene, as a GL-free viz::DrawList: the
 // classic view (or [compare] grid) of bodies in space, or the scene's
-// [[views]] with their keys, captions and title card. What MuJoCo's mjv is to
-// mjr: src/render draws the list, tests inspect it without GL.
+// [[views]], each a Panel in its place of the frame's layout (FramePlan), with
+// its title, overlay and key in their strips, the captions in theirs, and the
+// title card. What MuJoCo's mjv is to mjr: src/render draws the list, tests
+// inspect it without GL.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "compose/frame_layout.hpp"
+#include "compose/panel.hpp"
 #include "compose/world_views.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/frame_runs.hpp"
@@ -14,8 +18,6 @@
 #include "viz/draw_list.hpp"
 
 namespace tumble::compose {
-
-class ExplainViews;
 
 class FrameBuilder {
  public:
@@ -26,14 +28,24 @@ class FrameBuilder {
 
   const scene::FrameClock& clock() const { return world_.clock(); }
   float font_px() const { return world_.font_px(); }
+  /// The frame's layout (decided once, for every frame).
+  const FramePlan& plan() const { return plan_; }
 
  private:
+  viz::View view_at(std::size_t i, long k) const;
+  void add_frame_text(viz::DrawList& dl, long k) const;
+  bool title_card(viz::DrawList& dl, long k) const;
+  std::string legend() const;
+
   const scene::Scene& scene_;
   const std::vector<scene::Run>& runs_;
-  int width_, height_, columns_, rows_;
-  viz::Camera camera_;
+  int width_, height_;
   WorldViews world_;
-  std::unique_ptr<ExplainViews> explain_;   // [[views]], captions, title (null without them)
+  PanelContext context_;
+  std::vector<std::unique_ptr<Panel>> panels_;
+  std::vector<std::string> titles_;
+  std::vector<std::vector<viz::KeyEntry>> keys_;  // per view, drawn in its key strip
+  FramePlan plan_;
 };
 
 }  // namespace tumble::compose

@@ -70,7 +70,7 @@ void add_texts(const std::vector<viz::TextItem>& texts, const std::string& view,
     viz::TextItem drawn = t;
     drawn.size_px = fitted_text_px(t, float(rect.width), viz::text_width(t.text, t.size_px));
     LayoutItem item{view, t.name.empty() ? "text" : t.name, t.key ? "key" : "text", offset(viz::text_box(drawn), rect),
-                    true, t.text, drawn.size_px};
+                    true, t.text, drawn.size_px, {}};
     const viz::Box& b = item.box;
     const float in_x = std::min(b.x1, float(rect.x + rect.width)) - std::max(b.x0, float(rect.x));
     const float in_y = std::min(b.y1, float(rect.y + rect.height)) - std::max(b.y0, float(rect.y));
@@ -81,21 +81,31 @@ void add_texts(const std::vector<viz::TextItem>& texts, const std::string& view,
   }
 }
 
-// A view's reported 3D items: named points, arrows and polylines.
+// The screen radius, px, of a world length `r` at `p` (0 behind the camera).
+float screen_radius(const CameraMatrices& m, const PixelRect& rect, const viz::Camera& cam, const glm::dvec3& p, double r) {
+  glm::vec2 c, e;
+  if (!project(m, rect, p, c) || !project(m, rect, p + r * glm::normalize(cam.up), e)) return 0.0f;
+  return glm::length(e - c);
+}
+
+// A view's reported 3D items: named points, arrows and polylines, projected
+// through its content rectangle `rect`.
 void add_scene_items(const viz::View& v, const std::string& view, const PixelRect& rect, std::size_t order,
                      std::vector<LayoutItem>& out, std::vector<std::size_t>& out_order) {
   const CameraMatrices m = camera_matrices(v.camera, rect.aspect());
   auto push = [&](const std::string& name, const char* kind, const std::vector<glm::dvec3>& pts, double radius) {
     viz::Box box{1e30f, 1e30f, -1e30f, -1e30f};
     bool any = false;
+    std::vector<glm::vec2> path;
     for (const glm::dvec3& p : pts) {
       glm::vec2 px;
       if (!project(m, rect, p, px)) continue;
+      path.push_back(px);
       box = {std::min(box.x0, px.x), std::min(box.y0, px.y), std::max(box.x1, px.x), std::max(box.y1, px.y)};
       any = any || (inside(rect, px) && !behind_sphere(v, p, radius));
     }
     if (box.x0 > box.x1) box = {};
-    out.push_back({view, name, kind, box, any, {}, 0});
+    out.push_back({view, name, kind, box, any, {}, 0, std::move(path)});
     out_order.push_back(order);
   };
   for (const viz::PointItem& p : v.points) {
@@ -106,7 +116,7 @@ void add_scene_items(const viz::View& v, const std::string& view, const PixelRec
                        project(m, rect, p.position + p.radius * glm::normalize(v.camera.up), e);
     const float r = front ? glm::length(e - c) : 0.0f;
     out.push_back({view, p.name, "marker", {c.x - r, c.y - r, c.x + r, c.y + r},
-                   front && inside(rect, c) && !behind_sphere(v, p.position, p.radius), {}, 0});
+                   front && inside(rect, c) && !behind_sphere(v, p.position, p.radius), {}, 0, {}});
     out_order.push_back(order);
   }
   for (const viz::BoxItem& b : v.boxes) {  // what the view shows of it: clipped to the view
@@ -116,8 +126,16 @@ void add_scene_items(const viz::View& v, const std::string& view, const PixelRec
          std::min(c.y1, float(rect.y + rect.height))};
     if (c.x0 >= c.x1 || c.y0 >= c.y1) c = {}, out.back().visible = false;
   }
-  for (const viz::ArrowItem& a : v.arrows)
-    if (!a.name.empty()) push(a.name, "arrow", {a.origin + a.vector}, a.radius);
+  for (const viz::ArrowItem& a : v.arrows) {
+    if (a.name.empty()) continue;
+    // The whole arrow: its shaft from tail to tip, grown by its head's radius
+    // (render::build_view_batches: 2.4 shaft radii) where each end lies.
+    push(a.name, "arrow", {a.origin, a.origin + a.vector}, a.radius);
+    viz::Box& b = out.back().box;
+    const float grow = std::max(screen_radius(m, rect, v.camera, a.origin + a.vector, 2.4 * a.radius),
+                                screen_radius(m, rect, v.camera, a.origin, a.radius));
+    if (b.x1 > b.x0 || b.y1 > b.y0 || !out.back().path.empty()) b = {b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
+  }
   for (const viz::PolylineItem& l : v.polylines)
     if (!l.name.empty()) push(l.name, "curve", l.points, 0.0);
 }
@@ -133,13 +151,18 @@ std::vector<LayoutItem> layout_items(const viz::DrawList& dl, int frame_w, int f
   for (int i = 0; i < count; ++i) {
     const viz::View& v = dl.views[static_cast<std::size_t>(i)];
     const PixelRect rect = view_rect(v, i, count, dl.columns, frame_w, frame_h);
+    const PixelRect content = content_rect(v, rect);
     const std::string name = std::to_string(i) + ":" + (v.name.empty() ? "view" : v.name);
-    add_scene_items(v, name, rect, ++order, out, order_of);
+    out.push_back({name, "content", "content",
+                   {float(content.x), float(content.y), float(content.x + content.width), float(content.y + content.height)},
+                   true, {}, 0, {}});
+    order_of.push_back(0);
+    add_scene_items(v, name, content, ++order, out, order_of);
     add_texts(v.texts, name, rect, order, out, order_of, occluders);
   }
   add_texts(dl.texts, "frame", {0, 0, frame_w, frame_h}, order, out, order_of, occluders);
   for (const std::string& note : dl.notes) {
-    out.push_back({"frame", "key", "note", {}, false, note, 0});
+    out.push_back({"frame", note.find("key") != std::string::npos ? "key" : "layout", "note", {}, false, note, 0, {}});
     order_of.push_back(0);
   }
   // Whatever a later, opaque enough backdrop (or, for markers and curves, text) covers by half is hidden.
@@ -162,6 +185,10 @@ void write_layout(std::ostream& out, long frame, const std::vector<LayoutItem>& 
                 std::round(it.box.y1 * 10) / 10};
     j["visible"] = it.visible;
     if (it.kind == "note") j["text"] = it.text;
+    if (it.kind == "arrow" && it.path.size() == 2) {
+      j["from"] = {std::round(it.path[0].x * 10) / 10, std::round(it.path[0].y * 10) / 10};
+      j["to"] = {std::round(it.path[1].x * 10) / 10, std::round(it.path[1].y * 10) / 10};
+    }
     if (it.kind == "text" || it.kind == "key") {
       j["text"] = it.text;
       j["size_px"] = std::round(it.size_px * 100) / 100;

@@ -16,19 +16,24 @@ namespace tumble::compose {
 struct LayoutItem {
   std::string view;   ///< "frame" (overlay) or "<index>:<view name>"
   std::string name;   ///< e.g. "momentum_point", "caption", "key"
-  std::string kind;   ///< "text", "marker", "arrow", "curve", "key", "body" (a box's corners) or "note" (why a key is not drawn)
-  viz::Box box;       ///< frame px, top-left origin
-  bool visible = true;  ///< false: outside its view, behind an opaque sphere, under a backdrop or key, or transparent
+  std::string kind;   ///< "text", "marker", "arrow", "curve", "key", "body" (a box's corners), "content" (a view's
+                      ///< content rectangle) or "note" (what the layout left out, and why)
+  viz::Box box;       ///< frame px, top-left origin; an arrow's whole extent (shaft and head), a curve's every point
+  bool visible = true;  ///< false: outside its content rectangle, behind an opaque sphere, under a backdrop or key, or transparent
   std::string text;   ///< text and key items: their text
   float size_px = 0;  ///< text and key items: line height
+  /// Arrows: tail and tip; curves: every point (frame px, in front of the camera), for overlap tests.
+  std::vector<glm::vec2> path;
 };
 
-/// Every text (named or not), every body's box ("body") and every named point
-/// ("marker"), arrow and polyline ("curve") of `dl` in a frame_w × frame_h
-/// frame, then the draw list's notes ("note", no box, not visible).
+/// Each view's content rectangle ("content"), every text (named or not), every
+/// body's box ("body") and every named point ("marker"), arrow and polyline
+/// ("curve") of `dl` in a frame_w × frame_h frame, then the draw list's notes
+/// ("note", no box, not visible).
 std::vector<LayoutItem> layout_items(const viz::DrawList& dl, int frame_w, int frame_h);
 
-/// One JSON Lines record per item: frame, view, name, kind, box, visible (and text, size_px).
+/// One JSON Lines record per item: frame, view, name, kind, box, visible (and text,
+/// size_px; an arrow's tail "from" and tip "to").
 void write_layout(std::ostream& out, long frame, const std::vector<LayoutItem>& items);
 
 }  // namespace tumble::compose

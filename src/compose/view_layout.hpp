@@ -43,6 +43,16 @@ inline PixelRect view_rect(const viz::View& view, int index, int count, int colu
   return {x0 + gap_x, y0 + gap_y, x1 - x0 - gap_x, y1 - y0 - gap_y};
 }
 
+/// Where view `view`'s 3D content lands, frame px: its content rectangle
+/// (View::content_px) inside `rect`, else all of `rect`.
+inline PixelRect content_rect(const viz::View& view, const PixelRect& rect) {
+  if (!view.content_px) return rect;
+  const glm::vec4 c = *view.content_px;
+  const int x0 = std::clamp(int(std::lround(c.x)), 0, rect.width), y0 = std::clamp(int(std::lround(c.y)), 0, rect.height);
+  const int x1 = std::clamp(int(std::lround(c.z)), x0, rect.width), y1 = std::clamp(int(std::lround(c.w)), y0, rect.height);
+  return {rect.x + x0, rect.y + y0, x1 - x0, y1 - y0};
+}
+
 /// The size `t` is drawn at in a viewport `width_px` wide, its line `width`
 /// px at t.size_px. Named text (explanatory views) is laid out to fit and is
 /// drawn as is, so the layout report's boxes are what is drawn; unnamed text

@@ -39,8 +39,8 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const
     glm::vec2 px;
     const auto box = viz::screen_box(v.camera, fw, fh, viz::box_corners(viz::body_box(b, draw)));
     if (!box || !viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;  // none for what is out of view
-    const float w = viz::approx_text_width(b.model->name, font_px * 1.1f);
-    v.texts.push_back({b.model->name, {px.x - 0.5f * w, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+    const float x = viz::centred_x(b.model->name, font_px * 1.1f, px.x);
+    v.texts.push_back({b.model->name, {x, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
                        "label:" + b.model->name});
     v.texts.back().subject_px = {box->x0, box->y0, box->x1, box->y1};
   }
@@ -141,46 +141,45 @@ WorldViews::WorldViews(const scene::Scene& s, const std::vector<scene::Run>& run
 }
 
 viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
-                           float top_px) const {
-  const double t = clock_.time(k);
-  const viz::Color ink{0.12f, 0.13f, 0.16f, 1.0f};
+                           std::optional<std::size_t> only) const {
   const scene::Run& run = runs_[r];
   viz::View v;
   v.camera = camera;
-  v.label = runs_.size() > 1 ? run.label : "";
+  const long kk = std::min(k, static_cast<long>(run.frames.size()) - 1);
+  if (kk < 0) return v;
+  auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)], &looks_);
+  if (only && *only < snaps.size()) snaps = {snaps[*only]};
+  const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
+  if (follow) {
+    const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
+    v.camera.position += c - v.camera.target;
+    v.camera.target = c;
+  }
+  viz::add_bodies(v, snaps, draw_, only ? nullptr : &trails_[r], clock_.time(kk));
+  if (draw_.grid) {
+    double zmin = 1e300;
+    for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
+    v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
+  }
+  if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);
+  return v;
+}
+
+std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {
+  const scene::Run& run = runs_[r];
+  std::vector<std::string> out;
   const long last = static_cast<long>(run.frames.size()) - 1;
   const long kk = std::min(k, last);
-  if (kk >= 0) {
-    const auto snaps = snapshots(scene_, run.frames[static_cast<size_t>(kk)], &looks_);
-    const scene::Body* follow = scene_.find_body(scene_.render.camera.follow);
-    if (follow) {
-      const glm::dvec3 c = to_glm(run.frames[static_cast<size_t>(kk)][static_cast<size_t>(follow - scene_.bodies.data())].c);
-      v.camera.position += c - v.camera.target;
-      v.camera.target = c;
-    }
-    viz::add_bodies(v, snaps, draw_, &trails_[r], clock_.time(kk));
-    if (draw_.grid) {
-      double zmin = 1e300;
-      for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
-      v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
-    }
-    const std::size_t labels_begin = v.texts.size();
-    if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);
-    const std::size_t labels_end = v.texts.size();
-    if (scene_.render.draw.overlay) {
-      const std::string line = overlay_line(scene_.render.draw.overlay_items, run, runs_.size(), snaps, t);
-      const float y = top_px + (runs_.size() > 1 ? 30.0f : 12.0f);
-      v.texts.push_back({line, {12.0f, y}, font_px_, ink});
-      // Name labels stay clear of the overlay line (a body near the top of a
-      // small view put its name on it).
-      for (std::size_t i = labels_begin; i < labels_end; ++i)
-        v.texts[i].position_px.y = std::max(v.texts[i].position_px.y, y + 1.5f * font_px_);
-    }
-  }
+  if (scene_.render.draw.overlay && kk >= 0)
+    out.push_back(overlay_line(scene_.render.draw.overlay_items, run, runs_.size(),
+                               snapshots(scene_, run.frames[static_cast<size_t>(kk)]), clock_.time(k)));
   if (run.diverged && k > last)
-    v.texts.push_back({"diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s",
-                       {12.0f, top_px + 30.0f + 1.6f * font_px_}, font_px_, {0.75f, 0.1f, 0.1f, 1.0f}});
-  return v;
+    out.push_back("diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s");
+  return out;
+}
+
+int WorldViews::overlay_lines(std::size_t r) const {
+  return (scene_.render.draw.overlay ? 1 : 0) + (runs_[r].diverged ? 1 : 0);
 }
 
 }  // namespace tumble::compose

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "scene/frame_clock.hpp"
@@ -25,9 +27,16 @@ class WorldViews {
   /// `font_px`: the overlay's and labels' text size. Keeps references to `s` and `runs`.
   WorldViews(const scene::Scene& s, const std::vector<scene::Run>& runs, const scene::FrameClock& clock, float font_px);
 
-  /// Run `r`'s view at frame k (bodies, grid, overlay, labels) seen by
-  /// `camera`; its text starts `top_px` below the viewport's top (room for a title).
-  viz::View view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px, float top_px = 0) const;
+  /// Run `r`'s bodies at frame k (boxes, arrows, trails, grid, name labels)
+  /// seen by `camera` in a width × height px rectangle; `only`: that body alone
+  /// (a view of one body), without trails.
+  viz::View view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
+                 std::optional<std::size_t> only = std::nullopt) const;
+  /// Run `r`'s overlay at frame k: its line (time, method, step, energy error,
+  /// as the scene asks) and, once it has diverged, where it stopped.
+  std::vector<std::string> overlay(std::size_t r, long k) const;
+  /// How many lines overlay(r, ·) has at most.
+  int overlay_lines(std::size_t r) const;
 
   const scene::FrameClock& clock() const { return clock_; }
   float font_px() const { return font_px_; }

@@ -160,6 +160,12 @@ void FontAtlas::layout(std::string_view text, glm::vec2 top_left_px, float size_
   }
 }
 
+std::vector<char32_t> FontAtlas::code_points() const {
+  std::vector<char32_t> out;
+  for (const auto& g : glyphs_) out.push_back(g.first);
+  return out;
+}
+
 glm::vec2 FontAtlas::measure(std::string_view text, float size_px) const {
   const float s = size_px / bake_px_;
   float line = 0, widest = 0;

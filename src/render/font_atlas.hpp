@@ -41,6 +41,9 @@ class FontAtlas {
   /// Width and height in pixels of `text` at `size_px` (for alignment).
   glm::vec2 measure(std::string_view text, float size_px) const;
 
+  /// The code points the atlas holds, ascending.
+  std::vector<char32_t> code_points() const;
+
  private:
   struct Glyph {
     float x0, y0, x1, y1;  // quad relative to the pen at bake size

@@ -20,6 +20,7 @@
 #include "render/view_batches.hpp"
 #include "compose/view_layout.hpp"
 #include "viz/captions.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::render {
 
@@ -288,8 +289,12 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
                          const glm::vec3& background) {
   set_viewport(rect);
   draw_background(background);
+  // The 3D passes see and are clipped to the content rectangle; the text the whole view.
+  const PixelRect content = compose::content_rect(view, rect);
+  if (content.width <= 0 || content.height <= 0) return draw_text(view.texts, view.label, rect);
+  set_viewport(content);
 
-  const CameraMatrices cam = compose::camera_matrices(view.camera, rect.aspect());
+  const CameraMatrices cam = compose::camera_matrices(view.camera, content.aspect());
   const glm::mat4 view_proj = cam.proj * cam.view;
   const ViewBatches batches = build_view_batches(view);
 
@@ -302,7 +307,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   gl_.DepthMask(GL_TRUE);
 
   surfaces_.draw(view.surfaces, cam.view, cam.proj, kLightDir);
-  spheres_.draw(view.particles, view.camera, cam.view, cam.proj, rect.height, sphere_shading());
+  spheres_.draw(view.particles, view.camera, cam.view, cam.proj, content.height, sphere_shading());
   // A solid of particles or an opaque mesh hides the arrows inside it: show
   // them faintly (a translucent surface alone, the momentum sphere's energy
   // ellipsoid, hides nothing, and its opaque ball must keep hiding the far side).
@@ -320,6 +325,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   surfaces_.draw_translucent(view.surfaces, cam.view, cam.proj, kLightDir);
 
   gl_.Disable(GL_DEPTH_TEST);
+  set_viewport(rect);
   draw_text(view.texts, view.label, rect);
 }
 
@@ -385,7 +391,7 @@ void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const st
   }
   for (const viz::TextItem& t : items) {
     if (t.backdrop.a > 0) font_.rect(t.backdrop_px, t.backdrop, quads);
-    const float size = compose::fitted_text_px(t, static_cast<float>(rect.width), font_.measure(t.text, t.size_px).x);
+    const float size = compose::fitted_text_px(t, static_cast<float>(rect.width), viz::text_width(t.text, t.size_px));
     font_.layout(t.text, t.position_px, size, t.color, quads);
   }
   if (quads.empty()) return;

@@ -45,8 +45,6 @@ bool project_to_viewport(const Camera& cam, double width_px, double height_px, c
   return ViewportProjection(cam, width_px, height_px)(p, out);
 }
 
-float approx_text_width(const std::string& text, float size_px) { return text_width(text, size_px); }
-
 namespace {
 
 // `text` wrapped to `max_w` (0: 90 % of the frame), each line centred in a
@@ -60,9 +58,8 @@ std::vector<TextItem> centred_lines(const std::string& text, float size, Color c
   while (true) {
     const std::size_t end = wrapped.find('\n', start);
     TextItem t{wrapped.substr(start, end - start), {0, y}, size, color, name};
-    const float w = text_width(t.text, size);
-    widest = std::max(widest, w);
-    t.position_px.x = std::max(0.02f * frame_w, 0.5f * (frame_w - w));
+    widest = std::max(widest, text_width(t.text, size));
+    t.position_px.x = std::max(0.02f * frame_w, centred_x(t.text, size, 0.5f * frame_w));
     out.push_back(std::move(t));
     y += size;
     if (end == std::string::npos) break;
@@ -110,7 +107,7 @@ std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int fra
   const std::string text = speed + (slow ? " slow motion" : " fast");
   const float size = std::max(12.0f, static_cast<float>(frame_h) / 36.0f);
   // Bottom-right; captions shown with it keep clear of it (caption_items' side_px).
-  const float x = static_cast<float>(frame_w) - approx_text_width(text, size) - 0.8f * size;
+  const float x = right_aligned_x(text, size, static_cast<float>(frame_w) - 0.8f * size);
   return TextItem{text, {x, static_cast<float>(frame_h) - 1.3f * size}, size, {0.70f, 0.12f, 0.10f, 1.0f}, "speed"};
 }
 

@@ -56,7 +56,5 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 /// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
 std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h);
 
-/// Width of `text` at `size_px` (viz::text_width), px.
-float approx_text_width(const std::string& text, float size_px);
 
 }  // namespace tumble::viz

@@ -164,6 +164,11 @@ struct View {
   /// x, y, width, height as fractions of the frame from its top-left corner;
   /// unset = the view's cell of the DrawList's grid.
   std::optional<glm::dvec4> viewport;
+  /// The content rectangle, x0, y0, x1, y1 in the view's pixels: the camera
+  /// sees through it and every 3D item is clipped (scissored) to it, so no
+  /// arrow reaches the view's title or key strips; unset = the whole view.
+  /// Texts stay in the view's pixels.
+  std::optional<glm::vec4> content_px;
 };
 
 /// A whole frame: views laid out on a grid of `columns` (row-major).

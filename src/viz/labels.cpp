@@ -48,12 +48,17 @@ std::vector<Box> text_obstacles(const View& view, float w, float h) {
   return taken;
 }
 
-// What a body's label also keeps clear of: every body's box, and each arrow
-// as short pieces along it (a slanted arrow's own box would cover its sides).
+// What every label also keeps clear of: every body's box, the named curves and
+// each arrow as short pieces along it (a slanted arrow's own box would cover its sides).
 std::vector<Box> solid_obstacles(const View& view, float w, float h) {
   std::vector<Box> out;
   for (const BoxItem& b : view.boxes)
     if (const auto s = screen_box(view.camera, w, h, box_corners(b))) out.push_back(*s);
+  // The curves a viewer follows (named), segment by segment.
+  for (const PolylineItem& l : view.polylines)
+    if (!l.name.empty())
+      for (std::size_t i = 1; i < l.points.size(); ++i)
+        if (const auto s = screen_box(view.camera, w, h, {l.points[i - 1], l.points[i]}, 1.5f)) out.push_back(*s);
   constexpr int kPieces = 12;
   for (const ArrowItem& a : view.arrows)
     for (int i = 0; i < kPieces; ++i) {
@@ -91,8 +96,8 @@ std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
 void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());
-  const bool subjects = std::any_of(view.texts.begin(), view.texts.end(), has_subject);
-  const std::vector<Box> solid = subjects ? solid_obstacles(view, width_px, height_px) : std::vector<Box>{};
+  const bool labels = std::any_of(view.texts.begin(), view.texts.end(), is_label);
+  const std::vector<Box> solid = labels ? solid_obstacles(view, width_px, height_px) : std::vector<Box>{};
   std::vector<TextItem> kept;
   for (TextItem& t : view.texts) {
     if (!is_label(t)) {
@@ -111,7 +116,7 @@ void settle_labels(View& view, float width_px, float height_px, const std::vecto
       const Box wide = grown(b, gap);
       const auto hit = [&](const Box& o) { return o.overlaps(wide); };
       if (std::any_of(taken.begin(), taken.end(), hit)) continue;
-      if (subject && (own.overlaps(wide) || std::any_of(solid.begin(), solid.end(), hit))) continue;
+      if ((subject && own.overlaps(wide)) || std::any_of(solid.begin(), solid.end(), hit)) continue;
       t.position_px = p;
       taken.push_back(b);
       kept.push_back(std::move(t));

@@ -67,23 +67,60 @@ std::vector<std::vector<Eigen::Vector3d>> polhodes(const Eigen::Vector3d& I, dou
 
 namespace {
 
+// Whether `box` lies on one of the three +e_i arrows (thickened by `head_px`) as `project` draws them.
+bool on_an_axis(const ViewportProjection& project, const Box& box, float head_px) {
+  glm::vec2 base, tip;
+  if (!project(glm::dvec3(0), base)) return false;
+  for (int i = 0; i < 3; ++i) {
+    glm::dvec3 e(0);
+    e[i] = 1.35;
+    if (!project(e, tip)) continue;
+    for (int s = 0; s <= 24; ++s) {
+      const glm::vec2 p = base + (tip - base) * (static_cast<float>(s) / 24);
+      const float r = s == 24 ? head_px + 1 : 2.5f;
+      if (p.x + r > box.x0 && p.x - r < box.x1 && p.y + r > box.y0 && p.y - r < box.y1) return true;
+    }
+  }
+  return false;
+}
+
 // The axes through the sphere, +e_i arrows and −e_i lines, each +tip named e_i
-// where the ball does not hide it.
+// where the ball does not hide it: just beyond the arrow's head on screen,
+// along the axis as drawn (beside it when the axis points at the camera), so
+// the label never sits on its own arrow.
 void add_axes(View& view, const MomentumSphereInput& in) {
   static const char* const kNames[3] = {"e\u2081", "e\u2082", "e\u2083"};  // e₁ e₂ e₃
   const float size = text_px(TextRole::label, in.frame_h);
+  const ViewportProjection project(view.camera, in.width_px, in.height_px);
+  // The sphere's radius on screen (a perspective silhouette is a little wider than |L|).
+  glm::vec2 c0, c1;
+  const glm::dvec3 side = glm::normalize(glm::cross(view.camera.target - view.camera.position, view_up(view.camera)));
+  const float ball_px = project(glm::dvec3(0), c0) && project(1.06 * side, c1) ? glm::length(c1 - c0) : 0.0f;
   for (int i = 0; i < 3; ++i) {
     glm::dvec3 e(0);
     e[i] = 1.35;
     view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
     view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.6f), 1.5f, false});
-    const glm::dvec3 tip = e * (1.47 / 1.35);
-    glm::vec2 px;
-    if (hidden_by_ball(view.camera.position, tip, kSphereBall) ||
-        !project_to_viewport(view.camera, in.width_px, in.height_px, tip, px))
+    glm::vec2 tip, base, head;
+    if (hidden_by_ball(view.camera.position, e, kSphereBall) || !project(e, tip) || !project(glm::dvec3(0), base) ||
+        !project(e + 0.029 * glm::normalize(view.camera.up), head))
       continue;
     TextItem t{kNames[i], {0, 0}, size, kAxisColors[i]};
-    t.position_px = px - 0.5f * glm::vec2(text_width(t.text, size), size);
+    const InkSpan ink = text_ink(t.text, size);
+    const glm::vec2 along = tip - base;
+    const float len = glm::length(along);
+    const glm::vec2 d0 = len > 0.25f * size ? along / len : glm::vec2(0, -1);
+    // The tip in front of the ball: the label at its rim, off the curves on it.
+    const glm::vec2 from = len < ball_px ? base + ball_px * d0 : tip;
+    // Along the axis as drawn, else turned a little at a time until clear of the three arrows.
+    for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f}) {
+      const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
+      // Past the head (its screen radius) and half the label's box along d, plus a gap.
+      const float reach = glm::length(head - tip) + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * size) + 0.25f * size;
+      const glm::vec2 centre = from + reach * d;
+      t.position_px = {centred_x(t.text, size, centre.x), centre.y - 0.5f * size};
+      if (!on_an_axis(project, text_box(t), glm::length(head - tip))) break;
+    }
     t.name = std::string("axis_label_e") + char('1' + i);
     view.texts.push_back(std::move(t));
   }
@@ -127,6 +164,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const double L = in.momentum.norm();
   view.name = "momentum_sphere";
   view.camera = sphere_camera(in.pose, in.camera);
+  if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
   const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
   if (in.key) {
     const float size = text_px(TextRole::key, in.frame_h);

@@ -41,6 +41,8 @@ struct MomentumSphereInput {
   bool outline_only = false;
   std::optional<KeySpot> key_spot = {};     ///< where (compose::ExplainViews decides once per video); unset: bottom-left
   float width_px = 640, height_px = 360;    ///< the viewport
+  /// > 0: the camera's field of view shows a ball of this radius (|L|) whole in the viewport.
+  double fit_radius = 0;
   int frame_h = 360;                        ///< the frame's height (text sizes)
 };
 

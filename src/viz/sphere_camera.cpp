@@ -84,6 +84,13 @@ Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s) {
   return c;
 }
 
+double fov_for_ball(const Camera& c, double radius, double aspect) {
+  const double d = glm::length(c.position - c.target);
+  const double half = std::asin(std::clamp(radius / std::max(d, 1e-12), 0.0, 0.99));
+  // Up and down tan(half) of the height; across, the same angle needs aspect times it.
+  return glm::degrees(2 * std::atan(std::tan(half) / std::min(1.0, aspect)));
+}
+
 bool hidden_by_ball(const glm::dvec3& eye, const glm::dvec3& p, double r) {
   const glm::dvec3 d = p - eye;
   const double len2 = glm::dot(d, d);

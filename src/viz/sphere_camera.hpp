@@ -40,6 +40,10 @@ std::vector<SpherePose> follow_track(const std::vector<double>& t, const std::ve
 /// The camera at `pose` (follow) or at the fixed direction (no follow).
 Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s);
 
+/// The vertical field of view, degrees, that shows a ball of `radius` around
+/// `c`'s target whole in a rectangle of `aspect` (width / height).
+double fov_for_ball(const Camera& c, double radius, double aspect);
+
 /// True when the segment from `eye` to `p` passes through the ball of radius
 /// `r` at the origin (p itself outside it): p is hidden behind the ball.
 bool hidden_by_ball(const glm::dvec3& eye, const glm::dvec3& p, double r);

@@ -110,7 +110,7 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   }
   const std::string t1 = format_number(in.t1, 3) + " s";
   text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
-  text(t1, {bottom_right.x - text_width(t1, f), bottom_left.y + 0.3f * f}, ink);
+  text(t1, {right_aligned_x(t1, f, bottom_right.x), bottom_left.y + 0.3f * f}, ink);
   for (const TextItem& t : head.title.texts) view.texts.push_back(t);
   if (in.frame_h == 0 && !in.title.empty()) text(in.title, {top_left.x, 0.3f * f}, ink);
   float x = w - head.key_w;

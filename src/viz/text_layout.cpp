@@ -5,31 +5,11 @@
 #include <sstream>
 
 #include "viz/captions.hpp"
+#include "viz/font_metrics.hpp"
 
 namespace tumble::viz {
 
 namespace {
-
-// Advances of DejaVu Sans, U+0020..U+007E, in em (hmtx / unitsPerEm 2048),
-// read with fontTools from /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf.
-constexpr std::array<float, 95> kAscii = {
-    0.318f, 0.401f, 0.46f,  0.838f, 0.636f, 0.95f,  0.78f,  0.275f, 0.39f,  0.39f,  0.5f,   0.838f, 0.318f, 0.361f,
-    0.318f, 0.337f, 0.636f, 0.636f, 0.636f, 0.636f, 0.636f, 0.636f, 0.636f, 0.636f, 0.636f, 0.636f, 0.337f, 0.337f,
-    0.838f, 0.838f, 0.838f, 0.531f, 1.0f,   0.684f, 0.686f, 0.698f, 0.77f,  0.632f, 0.575f, 0.775f, 0.752f, 0.295f,
-    0.295f, 0.656f, 0.557f, 0.863f, 0.748f, 0.787f, 0.603f, 0.787f, 0.695f, 0.635f, 0.611f, 0.732f, 0.684f, 0.989f,
-    0.685f, 0.611f, 0.685f, 0.39f,  0.337f, 0.39f,  0.838f, 0.5f,   0.5f,   0.613f, 0.635f, 0.55f,  0.635f, 0.615f,
-    0.352f, 0.635f, 0.634f, 0.278f, 0.278f, 0.579f, 0.278f, 0.974f, 0.634f, 0.612f, 0.635f, 0.635f, 0.411f, 0.521f,
-    0.392f, 0.634f, 0.592f, 0.818f, 0.592f, 0.592f, 0.525f, 0.636f, 0.337f, 0.636f, 0.838f};
-
-// Advance of code point `c`, em: sub/superscripts are narrow, other symbols
-// (Greek, arrows, operators, ×, ½) about 0.84 em in DejaVu Sans.
-float advance(char32_t c) {
-  if (c >= 0x20 && c < 0x7F) return kAscii[c - 0x20];
-  if (c >= 0x2070 && c <= 0x209F) return 0.401f;
-  if (c == 0xB7 || c == 0x2009) return 0.318f;
-  if (c == 0x25A0) return 0.945f;
-  return 0.84f;
-}
 
 char32_t decode(std::string_view s, std::size_t& i) {
   const auto b = static_cast<unsigned char>(s[i++]);
@@ -40,11 +20,19 @@ char32_t decode(std::string_view s, std::size_t& i) {
   return c;
 }
 
-float line_width(std::string_view line, float size_px) {
-  float w = 0;
-  for (std::size_t i = 0; i < line.size();) w += advance(decode(line, i));
-  return w * size_px;
+// The ink of one line: from the left edge of its first outline to the right
+// edge of its last, from the pen's start, px (a blank line: 0, 0).
+InkSpan line_ink(std::string_view line, float size_px) {
+  float pen = 0, x0 = 1e30f, x1 = -1e30f;
+  for (std::size_t i = 0; i < line.size();) {
+    const GlyphMetrics& g = glyph_metrics(decode(line, i));
+    if (g.ink_x1 > g.ink_x0) x0 = std::min(x0, pen + g.ink_x0), x1 = std::max(x1, pen + g.ink_x1);
+    pen += g.advance;
+  }
+  return x0 > x1 ? InkSpan{} : InkSpan{x0 * size_px, x1 * size_px};
 }
+
+float line_width(std::string_view line, float size_px) { return line_ink(line, size_px).width(); }
 
 }  // namespace
 
@@ -63,16 +51,28 @@ float text_px(TextRole role, int frame_h) {
   return f * static_cast<float>(frame_h);
 }
 
-float text_width(std::string_view text, float size_px) {
-  float widest = 0;
+InkSpan text_ink(std::string_view text, float size_px) {
+  InkSpan all{1e30f, -1e30f};
   std::size_t start = 0;
   while (true) {
     const std::size_t end = text.find('\n', start);
-    widest = std::max(widest, line_width(text.substr(start, end - start), size_px));
+    const InkSpan line = line_ink(text.substr(start, end - start), size_px);
+    if (line.width() > 0) all = {std::min(all.x0, line.x0), std::max(all.x1, line.x1)};
     if (end == std::string_view::npos) break;
     start = end + 1;
   }
-  return widest;
+  return all.x0 > all.x1 ? InkSpan{} : all;
+}
+
+float text_width(std::string_view text, float size_px) { return text_ink(text, size_px).width(); }
+
+float centred_x(std::string_view text, float size_px, float centre_px) {
+  const InkSpan ink = text_ink(text, size_px);
+  return centre_px - 0.5f * (ink.x0 + ink.x1);
+}
+
+float right_aligned_x(std::string_view text, float size_px, float right_px) {
+  return right_px - text_ink(text, size_px).x1;
 }
 
 int text_lines(std::string_view text) { return 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
@@ -102,8 +102,9 @@ std::string wrap_text(std::string_view text, float size_px, float max_width_px) 
 }
 
 Box text_box(const TextItem& t) {
-  const float w = text_width(t.text, t.size_px), h = static_cast<float>(text_lines(t.text)) * t.size_px;
-  return {t.position_px.x, t.position_px.y, t.position_px.x + w, t.position_px.y + h};
+  const InkSpan ink = text_ink(t.text, t.size_px);
+  const float h = static_cast<float>(text_lines(t.text)) * t.size_px;
+  return {t.position_px.x + ink.x0, t.position_px.y, t.position_px.x + ink.x1, t.position_px.y + h};
 }
 
 }  // namespace tumble::viz

@@ -1,7 +1,7 @@
 // Text sizes and boxes, GL-free: the sizes of the text roles in proportion to
-// the frame's height (a 1080p frame looks like the 540p one, scaled), line
-// widths from DejaVu Sans' advances (the renderer's font), greedy wrapping and
-// the box a TextItem covers, so layout can be checked without a GL context.
+// the frame's height (a 1080p frame looks like the 540p one, scaled), the ink a
+// string covers as the renderer draws it (viz/font_metrics.hpp), greedy wrapping
+// and the box a TextItem covers, so layout can be checked without a GL context.
 #pragma once
 
 #include <optional>
@@ -20,9 +20,21 @@ enum class TextRole { title, subtitle, caption, view_title, key, label, tick };
 /// Height of `role`'s text, px, in a frame `frame_h` px high (fractions of it).
 float text_px(TextRole role, int frame_h);
 
-/// Width of the widest line of `text` at `size_px`, px (DejaVu Sans advances;
-/// '\n' breaks lines). Matches render::FontAtlas::measure to < 1 % for ASCII.
+/// The horizontal ink of `text` at `size_px` drawn with its pen starting at
+/// x = 0: from the leftmost outline edge to the rightmost of any line, px
+/// (viz/font_metrics.hpp: the renderer's font at the renderer's scale).
+struct InkSpan {
+  float x0 = 0, x1 = 0;
+  float width() const { return x1 - x0; }
+};
+InkSpan text_ink(std::string_view text, float size_px);
+
+/// Width of `text`'s ink at `size_px`, px ('\n' breaks lines): what is drawn.
 float text_width(std::string_view text, float size_px);
+
+/// The pen's x that centres `text`'s ink on `centre_px`, or ends it at `right_px`.
+float centred_x(std::string_view text, float size_px, float centre_px);
+float right_aligned_x(std::string_view text, float size_px, float right_px);
 
 /// Number of lines of `text` ('\n' separated).
 int text_lines(std::string_view text);
@@ -38,7 +50,7 @@ struct Box {
   float area() const { return (x1 - x0) * (y1 - y0); }
 };
 
-/// The box `t` covers at its size (one line = size_px high).
+/// The box `t` covers at its size: its ink across, its lines (size_px each) down.
 Box text_box(const TextItem& t);
 
 }  // namespace tumble::viz
@@ -62,10 +74,10 @@ bool is_label(const TextItem& t);
 /// other text, backdrop, named point (the Π dot, ± 3 % of the view's height)
 /// or earlier label, nor any of `also_clear` (e.g. the frame's captions, in
 /// the view's pixels), and stays inside the view; a label with no such place is
-/// left out. A label with a subject (TextItem::subject_px, a body's box) is
-/// tried around it (above, below, right, left, then the corners, stepping
-/// out) and also keeps clear of every body's box and arrow; others move up
-/// or down by up to two lines, then sideways.
+/// left out. Every label keeps clear of every body's box and arrow. A label
+/// with a subject (TextItem::subject_px, a body's box) is tried around it
+/// (above, below, right, left, then the corners, stepping out); others move
+/// up or down by up to two lines, then sideways.
 void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
 
 /// The box `points` cover as `camera` sees them in a width × height view,

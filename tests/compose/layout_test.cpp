@@ -36,7 +36,8 @@ std::vector<fs::path> explained_scenes() {
     std::ifstream in(e.path());
     std::stringstream text;
     text << in.rdbuf();
-    if (text.str().find("[[views]]") != std::string::npos) out.push_back(e.path());
+    // With laid-out views, and methods_compare, the comparison grid shown in lectures.
+    if (text.str().find("[[views]]") != std::string::npos || e.path().stem() == "methods_compare") out.push_back(e.path());
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -72,6 +73,8 @@ void covers_the_shipped_scenes() {
   const auto& l = all_layouts();
   EXPECT_TRUE(l.count("dzhanibekov_explained"));
   EXPECT_TRUE(l.count("poinsot"));
+  EXPECT_TRUE(l.count("tennis_racket"));
+  EXPECT_TRUE(l.count("methods_compare"));
 }
 
 void momentum_point_always_visible() {
@@ -203,6 +206,77 @@ void body_labels_clear_of_bodies() {
   EXPECT_GT(labels, 1000) << "body labels drawn over all frames";
 }
 
+// Layout by construction: every reported 3D item (arrow whole, marker, body
+// box corners, curve points) lies inside its view's content rectangle, in
+// every frame: nothing is clipped at a view's edge or reaches a title or key.
+void no_3d_item_leaves_its_content() {
+  int items = 0;
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      int bad = 0;
+      for (std::size_t k = 0; k < layouts.frames.size(); ++k) {
+        std::map<std::string, tumble::viz::Box> content;
+        for (const LayoutItem& i : layouts.frames[k])
+          if (i.kind == "content") content[i.view] = i.box;
+        for (const LayoutItem& i : layouts.frames[k]) {
+          if (i.kind != "arrow" && i.kind != "marker" && i.kind != "body" && i.kind != "curve") continue;
+          ++items;
+          const tumble::viz::Box c = content.at(i.view);
+          tumble::viz::Box extent = i.box;  // an arrow's whole extent, a marker's dot
+          if (i.kind == "body" || i.kind == "curve") extent = {1e9f, 1e9f, -1e9f, -1e9f};
+          for (const glm::vec2 p : i.path)
+            extent = {std::min(extent.x0, p.x), std::min(extent.y0, p.y), std::max(extent.x1, p.x), std::max(extent.y1, p.y)};
+          if (extent.x0 > extent.x1) continue;  // behind the camera
+          const bool in = extent.x0 >= c.x0 - 0.5f && extent.y0 >= c.y0 - 0.5f && extent.x1 <= c.x1 + 0.5f &&
+                          extent.y1 <= c.y1 + 0.5f;
+          if (!in && bad++ < 5)
+            ADD_FAILURE() << scene << " at " << h << "p frame " << k << ": " << i.kind << " " << i.name << " of "
+                          << i.view << " reaches (" << extent.x0 << ", " << extent.y0 << ")-(" << extent.x1 << ", "
+                          << extent.y1 << "), its content is (" << c.x0 << ", " << c.y0 << ")-(" << c.x1 << ", " << c.y1 << ")";
+        }
+      }
+      EXPECT_EQ(bad, 0) << scene << " at " << h << "p";
+    }
+  EXPECT_GT(items, 10000) << "3D items checked over all frames";
+}
+
+// Does segment a-b, thickened by `r` px, cross box `b`?
+bool segment_hits(glm::vec2 a, glm::vec2 e, float r, const tumble::viz::Box& b) {
+  constexpr int kSteps = 24;
+  for (int s = 0; s <= kSteps; ++s) {
+    const glm::vec2 p = a + (e - a) * (static_cast<float>(s) / kSteps);
+    if (p.x + r > b.x0 && p.x - r < b.x1 && p.y + r > b.y0 && p.y - r < b.y1) return true;
+  }
+  return false;
+}
+
+// Text and 3D content never share pixels: no visible text box (titles,
+// overlay, keys, labels, captions) overlaps an arrow (along its shaft), a
+// marker, a body's box or a named curve of any view, in any frame.
+void no_text_on_a_3d_item() {
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      int bad = 0;
+      for (std::size_t k = 0; k < layouts.frames.size(); ++k) {
+        const auto& f = layouts.frames[k];
+        for (const LayoutItem& t : f) {
+          if (!is_text(t) || !t.visible) continue;
+          for (const LayoutItem& i : f) {
+            if (!i.visible || (i.kind != "arrow" && i.kind != "marker" && i.kind != "body" && i.kind != "curve")) continue;
+            bool hit = false;
+            if (i.kind == "marker" || i.kind == "body") hit = t.box.overlaps(i.box);
+            for (std::size_t j = 1; !hit && j < i.path.size() && i.kind != "body"; ++j)
+              hit = segment_hits(i.path[j - 1], i.path[j], i.kind == "arrow" ? 2.0f : 1.0f, t.box);
+            if (hit && bad++ < 5)
+              ADD_FAILURE() << scene << " at " << h << "p frame " << k << ": \"" << t.text << "\" (" << t.view
+                            << ") lies on " << i.kind << " " << i.name << " of " << i.view;
+          }
+        }
+      }
+      EXPECT_EQ(bad, 0) << scene << " at " << h << "p";
+    }
+}
+
 // One test: ctest runs each test in its own process, and the layouts (every
 // frame of every scene at three sizes, a few seconds) are made once.
 TEST(Layout, ShippedExplanatoryScenesReadAsAViewerNeeds) {
@@ -213,6 +287,8 @@ TEST(Layout, ShippedExplanatoryScenesReadAsAViewerNeeds) {
   text_at_1080p_twice_its_540p_height();
   keys_cover_no_body_or_momentum_point();
   body_labels_clear_of_bodies();
+  no_3d_item_leaves_its_content();
+  no_text_on_a_3d_item();
 }
 
 }  // namespace

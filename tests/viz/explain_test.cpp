@@ -122,7 +122,7 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
       if (t.text.rfind(name, 0) == 0) {
         found = true;
         EXPECT_GE(t.position_px.x, 0.0f) << name;
-        EXPECT_LE(t.position_px.x + approx_text_width(t.text, t.size_px), 640.0f) << name;
+        EXPECT_LE(text_box(t).x1, 640.0f) << name;
         EXPECT_GE(t.position_px.y, 0.0f) << name;
         EXPECT_LE(t.position_px.y + t.size_px, 360.0f) << name;
       }
@@ -285,7 +285,7 @@ TEST(Captions, SpeedBadgeSitsInTheCornerClearOfTheCaption) {
   ASSERT_TRUE(b);
   EXPECT_EQ(b->text, "×1/8 slow motion");
   EXPECT_LE(b->position_px.y + b->size_px, 720.0f);
-  EXPECT_LE(b->position_px.x + approx_text_width(b->text, b->size_px), 1280.0f);
+  EXPECT_LE(text_box(*b).x1, 1280.0f);
   EXPECT_GT(b->position_px.x, 640.0f);
   // A long caption shown with it wraps narrower, its lines and backdrop left of the badge.
   std::string text = "a long caption";
@@ -293,7 +293,7 @@ TEST(Captions, SpeedBadgeSitsInTheCornerClearOfTheCaption) {
   const std::vector<TextItem> lines = caption_items(text, 1.0f, 1280, 720, 1280.0f - b->position_px.x);
   ASSERT_GE(lines.size(), 2u);
   EXPECT_LT(lines.front().backdrop_px.z, b->position_px.x);
-  for (const TextItem& t : lines) EXPECT_LT(t.position_px.x + approx_text_width(t.text, t.size_px), b->position_px.x);
+  for (const TextItem& t : lines) EXPECT_LT(text_box(t).x1, b->position_px.x);
 }
 
 TEST(StripChart, SlowedStretchesAreShadedBandsWithTheirSpeed) {

@@ -16,6 +16,7 @@
 #include "viz/palette.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/sphere_camera.hpp"
+#include "viz/font_metrics.hpp"
 #include "viz/text_layout.hpp"
 
 namespace tumble::viz {
@@ -37,9 +38,14 @@ TEST(TextLayout, WrapsAtTheWidthAndKeepsExplicitBreaks) {
   EXPECT_LE(text_width(w, 20), 250.0f);
   EXPECT_GE(text_lines(w), 3);
   EXPECT_NE(w.find("\nSecond line"), std::string::npos);
-  // Widths follow DejaVu Sans: "ω₁" is an ω (0.84 em) and a subscript (0.40 em).
-  EXPECT_NEAR(text_width("\u03c9\u2081", 100), 124.0f, 1.0f);
-  EXPECT_NEAR(text_width("Hi", 100), 75.2f + 27.8f, 0.5f);
+  // Widths follow DejaVu Sans drawn at the renderer's scale, where the size is
+  // ascent − descent (2384 font units; an em is 2048): "H" advances 1540 units.
+  EXPECT_NEAR(glyph_metrics(U'H').advance, 1540.0f / 2384.0f, 1e-4f);
+  // The ink runs from H's left outline edge over its advance to i's right edge.
+  const GlyphMetrics &h = glyph_metrics(U'H'), &i = glyph_metrics(U'i');
+  EXPECT_NEAR(text_width("Hi", 100), 100 * (h.advance - h.ink_x0 + i.ink_x1), 1e-3f);
+  EXPECT_NEAR(text_width("Hi", 200), 2 * text_width("Hi", 100), 1e-3f);
+  EXPECT_NEAR(text_box({"Hi", {10, 0}, 100, {0, 0, 0, 1}}).x0, 10 + 100 * h.ink_x0, 1e-3f);
 }
 
 TEST(Key, EntriesSitOnTheBackdropWithoutOverlapping) {

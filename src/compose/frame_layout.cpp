@@ -1,0 +1,156 @@
+#include "compose/frame_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "compose/view_layout.hpp"
+#include "viz/captions.hpp"
+
+namespace tumble::compose {
+
+namespace {
+
+// A key beside its content leaves the content at least this much of the view's width.
+constexpr float kMinContentShare = 0.45f;
+
+std::string px(float v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.0f px", static_cast<double>(v));
+  return s;
+}
+
+std::string view_name(std::size_t i, const ViewNeeds& v) {
+  return "view " + std::to_string(i) + (v.title.empty() ? "" : " ('" + v.title + "')");
+}
+
+// The caption strip: as tall as the longest caption wraps (viz::caption_items
+// places each inside it), the speed badge at its right.
+void plan_captions(const FrameNeeds& n, FramePlan& p) {
+  const float fh = static_cast<float>(n.height);
+  float top = fh;
+  if (const auto badge = viz::speed_badge(n.badge, true, n.width, n.height)) {
+    p.badge_side = static_cast<float>(n.width) - badge->position_px.x;
+    top = std::min(top, badge->position_px.y - 0.3f * badge->size_px);
+  }
+  for (const std::string& c : n.captions)
+    for (const viz::TextItem& t : viz::caption_items(c, 1.0f, n.width, n.height, p.badge_side))
+      if (t.backdrop.a > 0) top = std::min(top, t.backdrop_px.y - 0.25f * viz::text_px(viz::TextRole::caption, n.height));
+  if (top >= fh) return;
+  const float h = fh - std::floor(top);
+  if (n.caption_side == FrameNeeds::CaptionSide::top) {
+    p.captions = {0, 0, static_cast<float>(n.width), h};
+    p.caption_shift = -(fh - h);
+  } else {
+    p.captions = {0, fh - h, static_cast<float>(n.width), fh};
+  }
+}
+
+void plan_legend(const FrameNeeds& n, FramePlan& p) {
+  if (n.legend.empty()) return;
+  p.legend_px = viz::text_px(viz::TextRole::key, n.height);
+  const float pad = 0.5f * p.legend_px;
+  const int lines = viz::text_lines(viz::wrap_text(n.legend, p.legend_px, static_cast<float>(n.width) - 2 * pad));
+  const float h = std::ceil(static_cast<float>(lines) * p.legend_px + 2 * pad);
+  const float bottom = p.captions.y1 > p.captions.y0 && p.captions.y0 > 0 ? p.captions.y0 : static_cast<float>(n.height);
+  p.legend = {0, bottom - h, static_cast<float>(n.width), bottom};
+}
+
+// The views' area: the frame less the caption and legend strips.
+viz::Box views_area(const FrameNeeds& n, const FramePlan& p) {
+  viz::Box a{0, 0, static_cast<float>(n.width), static_cast<float>(n.height)};
+  if (p.captions.y1 > p.captions.y0) {
+    if (p.captions.y0 <= 0) a.y0 = p.captions.y1;  // the strip at the top
+    else a.y1 = p.captions.y0;
+  }
+  if (p.legend.y1 > p.legend.y0) a.y1 = std::min(a.y1, p.legend.y0);
+  return a;
+}
+
+glm::dvec4 view_fractions(const FrameNeeds& n, const viz::Box& area, std::size_t i, int count) {
+  const double W = n.width, H = n.height, aw = area.x1 - area.x0, ah = area.y1 - area.y0;
+  std::array<double, 4> f;
+  if (n.views[i].viewport) {
+    f = *n.views[i].viewport;
+  } else {
+    const int cols = std::max(1, std::min(n.columns, count)), rows = (count + cols - 1) / cols;
+    const int c = static_cast<int>(i) % cols, r = static_cast<int>(i) / cols;
+    f = {double(c) / cols, double(r) / rows, 1.0 / cols, 1.0 / rows};
+  }
+  return {(area.x0 + f[0] * aw) / W, (area.y0 + f[1] * ah) / H, f[2] * aw / W, f[3] * ah / H};
+}
+
+// The title strip: the title wrapped to the view, then the overlay lines.
+float plan_title(const ViewNeeds& v, int frame_h, float pad, ViewPlan& vp) {
+  vp.title_px = viz::text_px(viz::TextRole::view_title, frame_h);
+  vp.overlay_px = viz::text_px(viz::TextRole::label, frame_h);
+  float bottom = 0;
+  if (!v.title.empty()) {
+    vp.title = viz::wrap_text(v.title, vp.title_px, static_cast<float>(vp.width) - 2 * pad);
+    vp.title_at = {pad, 0.35f * vp.title_px};
+    bottom = vp.title_at.y + static_cast<float>(viz::text_lines(vp.title)) * vp.title_px;
+  }
+  vp.overlay_y = bottom + (bottom > 0 ? 0.15f : 0.35f) * vp.overlay_px;
+  if (v.overlay_lines > 0) bottom = vp.overlay_y + static_cast<float>(v.overlay_lines) * vp.overlay_px;
+  return bottom > 0 ? bottom + 0.3f * vp.title_px : pad;
+}
+
+// The key strip beside the content (right), else below it, else nowhere (a note says why).
+void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float pad, ViewPlan& vp,
+              std::vector<std::string>& notes) {
+  const float w = static_cast<float>(vp.width), h = static_cast<float>(vp.height);
+  const float side = v.edge_to_edge ? 0.0f : pad;
+  vp.content = {side, top, w - side, h - side};
+  if (v.key.empty()) return;
+  vp.key_px = viz::text_px(viz::TextRole::key, frame_h);
+  if (vp.key_px < viz::kMinKeyPx) {
+    notes.push_back(view_name(i, v) + ": key left out in every frame: its text would be " + px(vp.key_px) +
+                    " high, under the " + px(viz::kMinKeyPx) + " a key needs to be read");
+    return;
+  }
+  const glm::vec2 ks = viz::key_size(v.key, vp.key_px);
+  const float beside_w = w - ks.x - 3 * pad, room_h = h - top - pad;
+  if (ks.y <= room_h && beside_w >= kMinContentShare * w) {
+    vp.key_at = glm::vec2(w - pad - ks.x, top);
+    vp.content.x1 = vp.key_at->x - pad;
+    return;
+  }
+  const float below_h = room_h - ks.y - pad;
+  if (ks.x <= w - 2 * pad && below_h >= kMinContentShare * (h - top)) {
+    vp.key_at = glm::vec2(pad, h - pad - ks.y);
+    vp.content.y1 = vp.key_at->y - pad;
+    return;
+  }
+  notes.push_back(view_name(i, v) + ": key left out in every frame: it is " + px(ks.x) + " × " + px(ks.y) +
+                  "; beside the content it would leave " + px(std::max(0.0f, beside_w)) + " of the view's " + px(w) +
+                  " width, below it " + px(std::max(0.0f, below_h)) + " of its " + px(h - top) +
+                  " height (a key needs the content to keep " + std::to_string(int(kMinContentShare * 100)) + " %)");
+}
+
+}  // namespace
+
+FramePlan plan_frame(const FrameNeeds& n) {
+  FramePlan p;
+  plan_captions(n, p);
+  plan_legend(n, p);
+  const viz::Box area = views_area(n, p);
+  const int count = static_cast<int>(n.views.size());
+  const float pad = 0.5f * viz::text_px(viz::TextRole::key, n.height);
+  for (std::size_t i = 0; i < n.views.size(); ++i) {
+    ViewPlan vp;
+    vp.viewport = view_fractions(n, area, i, count);
+    viz::View probe;
+    probe.viewport = vp.viewport;
+    const PixelRect r = view_rect(probe, static_cast<int>(i), count, 1, n.width, n.height);
+    vp.x = r.x, vp.y = r.y, vp.width = r.width, vp.height = r.height;
+    const float top = plan_title(n.views[i], n.height, pad, vp);
+    plan_key(n.views[i], i, n.height, top, pad, vp, p.notes);
+    if (vp.content.x1 - vp.content.x0 < 16 || vp.content.y1 - vp.content.y0 < 16)
+      p.notes.push_back(view_name(i, n.views[i]) + ": its title and key leave its content " +
+                        px(vp.content.x1 - vp.content.x0) + " × " + px(vp.content.y1 - vp.content.y0));
+    p.views.push_back(std::move(vp));
+  }
+  return p;
+}
+
+}  // namespace tumble::compose

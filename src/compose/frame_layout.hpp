@@ -1,0 +1,68 @@
+// A frame laid out like a textbook figure, once per video (docs/architecture.md,
+// "Layout rectangles"): the caption strip and the legend strip are taken from
+// the frame first; each view gets its rectangle of what is left, a title strip
+// (title, then the overlay lines), a key strip beside its content and the
+// content rectangle, where alone its 3D items are drawn. What does not fit is
+// left out and said (FramePlan::notes), never drawn over something else.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "viz/key.hpp"
+#include "viz/text_layout.hpp"
+
+namespace tumble::compose {
+
+/// What the layout needs to know of one view.
+struct ViewNeeds {
+  std::optional<std::array<double, 4>> viewport;  ///< x, y, w, h: fractions of the views' area; none: a grid cell
+  std::string title;
+  int overlay_lines = 0;                           ///< lines under the title (the overlay)
+  std::vector<viz::KeyEntry> key;                  ///< its key (none: no key strip)
+  bool edge_to_edge = false;                       ///< content without side margins (a plot draws its own)
+};
+
+struct FrameNeeds {
+  int width = 0, height = 0;
+  int columns = 1;                   ///< grid of the views without a viewport
+  std::vector<ViewNeeds> views;
+  std::vector<std::string> captions; ///< every caption's text
+  std::string badge;                 ///< the widest speed badge's text ("": none)
+  std::string legend;                ///< the classic legend line ("": none)
+  /// Where the caption strip goes. A hook for a declared caption position: top
+  /// moves the strip (and the views below it), nothing else changes.
+  enum class CaptionSide { bottom, top } caption_side = CaptionSide::bottom;
+};
+
+/// Where one view's parts go: `viewport` in frame fractions (render::view_rect
+/// turns it into `rect`), the rest in the view's own pixels.
+struct ViewPlan {
+  glm::dvec4 viewport{0, 0, 1, 1};
+  int x = 0, y = 0, width = 0, height = 0;  ///< the view, frame px
+  std::string title;                        ///< wrapped to the view
+  glm::vec2 title_at{0};                    ///< its pen, view px
+  float title_px = 0;
+  float overlay_y = 0, overlay_px = 0;      ///< the overlay lines' top, view px, and size
+  viz::Box content;                         ///< view px
+  std::optional<glm::vec2> key_at;          ///< the key backdrop's top-left, view px (none: not drawn)
+  float key_px = 0;
+};
+
+struct FramePlan {
+  std::vector<ViewPlan> views;
+  viz::Box captions;        ///< frame px (zero height: none)
+  float caption_shift = 0;  ///< px the captions move from their bottom place (a caption strip at the top)
+  float badge_side = 0;     ///< px the captions keep free at each side for the speed badge
+  viz::Box legend;          ///< frame px (zero height: none)
+  float legend_px = 0;
+  std::vector<std::string> notes;  ///< what was left out, where and why
+};
+
+FramePlan plan_frame(const FrameNeeds& needs);
+
+}  // namespace tumble::compose

@@ -1,0 +1,105 @@
+// The `body_frame` view kind: one body seen from a camera fixed in its own
+// axes (by default the scene camera's direction at t = 0), so the body stands
+// still while L and ω turn around it. It shows its own body only (no other
+// body crosses it); the camera backs off until the body and its arrows stay
+// inside the content rectangle in every frame.
+#include <algorithm>
+#include <cmath>
+
+#include "compose/camera_fit.hpp"
+#include "compose/panel.hpp"
+#include "compose/views/kinds.hpp"
+#include "core/dynamics.hpp"
+
+namespace tumble::compose {
+
+namespace {
+
+constexpr double kMargin = 0.04;
+constexpr long kFitSamples = 240;
+
+glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+// The camera at t = 0: aimed at the body from the view's azimuth and
+// elevation (default: the scene camera's direction), `distance` body radii away.
+viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, const scene::ViewCamera& c,
+                        const RigidBodyModel& m, const BodyState& s0) {
+  const glm::dvec3 d = glm::normalize(scene_cam.position - scene_cam.target);
+  const double az = c.azimuth_deg ? glm::radians(*c.azimuth_deg) : std::atan2(d.y, d.x);
+  const double el = c.elevation_deg ? glm::radians(*c.elevation_deg) : std::asin(std::clamp(d.z, -0.95, 0.95));
+  viz::Camera cam;
+  cam.fov_y_deg = s.render.camera.fov_y_deg;
+  const double r = viz::box_radius(m);
+  const double dist = c.distance.value_or(std::max(2.2, 1.15 / std::sin(glm::radians(cam.fov_y_deg) / 2))) * r;
+  cam.target = to_glm(s0.c);
+  cam.position = cam.target + dist * glm::dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+  cam.up = {0, 0, 1};
+  cam.near_m = 0.05 * dist;
+  cam.far_m = 20 * dist;
+  return cam;
+}
+
+class BodyFramePanel : public Panel {
+ public:
+  BodyFramePanel(const PanelContext& ctx, std::size_t index)
+      : ctx_(ctx), vc_(ctx.scene.render.explain.views[index]), body_(view_body(ctx, index)) {}
+  std::string name() const override { return "body_frame"; }
+  std::vector<std::string> overlay(long k) const override { return ctx_.world.overlay(0, k); }
+  int overlay_lines() const override { return ctx_.world.overlay_lines(0); }
+  std::vector<viz::KeyEntry> key() const override {
+    return ctx_.scene.render.explain.key ? bodies_key(ctx_, body_) : std::vector<viz::KeyEntry>{};
+  }
+
+  void fit(glm::vec2 size) override {
+    size_ = size;
+    const double aspect = size.x / std::max(size.y, 1.0f);
+    const scene::Run& run = ctx_.runs[0];
+    if (run.frames.empty()) return;
+    camera_ = body_camera(ctx_.scene, scene_camera(ctx_.scene, ctx_.runs, aspect), vc_.camera,
+                          ctx_.scene.bodies[body_].model, run.frames[0][body_]);
+    std::vector<Shot> shots;
+    const long n = static_cast<long>(run.frames.size());
+    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
+      const viz::View v = content(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
+      shots.push_back({v.camera, solid_points(v)});
+    }
+    camera_ = backed_off(camera_, backoff(shots, aspect, kMargin));
+  }
+
+  viz::View content(long k) const override {
+    const scene::Run& run = ctx_.runs[0];
+    const long kk = last_frame(run, k);
+    viz::Camera cam = camera_;
+    if (kk >= 0) {
+      // The camera keeps its offset (and, following, its up) in the body's own axes.
+      const RigidBodyModel& m = ctx_.scene.bodies[body_].model;
+      const BodyState& s0 = run.frames[0][body_];
+      const BodyState& sk = run.frames[static_cast<std::size_t>(kk)][body_];
+      const Eigen::Quaterniond turn = vc_.camera.follow.value_or(true)
+                                          ? Eigen::Quaterniond(cloud_orientation(m, sk) * cloud_orientation(m, s0).conjugate())
+                                          : Eigen::Quaterniond::Identity();
+      const glm::dvec3 off = cam.position - cam.target;
+      cam.target = to_glm(sk.c);
+      cam.position = cam.target + to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
+      cam.up = to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
+    }
+    viz::View v = ctx_.world.view(0, k, cam, int(size_.x), int(size_.y), body_);
+    v.name = name();
+    return v;
+  }
+
+ private:
+  const PanelContext& ctx_;
+  const scene::ViewConfig& vc_;
+  std::size_t body_;
+  glm::vec2 size_{1, 1};
+  viz::Camera camera_;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_body_frame(const PanelContext& ctx, std::size_t index) {
+  return std::make_unique<BodyFramePanel>(ctx, index);
+}
+
+}  // namespace tumble::compose

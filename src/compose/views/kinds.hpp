@@ -1,0 +1,30 @@
+// The makers of the view kinds, one file each (compose/views/*.cpp), and what
+// they share; the table kViewKinds (view_kinds.cpp) names each kind's maker.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compose/panel.hpp"
+
+namespace tumble::compose {
+
+std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index);
+std::unique_ptr<Panel> make_body_frame(const PanelContext& ctx, std::size_t index);
+std::unique_ptr<Panel> make_momentum_sphere(const PanelContext& ctx, std::size_t index);
+std::unique_ptr<Panel> make_plot(const PanelContext& ctx, std::size_t index);
+std::unique_ptr<Panel> make_poinsot(const PanelContext& ctx, std::size_t index);
+
+/// The key of a view of bodies: axes, L and ω as drawn, then each body (or `only` that one) by name.
+std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only);
+
+/// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).
+double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0);
+
+/// The index of the body `[[views]]` table `index` names (the first when it names none).
+std::size_t view_body(const PanelContext& ctx, std::size_t index);
+
+}  // namespace tumble::compose

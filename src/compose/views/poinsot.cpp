@@ -1,0 +1,91 @@
+// The `poinsot` view kind: Poinsot's construction (viz/poinsot.hpp), the
+// inertia ellipsoid rolling on the invariable plane, its camera backed off
+// until the construction, its arrows and both curves of the whole video stay
+// inside the content rectangle; its key beside it.
+#include <algorithm>
+
+#include "compose/camera_fit.hpp"
+#include "compose/panel.hpp"
+#include "compose/views/kinds.hpp"
+#include "core/dynamics.hpp"
+#include "viz/poinsot.hpp"
+
+namespace tumble::compose {
+
+namespace {
+
+constexpr double kMargin = 0.04;
+constexpr long kFitSamples = 120;
+
+class PoinsotPanel : public Panel {
+ public:
+  PoinsotPanel(const PanelContext& ctx, std::size_t index)
+      : ctx_(ctx), vc_(ctx.scene.render.explain.views[index]), body_(view_body(ctx, index)) {}
+  std::string name() const override { return "poinsot"; }
+  std::vector<viz::KeyEntry> key() const override {
+    return ctx_.scene.render.explain.key ? viz::poinsot_key() : std::vector<viz::KeyEntry>{};
+  }
+
+  void fit(glm::vec2 size) override {
+    size_ = size;
+    if (ctx_.runs.empty() || ctx_.runs[0].frames.empty()) return;
+    const long n = static_cast<long>(ctx_.runs[0].frames.size());
+    std::vector<Shot> shots;
+    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
+      const viz::View v = build(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
+      Shot s{v.camera, solid_points(v)};
+      for (const viz::PolylineItem& l : v.polylines)
+        if (!l.name.empty()) s.points.insert(s.points.end(), l.points.begin(), l.points.end());
+      shots.push_back(std::move(s));
+    }
+    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kMargin);
+  }
+
+  viz::View content(long k) const override {
+    if (ctx_.runs.empty()) return {};
+    const long kk = last_frame(ctx_.runs[0], k);
+    if (kk < 0) return {};
+    viz::View v = build(kk);
+    v.camera = backed_off(v.camera, backoff_);
+    return v;
+  }
+
+ private:
+  viz::View build(long kk) const {
+    const scene::Run& run = ctx_.runs[0];
+    const RigidBodyModel& m = ctx_.scene.bodies[body_].model;
+    const BodyState& s = run.frames[static_cast<std::size_t>(kk)][body_];
+    viz::PoinsotInput in;
+    in.q = s.q;
+    in.inertia = m.inertia;
+    in.L = s.L;
+    for (std::size_t j = 0; j < run.path_end(kk); ++j) {  // with sub-frame samples: smooth curves
+      in.omega_principal_history.push_back(omega_principal(m, run.path[j][body_]));
+      in.omega_world_history.push_back(omega_world(m, run.path[j][body_]));
+    }
+    const scene::ViewCamera& c = vc_.camera;
+    in.camera.azimuth_deg = c.azimuth_deg.value_or(in.camera.azimuth_deg);
+    in.camera.elevation_deg = c.elevation_deg.value_or(in.camera.elevation_deg);
+    in.camera.distance = c.distance.value_or(in.camera.distance);
+    in.key = false;  // the layout draws it, beside the content
+    in.width_px = size_.x, in.height_px = size_.y;
+    in.frame_h = ctx_.frame_h;
+    viz::View v;
+    viz::build_poinsot(v, in);
+    return v;
+  }
+
+  const PanelContext& ctx_;
+  const scene::ViewConfig& vc_;
+  std::size_t body_;
+  glm::vec2 size_{1, 1};
+  double backoff_ = 1;
+};
+
+}  // namespace
+
+std::unique_ptr<Panel> make_poinsot(const PanelContext& ctx, std::size_t index) {
+  return std::make_unique<PoinsotPanel>(ctx, index);
+}
+
+}  // namespace tumble::compose
