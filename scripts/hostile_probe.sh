@@ -56,7 +56,7 @@ run() {
   if [ $rc -eq 137 ]; then verdict="HANG (killed at 20 s)"
   elif [ $rc -gt 128 ]; then verdict="CRASH (signal $((rc - 128)))"
   elif grep -q "internal error" err.txt; then verdict="internal error, exit $rc"
-  elif ! grep -qE "^($expect)$" <<<"$rc"; then verdict="exit $rc (wanted $expect)"
+  elif ! grep -qE "^($expect)$" <<<"$rc"; then verdict="exit $rc (wanted ${expect//|/ or })"
   elif ! sha256sum -c --quiet sums.before >/dev/null 2>&1; then verdict="INPUT CHANGED, exit $rc"
   elif [ -n "$check" ] && ! (eval "$check") >/dev/null 2>&1; then verdict="check failed ($check), exit $rc"
   else verdict="ok: exit $rc"
