@@ -89,30 +89,30 @@ TEST_F(HostileOutput, ACsvOntoAFifoOrDeviceIsRefusedAndLeftAsItWas) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("is a FIFO (named pipe), not a regular file"), std::string::npos) << r.err;
   EXPECT_TRUE(is_fifo(pipe)) << "the FIFO was replaced";
+  r = bounded("simulate '" + scene.string() + "' --csv -");  // what to give instead: standard output
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("t,body,", 0), 0u) << r.out;
   // A character device: as root the rename used to turn /dev/null into a
   // regular file. Root gets a null device of its own here, so a broken tumble
-  // breaks only that one; anyone else uses /dev/null, whose folder they cannot write.
+  // breaks only that one; anyone else uses /dev/null, whose folder they cannot
+  // write. Root without CAP_MKNOD (some containers) has no device to offer:
+  // the FIFO above stands for the special files then.
   const fs::path null = ::geteuid() == 0 ? dir_ / "null" : fs::path("/dev/null");
-  if (::geteuid() == 0) {
-    ASSERT_EQ(::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)), 0);
-  }
+  if (::geteuid() == 0 && ::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0) return;
   r = bounded("simulate '" + scene.string() + "' --csv '" + null.string() + "'");
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find(null.string() + ": is a character device"), std::string::npos) << r.err;
   struct stat st {};
   ASSERT_EQ(::stat(null.c_str(), &st), 0);
   EXPECT_TRUE(S_ISCHR(st.st_mode)) << null << " was replaced";
-  r = bounded("simulate '" + scene.string() + "' --csv -");  // what to give instead: standard output
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out.rfind("t,body,", 0), 0u) << r.out;
 }
 
 TEST_F(HostileOutput, AnEmptyPathIsRefusedNotTakenAsTheDefault) {
   const fs::path scene = cloud_scene();
   const std::string in_dir = "cd '" + dir_.string() + "' &&";
   for (const char* args : {"render s.toml -o ''", "render s.toml --layout ''", "simulate s.toml --csv ''",
-                                  "export s.toml --gltf ''", "golden s.toml --dir '' --frames 1 --physics-only",
-                                  "assemble ''", "info ''"}) {
+                           "export s.toml --gltf ''", "golden s.toml --dir '' --frames 1 --physics-only",
+                           "assemble ''", "info ''"}) {
     SCOPED_TRACE(args);
     const Result r = bounded(args, 20, in_dir);
     EXPECT_EQ(r.code, 2) << r.err;
