@@ -28,6 +28,9 @@ struct GpuPaths {
 /// TUMBLE_GPU_PATHS overrides: "auto", "none", or a comma list of "pbo" and
 /// "fxaa". Throws std::invalid_argument naming the variable on other values.
 GpuPaths default_gpu_paths(const GlContext& context);
+/// The paths env TUMBLE_GPU_PATHS asks for on a GPU of that kind; throws
+/// std::invalid_argument naming the variable, so it can be checked before work.
+GpuPaths gpu_paths_from_env(bool hardware_gpu);
 GpuPaths parse_gpu_paths(std::string_view text, bool hardware_gpu);
 
 class Renderer {

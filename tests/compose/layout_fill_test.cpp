@@ -87,8 +87,11 @@ TEST(LayoutFill, RepeatedKeysBecomeOneFrameKeyInItsOwnStrip) {
     const viz::Box tb = viz::text_box(t);
     EXPECT_GE(tb.x0, b.x0);
     EXPECT_LE(tb.x1, b.x1 + 0.5f);
-    for (const viz::TextItem& u : dl.texts)
-      if (&u != &t) EXPECT_FALSE(tb.overlaps(viz::text_box(u))) << t.text << " / " << u.text;
+    for (const viz::TextItem& u : dl.texts) {
+      if (&u != &t) {
+        EXPECT_FALSE(tb.overlaps(viz::text_box(u))) << t.text << " / " << u.text;
+      }
+    }
   }
 }
 
