@@ -1,6 +1,7 @@
 #!/bin/sh
 # Regenerates the README's frames (docs/demo_frame.png, docs/explained_*.png,
-# docs/poinsot_*.png, docs/tennis_racket_flip.png): the demo and a few frames
+# docs/poinsot_*.png, docs/tennis_racket_flip.png, docs/methods_compare_frame.png)
+# and the lessons' storyboards (docs/storyboard_<scene>.png): the demo and a few frames
 # of the explanatory scenes rendered at 960x540 (`tumble info` lists what each frame shows); at
 # 640x360 the keys' text is ~6.5 px and thin stems (l, i, I) drop out.
 set -eu
@@ -14,14 +15,21 @@ fi
 # scene frame docs-name: frame 40 = the title card; 480 = the hold at the
 # first flip (t = 1.80 s); 900 = t = 4.0 s; poinsot 450 = t = 3 s;
 # tennis_racket 300 = the hold at the middle racket's first flip (t = 0.57 s);
-# dzhanibekov 120 = t = 4 s, the demo.
+# dzhanibekov 120 = t = 4 s, the demo; methods_compare 450 = t = 6 s, explicit
+# Euler already off.
 for spec in "dzhanibekov 120 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 480 explained_flip" \
             "dzhanibekov_explained 900 explained_after" "poinsot 450 poinsot_3s" \
-            "tennis_racket 300 tennis_racket_flip"; do
+            "tennis_racket 300 tennis_racket_flip" "methods_compare 450 methods_compare_frame"; do
   set -- $spec
   "$tumble" render "scenes/$1.toml" --frames "$2:$2" --width 960 --height 540 --video none --progress none \
     --force -o "$out/$1" >/dev/null
   png=$(printf '%s/%s/frame_%06d.png' "$out" "$1" "$2")
   cp "$png" "docs/$3.png.tmp"
   mv "docs/$3.png.tmp" "docs/$3.png"
+done
+# The storyboards: 8 frames spread over each lesson and one at every event, drawn
+# at 960x540 and shown 400 px wide (tumble storyboard).
+for scene in dzhanibekov_explained tennis_racket poinsot methods_compare dzhanibekov; do
+  "$tumble" storyboard "scenes/$scene.toml" --width 960 --height 540 -n 8 --tile-width 400 --progress none \
+    -o "docs/storyboard_$scene.png" >/dev/null
 done

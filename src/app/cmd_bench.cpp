@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "core/input_file.hpp"
 #include "bench/bench.hpp"
 #include "io/atomic_file.hpp"
 #ifdef TUMBLE_HAVE_RENDER
@@ -48,16 +49,16 @@ int run_scene_study(const BenchCliOptions& o) {
 /// The text of `file`, checked to hold the <!-- BEGIN/END `marker` --> lines
 /// (before minutes of measuring).
 std::string read_markers(const std::string& file, const std::string& marker) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError("--readme-table: cannot read " + file);
-  std::stringstream text;
-  text << in.rdbuf();
+  // A regular file only, read without blocking (a FIFO there would hang us);
+  // it is rewritten in place, so it is not an input that outputs must avoid.
+  constexpr std::size_t kMaxReadmeBytes = std::size_t{16} << 20;
+  const std::string text = read_input_file(file, kMaxReadmeBytes, "--readme-table file", ReadRole::own_output);
   try {
-    bench::replace_between_markers(text.str(), marker, "");
+    bench::replace_between_markers(text, marker, "");
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.what());
   }
-  return text.str();
+  return text;
 }
 
 int rewrite_readme(const std::string& file) {
@@ -124,7 +125,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   auto o = std::make_shared<BenchCliOptions>();
   CLI::App* cmd = app.add_subcommand("bench", "Work-precision, convergence, stability and drift of every method (+ peers)");
   cmd->add_flag("--quick", o->studies.quick, "Small sweeps and short timing batches (under a minute)");
-  cmd->add_option("-o,--out", o->studies.out_dir, "Output folder for CSV, PNG and summary.md")->capture_default_str();
+  cmd->add_option("-o,--out", o->studies.out_dir, "Output folder for CSV, PNG and summary.md")->capture_default_str()->check(kPath);
   auto* render = cmd->add_flag("--render", o->render,
                                "Measure frames/s of the demo render (1280x720, FXAA and 4x MSAA), FXAA's pixels "
                                "against 4x MSAA, and frames/s of a 198k-particle solid instead");
@@ -140,7 +141,8 @@ void add_bench_command(CLI::App& app, Action& action) {
   cmd->add_option("--readme-table", o->readme,
                   "Recompute the README's accuracy table and write it between the <!-- BEGIN/END "
                   "bench:accuracy-table --> lines of this file (with --render: the render figures, between "
-                  "the bench:render lines)");
+                  "the bench:render lines)")
+      ->check(kPath);
   cmd->callback([o, &action] { action = [o]() -> int { return run_bench(*o); }; });
 }
 

@@ -14,6 +14,7 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "golden/compare.hpp"
+#include "io/atomic_file.hpp"
 #include "io/png.hpp"
 
 namespace tumble::app {
@@ -40,8 +41,11 @@ void check_diff_path(const CompareCliOptions& o) {
   for (const std::string& in : {o.a, o.b})
     if (fs::equivalent(d, in, ec) || fs::weakly_canonical(d, ec) == fs::weakly_canonical(in, ec))
       throw InputError("--diff " + o.diff + ": is the input " + in + "; writing it would destroy that image; choose another path");
-  if (fs::exists(d, ec) && !fs::is_regular_file(d, ec))
-    throw InputError("--diff " + o.diff + ": exists and is not a regular file");
+  try {  // the policy of every output (io/atomic_file.hpp): no input by identity, no special file
+    io::check_output_target(d, "--diff");
+  } catch (const io::IoError& e) {
+    throw InputError(e.what());  // compare's bad options are exit 2
+  }
   const fs::path dir = d.parent_path().empty() ? fs::path(".") : d.parent_path();
   const fs::path probe = dir / (".tumble-diff-probe-" + std::to_string(::getpid()));
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
@@ -52,15 +56,15 @@ void check_diff_path(const CompareCliOptions& o) {
 
 int run_compare(const CompareCliOptions& o) {
   golden::check_compare_options(o.cmp);
-  if (!o.diff.empty()) check_diff_path(o);
   io::Image a, b;
-  try {
+  try {  // read first (cheap), so the inputs are known to the output policy below
     a = io::read_png(o.a);
     b = io::read_png(o.b);
   } catch (const std::exception& e) {
     std::cerr << "tumble compare: " << e.what() << "\n";
     return kInputError;
   }
+  if (!o.diff.empty()) check_diff_path(o);
   const golden::Comparison c = golden::compare_images(a, b, o.cmp);
   std::cout << (c.pass ? "same: " : "different: ") << c.summary << "\n";
   if (!c.size_mismatch) {
@@ -105,9 +109,9 @@ void add_compare_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "compare",
                                     "Compare two PNGs as golden images (exit 0 same, "
                                     "1 different, 2 bad input)", run_compare);
-  cmd->add_option("actual", o->a, "PNG (e.g. a new render)")->required();
-  cmd->add_option("expected", o->b, "PNG (e.g. the golden)")->required();
-  cmd->add_option("--diff", o->diff, "Write |actual - expected| x16 as a PNG");
+  cmd->add_option("actual", o->a, "PNG (e.g. a new render)")->required()->check(kPath);
+  cmd->add_option("expected", o->b, "PNG (e.g. the golden)")->required()->check(kPath);
+  cmd->add_option("--diff", o->diff, "Write |actual - expected| x16 as a PNG")->check(kPath);
   add_golden_tolerance_options(cmd, o->cmp);
 }
 

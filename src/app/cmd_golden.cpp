@@ -13,6 +13,7 @@
 #include "golden/report.hpp"
 #include "golden/trajectory.hpp"
 #include "render/gl_context.hpp"
+#include "render/renderer.hpp"
 #include "run/golden_check.hpp"
 #include "scene/frame_settings.hpp"
 
@@ -43,6 +44,11 @@ int run_golden(const GoldenOptions& o) {
   // GL is set up like an option, before any file is written: an unknown
   // backend or a machine without GL must not leave a half-updated golden set.
   const render::GlBackend backend = o.physics_only ? render::GlBackend::osmesa : parse_backend_option(o.gl);
+  try {
+    (void)render::gpu_paths_from_env(false);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
   const std::unique_ptr<render::GlContext> ctx = o.physics_only ? nullptr : render::create_gl_context(backend);
   // The size goes through the scene reader, which checks it as it checks a scene's.
   const scene::Scene s = load_scene_verbose(
@@ -55,8 +61,15 @@ int run_golden(const GoldenOptions& o) {
   fs::create_directories(o.dir, ec);
   if (ec) throw io::IoError("cannot create " + o.dir + ": " + ec.message());
 
-  const run::SceneFrames frames(s, ks.back());
+  // An earlier report is checked (and cleared) before the work.
   golden::Report report(report_dir, "tumble golden: " + s.name + " (" + s.path.string() + ")");
+  const run::SceneFrames frames(s, ks.back());
+  // A single run that diverged before the last golden frame has no goldens to
+  // make or check: exit 3 (as every command), before any golden is written. (In
+  // a [compare] scene a method that fails is part of the picture.)
+  if (frames.runs().size() == 1)
+    if (const scene::Run& r = frames.runs()[0]; r.diverged && static_cast<long>(r.frames.size()) <= ks.back())
+      throw Diverged(*r.diverged + "; no golden was written or checked", 0, static_cast<long>(r.frames.size()));
   run::GoldenCheck g{s, frames, ks, o.dir, report, std::cout, o.update, o.every, o.cmp, o.tol};
   g.check_physics();
   if (ctx)
@@ -86,13 +99,14 @@ void add_golden_command(CLI::App& app, Action& action) {
                   "Times in s, comma-separated (decimals or fractions such as 1/30); each picks the nearest frame");
   cmd->add_option("--frames", o->frames, "Frame numbers instead of --at, comma-separated (frame k shows t = k/fps)");
   cmd->add_option("--dir", o->dir, "Folder of the goldens (<name>_f<frame>_msaa<N>.png/.json or _fxaa, <name>.trajectory.csv)")
-      ->required();
+      ->required()
+      ->check(kPath);
   cmd->add_flag("--update", o->update, "Write the goldens from this run instead of checking them");
   cmd->add_option("--msaa", o->msaa, "MSAA samples, a list of 0, 2, 4 (default: the scene's aa)");
   cmd->add_option("--aa", o->aa, "Anti-aliasing, a list of fxaa, none, msaa2, msaa4 (default: the scene's)");
   cmd->add_option("--width", o->width, "Image width, px (default 320)");
   cmd->add_option("--height", o->height, "Image height, px (default 240)");
-  cmd->add_option("--report", o->report, "Folder of the failure report (default golden-report/<scene name>)");
+  cmd->add_option("--report", o->report, "Folder of the failure report (default golden-report/<scene name>)")->check(kPath);
   cmd->add_option("--every", o->every, "Golden trajectory: every N-th frame up to the last time (default 10)");
   cmd->add_option("--rtol", o->tol.rtol, "Trajectory relative tolerance (default 1e-6)");
   cmd->add_option("--atol", o->tol.atol, "Trajectory absolute tolerance, SI units (default 1e-9)");

@@ -32,7 +32,7 @@ std::string order_text(const MethodInfo& i) {
 }
 
 int rewrite_readme(const std::string& file) {
-  const std::string text = read_input_file(file, kMaxReadmeBytes, "--readme file");
+  const std::string text = read_input_file(file, kMaxReadmeBytes, "--readme file", ReadRole::own_output);  // rewritten in place
   std::string updated;
   try {
     updated = bench::replace_between_markers(text, kMarker, methods_markdown());
@@ -62,7 +62,8 @@ void add_methods_command(CLI::App& app, Action& action) {
   auto* md = cmd->add_flag("--markdown", o->markdown, "Print the README's markdown table instead");
   cmd->add_option("--readme", o->readme,
                   "Write the markdown table between the <!-- BEGIN/END methods --> lines of this file")
-      ->excludes(md);
+      ->excludes(md)
+      ->check(kPath);
   cmd->callback([o, &action] {
     action = [o]() -> int {
       if (!o->readme.empty()) return rewrite_readme(o->readme);

@@ -7,7 +7,9 @@
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
+#include "io/atomic_file.hpp"
 #include "render/gl_context.hpp"
+#include "render/renderer.hpp"
 #include "render/worker_threads.hpp"
 #include "run/layout_run.hpp"
 #include "run/render_folder.hpp"
@@ -91,6 +93,7 @@ RenderPlan plan_render(const RenderOptions& o) {
   std::optional<int> gpu = o.gpu;
   try {  // the environment's values are checked before any work, as the options are
     jobs = render::worker_threads(o.jobs);
+    (void)render::gpu_paths_from_env(false);  // TUMBLE_GPU_PATHS, read again once the GL context is known
     if (!gpu && backend == render::GlBackend::egl) gpu = render::default_egl_device();
   } catch (const std::invalid_argument& e) {
     throw InputError(e.what());
@@ -108,8 +111,9 @@ RenderPlan plan_render(const RenderOptions& o) {
 
 // --layout FILE: the layout report of the asked frames, no pixels (no GL, no output folder).
 int run_layout(const RenderOptions& o) {
-  const run::LayoutSummary r =
-      run::write_layout_report(load_scene_verbose(o.scene, scene_overrides(o)), o.frames, o.layout);
+  const scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  io::check_output_file("--layout", o.layout);  // after the load: no spelling of the scene (or its meshes) passes
+  const run::LayoutSummary r = run::write_layout_report(s, o.frames, o.layout);
   for (const std::string& note : r.notes) std::cerr << "tumble: warning: " << note << "\n";
   std::cout << "wrote the layout of frames " << r.first << ".." << r.last << " of " << r.count << " (" << r.width
             << "x" << r.height << ") to " << o.layout << "\n";
@@ -131,7 +135,7 @@ int run_render(const RenderOptions& o) {
 void add_render_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "render",
                                     "Render a scene headless to PNG frames, a manifest and a video", run_render);
-  cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)");
+  cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)")->check(kPath);
   add_frame_override_options(cmd, o->frame);
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
@@ -144,7 +148,8 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
   cmd->add_option("--layout", o->layout,
                   "Write only the layout report, JSON Lines (frame, view, name, kind, box, visible per drawn item), "
-                  "to this file: no pixels, no output folder");
+                  "to this file: no pixels, no output folder")
+      ->check(kPath);
   cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
   cmd->add_option("--gpu", o->gpu,
                   "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "

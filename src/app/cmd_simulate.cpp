@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -94,16 +95,40 @@ void step_rows(const SimulateOptions& o, const scene::Scene& s, Propagators& pro
   }
 }
 
+/// Where the rows go: the CSV file, written atomically, or standard output
+/// for `--csv -` (the way to discard them, `> /dev/null`, since no output of
+/// tumble's is written onto a device).
+class RowSink {
+ public:
+  explicit RowSink(const std::string& csv) {
+    if (csv != "-") file_ = std::make_unique<io::AtomicFile>(csv);
+  }
+  void write(std::string_view rows) {
+    if (file_) return file_->write(rows);
+    if (!std::cout.write(rows.data(), static_cast<std::streamsize>(rows.size())))
+      throw io::IoError("cannot write the CSV to standard output");
+  }
+  void commit() {
+    if (file_) return file_->commit();
+    if (!std::cout.flush()) throw io::IoError("cannot write the CSV to standard output");
+  }
+
+ private:
+  std::unique_ptr<io::AtomicFile> file_;
+};
+
 int run_simulate(const SimulateOptions& o) {
-  io::check_output_file("--csv", o.csv);
+  const bool to_stdout = o.csv == "-";
+  if (!to_stdout) io::check_output_file("--csv", o.csv);
   scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
+  if (!to_stdout) io::check_output_file("--csv", o.csv);  // again, now that the scene, clouds and meshes are known inputs
   check_sampling(o, s);
   Propagators props = make_propagators(s);
   // Ctrl-C / SIGTERM: stop at the next row, write nothing (the temp file goes
   // with `out`), and leave an existing CSV as it was.
   const StopSignals stop;
   struct Stopped {};
-  io::AtomicFile out(o.csv);
+  RowSink out(o.csv);
   std::string buf = std::string(io::kTrajectoryHeader) + io::kSimulateExtraColumns + "\n";
   auto flush = [&] {
     out.write(buf);
@@ -117,15 +142,17 @@ int run_simulate(const SimulateOptions& o) {
     });
   } catch (const Stopped&) {
     const int sig = stop.received();
-    std::cerr << "tumble: interrupted (" << (sig == SIGINT ? "SIGINT" : "SIGTERM") << "): no CSV written; "
-              << o.csv << " is as it was before the run\n";
+    std::cerr << "tumble: interrupted (" << (sig == SIGINT ? "SIGINT" : "SIGTERM") << "): "
+              << (to_stdout ? "the CSV on standard output stops short\n"
+                            : "no CSV written; " + o.csv + " is as it was before the run\n");
     return 128 + sig;
   } catch (const Diverged& e) {
     // Keep what was computed: the rows up to the failure are valid.
     flush();
     out.commit();
     std::cerr << "tumble: " << e.what() << "\n"
-              << "tumble: kept the rows computed before the failure in " << o.csv << "\n";
+              << "tumble: kept the rows computed before the failure " << (to_stdout ? "on standard output" : "in " + o.csv)
+              << "\n";
     return kDiverged;
   }
   flush();
@@ -142,7 +169,9 @@ int run_simulate(const SimulateOptions& o) {
 void add_simulate_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "simulate",
                                     "Integrate a scene and write a CSV of the states", run_simulate);
-  cmd->add_option("--csv", o->csv, "Output CSV file (written atomically)")->required();
+  cmd->add_option("--csv", o->csv, "Output CSV file (written atomically), or - for standard output")
+      ->required()
+      ->check(kPath);
   o->method_opt = cmd->add_option("--method", o->method, "auto or " + method_list());
   o->dt_opt = cmd->add_option("--dt", o->dt, "Step size, s (overrides the scene)");
   o->duration_opt = cmd->add_option("--duration", o->duration, "Run length, s (overrides the scene)");

@@ -28,8 +28,9 @@ struct StoryboardOptions {
   std::optional<int> gpu;
 };
 
-// The sheet's path, checked before any work: a .png file name in a folder we
-// can write (the default folder out/ is made), never the scene itself.
+// The sheet's path, checked before any work by the files policy
+// (io::check_output_file): a .png file name in a folder we can write (the
+// default folder out/ is made), never an input of the run.
 fs::path output_path(const StoryboardOptions& o, const scene::Scene& s) {
   fs::path out = o.out;
   if (out.empty()) {
@@ -38,10 +39,7 @@ fs::path output_path(const StoryboardOptions& o, const scene::Scene& s) {
   }
   if (out.extension() != ".png")
     throw InputError("-o " + out.string() + ": expected a file name ending in .png (the sheet is a PNG)");
-  io::check_output_file("-o", out);
-  std::error_code ec;
-  if (fs::equivalent(out, s.path, ec))
-    throw InputError("-o " + out.string() + ": is the scene file; choose another path");
+  io::check_output_file("-o", out);  // after the load: no spelling of the scene (or its meshes) passes
   return out;
 }
 
@@ -76,7 +74,7 @@ void add_storyboard_command(CLI::App& app, Action& action) {
                                     "One PNG contact sheet of a scene's video: frames spread over it and one at "
                                     "every event (flips, speed changes, holds, captions), each labelled",
                                     run_storyboard);
-  cmd->add_option("-o,--out", o->out, "The sheet, a .png file (default out/<scene name>_storyboard.png)");
+  cmd->add_option("-o,--out", o->out, "The sheet, a .png file (default out/<scene name>_storyboard.png)")->check(kPath);
   cmd->add_option("-n,--frames", o->spread, "Frames spread evenly over the video, first and last included, besides "
                                             "one at every event (default 12; 0: the events only)")
       ->check(CLI::Range(0, 200));

@@ -26,6 +26,12 @@ enum ExitCode : int { kOk = 0, kRuntimeError = 1, kInputError = 2, kDiverged = 3
 
 using Action = std::function<int()>;
 
+/// A path option or argument: an empty string (an unset shell variable, say)
+/// is refused, never taken as "the default" or "the current folder".
+inline const CLI::Validator kPath{
+    [](std::string& s) { return s.empty() ? std::string("expected a path, found an empty string") : std::string(); },
+    "PATH"};
+
 /// Registers subcommand `name`: its options in an `Options` shared with the
 /// action, which runs `run` on them once the command line is parsed. A command
 /// on a scene (one with Options::scene) takes the scene file first.
@@ -34,7 +40,7 @@ std::pair<CLI::App*, std::shared_ptr<Options>> add_command(CLI::App& app, Action
                                                           const std::string& help, int (*run)(const Options&)) {
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(name, help);
-  if constexpr (requires { o->scene; }) cmd->add_option("scene", o->scene, "Scene file (TOML)")->required();
+  if constexpr (requires { o->scene; }) cmd->add_option("scene", o->scene, "Scene file (TOML)")->required()->check(kPath);
   cmd->callback([o, run, &action] { action = [o, run] { return run(*o); }; });
   return {cmd, o};
 }

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -10,6 +11,10 @@
 #include "scene/reader.hpp"
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f) a write fails with EFBIG instead of
+  // killing us with SIGXFSZ: the error is reported and the temp file removed.
+  // Children (ffmpeg) inherit the ignored signal and fail the same way.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"tumble: free rigid bodies from particle clouds", "tumble"};
   app.set_version_flag("--version", "tumble " TUMBLE_VERSION);
   app.require_subcommand(1);

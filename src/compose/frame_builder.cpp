@@ -91,8 +91,6 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     const viz::Box& c = plan_.views[i].content;
     panels_[i]->fit({std::max(1.0f, c.x1 - c.x0), std::max(1.0f, c.y1 - c.y0)});
   }
-  keys_.reserve(needs.views.size());
-  for (ViewNeeds& v : needs.views) keys_.push_back(std::move(v.key));
 }
 
 std::string FrameBuilder::legend() const {
@@ -122,7 +120,7 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
     v.texts.push_back({lines[j], {p.title_at.x > 0 ? p.title_at.x : c.x0, p.overlay_y + static_cast<float>(j) * p.overlay_px},
                        p.overlay_px, diverged ? kDiverged : kInk, diverged ? "diverged" : "overlay"});
   }
-  if (p.key_at) viz::add_key(v, keys_[i], *p.key_at, p.key_px);
+  if (p.key_at) viz::add_key(v, p.key, *p.key_at, p.key_px);
   return v;
 }
 
@@ -155,6 +153,11 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
     viz::TextItem b = *badge;
     move_text(b, shift);
     dl.texts.push_back(std::move(b));
+  }
+  if (!plan_.frame_key.empty()) {
+    const viz::Box& b = plan_.frame_key_box;
+    viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * static_cast<float>(width_), b.y0 + 0.5f * plan_.frame_key_px,
+                     plan_.frame_key_px, static_cast<float>(width_) - plan_.frame_key_px);
   }
   if (plan_.legend.y1 > plan_.legend.y0) {
     const float pad = 0.5f * plan_.legend_px;

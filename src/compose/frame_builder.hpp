@@ -47,7 +47,6 @@ class FrameBuilder {
   PanelContext context_;
   std::vector<std::unique_ptr<Panel>> panels_;
   std::vector<std::string> titles_;
-  std::vector<std::vector<viz::KeyEntry>> keys_;  // per view, drawn in its key strip
   FramePlan plan_;
 };
 

@@ -50,6 +50,7 @@ struct ViewPlan {
   float title_px = 0;
   float overlay_y = 0, overlay_px = 0;      ///< the overlay lines' top, view px, and size
   viz::Box content;                         ///< view px
+  std::vector<viz::KeyEntry> key;           ///< what its key strip holds (none: the frame's key has it)
   std::optional<glm::vec2> key_at;          ///< the key backdrop's top-left, view px (none: not drawn)
   float key_px = 0;
 };
@@ -61,6 +62,11 @@ struct FramePlan {
   float badge_side = 0;     ///< px the captions keep free at each side for the speed badge
   viz::Box legend;          ///< frame px (zero height: none)
   float legend_px = 0;
+  /// One key for the whole frame, in rows across its own strip above the
+  /// captions, when views would repeat each other's entries (zero height: none).
+  std::vector<viz::KeyEntry> frame_key;
+  viz::Box frame_key_box;   ///< frame px
+  float frame_key_px = 0;
   std::vector<std::string> notes;  ///< what was left out, where and why
 };
 

@@ -2,6 +2,7 @@
 // is M(b²+c²)/12 · (1 - 1/n²)-like and converges to the solid value as n grows.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "core/particle_cloud.hpp"
@@ -50,9 +51,10 @@ ParticleCloud make_ellipsoid(const Eigen::Vector3d& semi_axes, int n, double mas
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) {
-        Eigen::Vector3d p(cell_centre(i, n, 2 * semi_axes.x()), cell_centre(j, n, 2 * semi_axes.y()),
-                          cell_centre(k, n, 2 * semi_axes.z()));
-        if (p.cwiseQuotient(semi_axes).squaredNorm() <= 1.0) c.push_back({p, 0.0});
+        // Tested in the unit ball, then scaled: 2 × a semi-axis near the
+        // largest double overflows (and the test on it lost every point).
+        const Eigen::Vector3d u(cell_centre(i, n, 2.0), cell_centre(j, n, 2.0), cell_centre(k, n, 2.0));
+        if (u.squaredNorm() <= 1.0) c.push_back({u.cwiseProduct(semi_axes), 0.0});
       }
   scale_mass(c, mass);
   return c;
@@ -67,9 +69,9 @@ ParticleCloud make_cylinder(double radius, double length, int n, double mass) {
   ParticleCloud c;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const double x = cell_centre(i, n, 2 * radius), y = cell_centre(j, n, 2 * radius);
-      if (x * x + y * y > radius * radius) continue;
-      for (int k = 0; k < nz; ++k) c.push_back({{x, y, cell_centre(k, nz, length)}, 0.0});
+      const double u = cell_centre(i, n, 2.0), v = cell_centre(j, n, 2.0);  // unit disc, as the ellipsoid
+      if (u * u + v * v > 1.0) continue;
+      for (int k = 0; k < nz; ++k) c.push_back({{u * radius, v * radius, cell_centre(k, nz, length)}, 0.0});
     }
   scale_mass(c, mass);
   return c;
@@ -88,9 +90,13 @@ ParticleCloud make_t_handle(double handle_length, double stem_length, double thi
   ParticleCloud handle = make_box({handle_length, thickness, thickness},
                                   {count(handle_length), nt, nt}, 1.0);
   ParticleCloud stem = make_box({thickness, stem_length, thickness}, {nt, count(stem_length), nt}, 1.0);
+  // Masses in proportion to the volumes; for a handle so thin that the
+  // volumes underflow (0/0 gave a NaN mass) their common factor thickness² is left out.
   const double v_handle = handle_length * thickness * thickness;
   const double v_stem = stem_length * thickness * thickness;
-  const double m_handle = mass * v_handle / (v_handle + v_stem);
+  const double m_handle = v_handle + v_stem >= std::numeric_limits<double>::min()
+                              ? mass * v_handle / (v_handle + v_stem)
+                              : mass * (handle_length / (handle_length + stem_length));
   for (Particle& p : handle) p.mass = m_handle / handle.size();
   for (Particle& p : stem) p.mass = (mass - m_handle) / stem.size();
   // Bounding box spans y in [-t/2, t/2 + stem]; centre it.

@@ -4,21 +4,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <mutex>
+#include <vector>
 
 namespace tumble {
 
 namespace {
-
-std::string kind_of(mode_t m) {
-  if (S_ISDIR(m)) return "a directory";
-  if (S_ISFIFO(m)) return "a FIFO (named pipe)";
-  if (S_ISCHR(m)) return "a character device";
-  if (S_ISBLK(m)) return "a block device";
-  if (S_ISSOCK(m)) return "a socket";
-  return "not a regular file";
-}
 
 /// Closes the descriptor on every path out.
 struct Fd {
@@ -28,23 +22,19 @@ struct Fd {
   }
 };
 
-}  // namespace
+struct Input {
+  dev_t dev;
+  ino_t ino;
+  std::string name;
+};
 
-std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes, const std::string& what) {
-  const std::string name = path.string() + ": " + what;
-  // O_NONBLOCK: opening a FIFO with no writer must not wait for one.
-  const Fd f{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC)};
-  if (f.fd < 0) {
-    const int e = errno;
-    if (e == ENOENT) throw InputError(name + " does not exist");
-    if (e == ENOTDIR) throw InputError(name + " does not exist (a component of the path is not a directory)");
-    if (e == EACCES || e == EPERM) throw UnreadableFile(name + " cannot be read: permission denied");
-    throw UnreadableFile(name + " cannot be opened: " + std::strerror(e));
-  }
-  struct stat st {};
-  if (::fstat(f.fd, &st) != 0) throw UnreadableFile(name + " cannot be read: " + std::strerror(errno));
-  if (!S_ISREG(st.st_mode)) throw UnreadableFile(name + " is " + kind_of(st.st_mode) + ", not a regular file");
-  const auto size = static_cast<std::size_t>(st.st_size);
+std::mutex inputs_mutex;
+std::vector<Input>& inputs() {
+  static std::vector<Input> v;
+  return v;
+}
+
+std::string read_open_file(int fd, std::size_t max_bytes, const std::string& name, std::size_t size) {
   if (size > max_bytes)
     throw InputError(name + " is " + std::to_string(size) + " bytes, more than the cap of " +
                      std::to_string(max_bytes) + " bytes");
@@ -52,7 +42,7 @@ std::string read_input_file(const std::filesystem::path& path, std::size_t max_b
   std::string out(std::min(size, max_bytes) + 1, '\0');
   std::size_t got = 0;
   while (got < out.size()) {
-    const ssize_t n = ::read(f.fd, out.data() + got, out.size() - got);
+    const ssize_t n = ::read(fd, out.data() + got, out.size() - got);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw UnreadableFile(name + " cannot be read: " + std::strerror(errno));
     if (n == 0) break;
@@ -62,6 +52,69 @@ std::string read_input_file(const std::filesystem::path& path, std::size_t max_b
   }
   out.resize(got);
   return out;
+}
+
+/// The open regular file, or nullopt-like -1 when it does not exist and `missing_ok`.
+int open_regular(const std::filesystem::path& path, const std::string& name, bool missing_ok, struct stat& st) {
+  // O_NONBLOCK: opening a FIFO with no writer must not wait for one.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) {
+    const int e = errno;
+    if (e == ENOENT && missing_ok) return -1;
+    if (e == ENOENT) throw InputError(name + " does not exist");
+    if (e == ENOTDIR) throw InputError(name + " does not exist (a component of the path is not a directory)");
+    if (e == EACCES || e == EPERM) throw UnreadableFile(name + " cannot be read: permission denied");
+    throw UnreadableFile(name + " cannot be opened: " + std::strerror(e));
+  }
+  const Fd guard{fd};
+  if (::fstat(fd, &st) != 0) throw UnreadableFile(name + " cannot be read: " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw UnreadableFile(name + " is " + file_kind(st.st_mode) + ", not a regular file");
+  return ::dup(fd);  // the guard closes its own copy
+}
+
+}  // namespace
+
+std::string file_kind(mode_t m) {
+  if (S_ISDIR(m)) return "a directory";
+  if (S_ISFIFO(m)) return "a FIFO (named pipe)";
+  if (S_ISCHR(m)) return "a character device";
+  if (S_ISBLK(m)) return "a block device";
+  if (S_ISSOCK(m)) return "a socket";
+  if (S_ISLNK(m)) return "a symbolic link";
+  return "not a regular file";
+}
+
+std::optional<std::string> read_file_if_exists(const std::filesystem::path& path, std::size_t max_bytes,
+                                               const std::string& what, ReadRole role) {
+  const std::string name = path.string() + ": " + what;
+  struct stat st {};
+  const Fd f{open_regular(path, name, true, st)};
+  if (f.fd < 0) return std::nullopt;
+  if (role == ReadRole::input) note_input(st.st_dev, st.st_ino, what + " " + path.string());
+  return read_open_file(f.fd, max_bytes, name, static_cast<std::size_t>(st.st_size));
+}
+
+std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes, const std::string& what,
+                            ReadRole role) {
+  const std::string name = path.string() + ": " + what;
+  struct stat st {};
+  const Fd f{open_regular(path, name, false, st)};
+  if (role == ReadRole::input) note_input(st.st_dev, st.st_ino, what + " " + path.string());
+  return read_open_file(f.fd, max_bytes, name, static_cast<std::size_t>(st.st_size));
+}
+
+void note_input(dev_t dev, ino_t ino, const std::string& what_and_path) {
+  const std::lock_guard<std::mutex> lock(inputs_mutex);
+  for (const Input& i : inputs())
+    if (i.dev == dev && i.ino == ino) return;
+  inputs().push_back({dev, ino, what_and_path});
+}
+
+std::optional<std::string> input_with_identity(dev_t dev, ino_t ino) {
+  const std::lock_guard<std::mutex> lock(inputs_mutex);
+  for (const Input& i : inputs())
+    if (i.dev == dev && i.ino == ino) return i.name;
+  return std::nullopt;
 }
 
 }  // namespace tumble

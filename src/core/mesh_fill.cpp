@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 
+#include "core/format.hpp"
 #include "core/winding_tree.hpp"
 
 namespace tumble {
@@ -67,7 +68,7 @@ Eigen::Vector3d point_at(const Eigen::Vector3d& lo, const LatticeSpec& l, double
 
 // All row crossings, sorted by row then x. Rows run along x; row = k * ny + j.
 std::vector<Crossing> row_crossings(const TriangleMesh& mesh, const Eigen::Vector3d& lo, const LatticeSpec& l,
-                                    long ny, long nz) {
+                                    long ny, long nz, double max_crossings) {
   std::vector<Crossing> out;
   const double h = l.spacing;
   for (const auto& t : mesh.triangles) {
@@ -92,10 +93,25 @@ std::vector<Crossing> row_crossings(const TriangleMesh& mesh, const Eigen::Vecto
         if (!inside_edge(ia, ib, a, b, p) || !inside_edge(ib, ic, b, c, p) || !inside_edge(ic, ia, c, a, p)) continue;
         const double x = p0.x() - (d.y() * (q.y() - p0.y()) + d.z() * (q.z() - p0.z())) / d.x();
         out.push_back({static_cast<std::size_t>(k * ny + j), x, d.x() < 0 ? 1 : -1});
+        if (static_cast<double>(out.size()) > max_crossings)
+          throw FillTooCostly("the lattice rows cross the surface more than " + format_number(max_crossings, 3) +
+                              " times (many layers of surface, each met by every row)");
       }
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+/// The tree's winding number at p, its work counted in `out` against `limits`.
+double counted_winding(const WindingTree& tree, const Eigen::Vector3d& p, const FillLimits& limits, VolumeFill& out) {
+  ++out.winding_evaluations;
+  const double w = tree.winding_number(p, &out.winding_work);
+  if (static_cast<double>(out.winding_work) > limits.max_winding_work)
+    throw FillTooCostly("the winding-number test needed more than " + format_number(limits.max_winding_work, 3) +
+                        " steps by lattice point " + std::to_string(out.winding_evaluations) + " of " +
+                        format_number(out.lattice_points, 3) +
+                        " (open surfaces stacked or lying on each other keep every point near all of them)");
+  return w;
 }
 
 }  // namespace
@@ -114,22 +130,21 @@ Eigen::Vector3d lattice_counts(const TriangleMesh& mesh, const LatticeSpec& l) {
 }
 
 VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const LatticeSpec& l, double mass,
-                       double max_points) {
+                       const FillLimits& limits) {
   VolumeFill out;
   TriangleMesh turned;
   const TriangleMesh& mesh = in_lattice_axes(mesh_in, l, turned);
   if (mesh.triangles.empty() || !(l.spacing > 0)) return out;
   const Eigen::Vector3d lo = box_lo(mesh), n = counts_in_lattice_axes(mesh, l);
   out.lattice_points = n.prod();
-  if (out.lattice_points > max_points) return out;
+  if (out.lattice_points > limits.max_points) return out;
   const long nx = long(n.x()), ny = long(n.y()), nz = long(n.z());
-  const std::vector<Crossing> xs = row_crossings(mesh, lo, l, ny, nz);
+  const std::vector<Crossing> xs = row_crossings(mesh, lo, l, ny, nz, limits.max_crossings);
   std::vector<Eigen::Vector3d> inside;
   std::optional<WindingTree> tree;  // built only for a mesh with holes
   if (!watertight) tree.emplace(mesh);
   auto gwn = [&](long i, long j, long k) {
-    ++out.winding_evaluations;
-    return tree->winding_number(point_at(lo, l, double(i), double(j), double(k)));
+    return counted_winding(*tree, point_at(lo, l, double(i), double(j), double(k)), limits, out);
   };
   std::size_t c = 0;
   for (long k = 0; k < nz; ++k)
@@ -145,6 +160,7 @@ VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const Latti
           const double x = x0 + l.spacing * double(i);
           while (m < c && xs[m].x < x) w += xs[m++].delta;
           if (w > 0) inside.push_back(point_at(lo, l, double(i), double(j), double(k)));
+          if (w > 1 || w < 0) ++out.overlapped;
         }
         continue;
       }
@@ -160,7 +176,8 @@ VolumeFill fill_volume(const TriangleMesh& mesh_in, bool watertight, const Latti
         const bool settled = std::abs(w0 - r) < 0.1 && std::abs(w1 - r) < 0.1 && std::abs(w2 - r) < 0.1;
         for (long q = i; q < end; ++q) {
           const double w = settled ? r : gwn(q, j, k);
-          if (w > 0.25 && w < 0.75) ++out.ambiguous;
+          if (w > 0.25) ++out.near, out.ambiguous += w < 0.75;
+          if (w >= 1.5 || w <= -0.5) ++out.overlapped;
           if (w >= 0.5) inside.push_back(point_at(lo, l, double(q), double(j), double(k)));
         }
         i = end;

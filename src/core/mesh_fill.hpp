@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/error.hpp"
 #include "core/particle_cloud.hpp"
 #include "core/triangle_mesh.hpp"
 
@@ -36,8 +37,32 @@ struct LatticeSpec {
 struct VolumeFill {
   ParticleCloud cloud;                 ///< equal masses summing to the requested mass
   std::size_t winding_evaluations = 0; ///< GWN evaluations made (0 for a watertight mesh)
+  std::size_t winding_work = 0;        ///< tree nodes and triangles those evaluations visited
   std::size_t ambiguous = 0;           ///< points with winding number in (0.25, 0.75): near a hole
+  std::size_t near = 0;                ///< points with winding number over 0.25: inside, or ambiguous
+  /// Points enclosed twice or more, or negatively (winding number ≥ 1.5 or
+  /// ≤ −0.5): the surface intersects itself there (two shells overlapping, or
+  /// one inside another facing the same way), so its divergence-theorem
+  /// volume counts them twice (or takes them away).
+  std::size_t overlapped = 0;
   double lattice_points = 0;           ///< points visited, nx·ny·nz (the cloud is empty when over `max_points`)
+};
+
+/// What a fill may spend before it stops with FillTooCostly: lattice points
+/// (checked before any work), row crossings (memory: 24 bytes each) and
+/// winding-number work (time: tree nodes and triangles visited, some 25 ns
+/// each here, so 3·10⁸ is about 8 s; an open cube at resolution 60 takes
+/// 6·10⁶, 100 copies of it lying on each other 10⁹).
+struct FillLimits {
+  double max_points = INFINITY;
+  double max_crossings = 4e7;
+  double max_winding_work = 3e8;
+};
+
+/// A fill that would pass a FillLimits: what ran out and how far it got.
+class FillTooCostly : public InputError {
+ public:
+  using InputError::InputError;
 };
 
 /// Lattice points inside the mesh, each of mass `mass` / count.
@@ -49,8 +74,9 @@ struct VolumeFill {
 /// integer (holes make it fractional).
 /// A lattice of more than `max_points` points is not filled: only
 /// `lattice_points` is set (a particle budget checked without turning the mesh twice).
+/// Throws FillTooCostly past `limits.max_crossings` or `limits.max_winding_work`.
 VolumeFill fill_volume(const TriangleMesh& mesh, bool watertight, const LatticeSpec& lattice, double mass,
-                       double max_points = INFINITY);
+                       const FillLimits& limits = {});
 
 /// Number of lattice points per axis `fill_volume` visits.
 Eigen::Vector3d lattice_counts(const TriangleMesh& mesh, const LatticeSpec& lattice);

@@ -75,14 +75,16 @@ int WindingTree::build(int first, int count) {
   return index;
 }
 
-double WindingTree::winding_number(const Eigen::Vector3d& p) const {
+double WindingTree::winding_number(const Eigen::Vector3d& p, std::size_t* work) const {
   if (nodes_.empty()) return 0;
   double sum = 0;  // 4π × winding number
   int stack[128];
   int top = 0;
   stack[top++] = 0;
+  std::size_t visited = 0;
   while (top > 0) {
     const Node& n = nodes_[std::size_t(stack[--top])];
+    ++visited;
     const Eigen::Vector3d r = n.center - p;
     const double d2 = r.squaredNorm();
     if (d2 > n.radius2) {
@@ -91,6 +93,7 @@ double WindingTree::winding_number(const Eigen::Vector3d& p) const {
       const double inv2 = 1 / d2, inv3 = inv2 / std::sqrt(d2);
       sum += inv3 * (n.dipole.dot(r) + n.quad.trace() - 3 * inv2 * r.dot(n.quad * r));
     } else if (n.left < 0) {
+      visited += std::size_t(n.count);
       for (int t = n.first; t < n.first + n.count; ++t) {
         const auto& tri = tris_[std::size_t(t)];
         sum += triangle_solid_angle(tri[0], tri[1], tri[2], p);
@@ -100,6 +103,7 @@ double WindingTree::winding_number(const Eigen::Vector3d& p) const {
       stack[top++] = n.right;
     }
   }
+  if (work) *work += visited;
   return sum / (4 * std::numbers::pi);
 }
 

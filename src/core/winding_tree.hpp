@@ -35,7 +35,9 @@ class WindingTree {
   explicit WindingTree(const TriangleMesh& mesh, double beta = 2.0);
 
   /// Σ solid angles / 4π at p (m): 1 inside a closed outward mesh, 0 outside.
-  double winding_number(const Eigen::Vector3d& p) const;
+  /// `work`, when given, grows by the nodes and triangles visited: the cost,
+  /// which coincident or stacked surfaces (no node ever far) make O(n).
+  double winding_number(const Eigen::Vector3d& p, std::size_t* work = nullptr) const;
 
   std::size_t node_count() const { return nodes_.size(); }
 

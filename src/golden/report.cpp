@@ -1,9 +1,11 @@
 #include "golden/report.hpp"
 
-#include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png.hpp"
 
@@ -25,10 +27,40 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
+namespace {
+
+constexpr std::string_view kTitleTag = "<title>tumble golden: ";  // every report's, old and new
+constexpr std::size_t kMaxReportBytes = std::size_t(64) << 20;
+
+/// The img/ files an earlier report's index.html shows (src="img/NAME").
+std::vector<std::string> report_images(const std::string& html) {
+  std::vector<std::string> out;
+  constexpr std::string_view tag = "src=\"img/";
+  for (std::size_t at = html.find(tag); at != std::string::npos; at = html.find(tag, at + 1)) {
+    const std::size_t begin = at + tag.size(), end = html.find('"', begin);
+    if (end == std::string::npos) break;
+    const std::string name = html.substr(begin, end - begin);
+    if (!name.empty() && name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") ==
+                             std::string::npos && name != "." && name != "..")
+      out.push_back(name);
+  }
+  return out;
+}
+
+}  // namespace
+
 Report::Report(fs::path dir, std::string title) : dir_(std::move(dir)), title_(std::move(title)) {
+  const fs::path index = dir_ / "index.html";
+  const std::optional<std::string> old = read_file_if_exists(index, kMaxReportBytes, "golden report");
+  if (!old) return;
+  // Only what an earlier report wrote goes: its index.html and the images it shows.
+  if (old->find(kTitleTag) == std::string::npos || old->find(kTitleTag) > 512)
+    throw InputError("--report " + dir_.string() + ": " + index.string() +
+                     " was not written by tumble golden; refusing to replace it (choose another --report folder)");
   std::error_code ec;
-  fs::remove(dir_ / "index.html", ec);
-  fs::remove_all(dir_ / "img", ec);
+  for (const std::string& name : report_images(*old)) fs::remove(dir_ / "img" / name, ec);
+  fs::remove(dir_ / "img", ec);  // only when empty now
+  if (!fs::remove(index, ec) && ec) throw io::IoError("cannot remove " + index.string() + ": " + ec.message());
 }
 
 void Report::add_image(const std::string& id, const std::string& title, const io::Image& actual,

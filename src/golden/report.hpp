@@ -15,8 +15,10 @@ namespace tumble::golden {
 
 class Report {
  public:
-  /// Removes a previous report in `dir` (its index.html and img/), so a stale
-  /// report never outlives a passing run. Creates nothing until write().
+  /// Removes a previous report in `dir` (its index.html and the img/ files it
+  /// shows), so a stale report never outlives a passing run; nothing else in
+  /// `dir` is touched. An index.html that tumble did not write is refused
+  /// (InputError) before any work. Creates nothing until write().
   Report(std::filesystem::path dir, std::string title);
 
   /// One image case. `expected` may be null (missing or unreadable golden);

@@ -3,9 +3,12 @@
 #include <cerrno>
 #include <cstring>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace tumble::io {
 
@@ -13,7 +16,9 @@ namespace {
 constexpr std::string_view kTempTag = ".tmp-";
 
 [[noreturn]] void fail(const std::filesystem::path& p, const char* what) {
-  throw IoError("cannot " + std::string(what) + " '" + p.string() + "': " + std::strerror(errno));
+  const int e = errno;
+  throw IoError("cannot " + std::string(what) + " '" + p.string() + "': " + std::strerror(e) +
+                (e == EFBIG ? " (over the file-size limit: ulimit -f, or the filesystem's largest file)" : ""));
 }
 }  // namespace
 
@@ -31,10 +36,35 @@ std::string_view temp_target_name(std::string_view name) {
   return name.substr(0, at);
 }
 
+void check_output_target(const std::filesystem::path& path, const std::string& what) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) return;  // a new name (or a folder we cannot search: the write says so)
+  const bool link = S_ISLNK(st.st_mode);
+  if (link && ::stat(path.c_str(), &st) != 0) return;  // a dangling link: replaced by the file
+  if (const std::optional<std::string> input = input_with_identity(st.st_dev, st.st_ino))
+    throw InputError(what + " " + path.string() + ": refusing to write over " + *input +
+                     (link ? " (the path is a link to it)" : "") + ", an input of this run; choose another name");
+  if (!link && !S_ISREG(st.st_mode))
+    throw IoError(what + " " + path.string() + ": is " + file_kind(st.st_mode) +
+                  ", not a regular file; tumble writes only regular files (give a new name)");
+}
+
 AtomicFile::AtomicFile(std::filesystem::path path, Durability d)
     : path_(std::move(path)), tmp_(temp_path_for(path_)), durability_(d) {
-  f_ = std::fopen(tmp_.c_str(), "wb");
-  if (!f_) fail(tmp_, "create");
+  check_output_target(path_, "output file");
+  // The temp name is ours: whatever a killed run (or anyone) left there goes,
+  // and O_EXCL makes a fresh regular file, never a FIFO or link planted in the gap.
+  ::unlink(tmp_.c_str());
+  const int fd = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0) fail(tmp_, "create");
+  f_ = ::fdopen(fd, "wb");
+  if (!f_) {
+    const int e = errno;
+    ::close(fd);
+    ::unlink(tmp_.c_str());
+    errno = e;
+    fail(tmp_, "create");
+  }
 }
 
 AtomicFile::~AtomicFile() {
@@ -61,6 +91,13 @@ void AtomicFile::commit() {
     std::filesystem::remove(tmp_, ec);
     fail(tmp_, "write");
   }
+  try {  // the target may have changed while we wrote
+    check_output_target(path_, "output file");
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(tmp_, ec);
+    throw;
+  }
   if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
     const int e = errno;
     std::error_code ec;
@@ -80,8 +117,10 @@ void check_output_file(const std::string& option, const std::filesystem::path& f
   const std::string what = option + " " + file.string();
   const std::filesystem::path parent = file.parent_path().empty() ? "." : file.parent_path();
   std::error_code ec;
+  if (file.empty()) throw InputError(option + " \"\": expected a file name, found an empty string");
   if (file.filename().empty() || std::filesystem::is_directory(file, ec))
     throw InputError(what + ": expected a file name, found a folder");
+  check_output_target(file, option);
   if (!std::filesystem::is_directory(parent, ec))
     throw IoError(what + ": cannot write there: folder '" + parent.string() + "' does not exist");
   if (::access(parent.c_str(), W_OK) != 0)
@@ -89,6 +128,7 @@ void check_output_file(const std::string& option, const std::filesystem::path& f
 }
 
 void check_output_folder(const std::string& option, const std::filesystem::path& dir) {
+  if (dir.empty()) throw InputError(option + " \"\": expected a folder, found an empty string");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw IoError(option + " " + dir.string() + ": cannot create the folder: " + ec.message());

@@ -17,9 +17,19 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The one policy for every file tumble writes: `path` must be a new name or
+/// an existing regular file (a symbolic link is replaced, not followed) that
+/// is no input of this run, compared by device and inode (core/input_file.hpp),
+/// so no spelling or link of an input passes. `what` names the output in
+/// messages ("--csv", "the video"). Throws InputError (exit 2) when `path` is
+/// an input, naming both; IoError (exit 1) when it is a directory, device,
+/// FIFO or socket.
+void check_output_target(const std::filesystem::path& path, const std::string& what);
+
 /// An output file named by command-line `option` (e.g. "--csv"), checked before
-/// any work: a file name (not a folder) in an existing, writable folder.
-/// Throws InputError or IoError naming the option and the path.
+/// any work: a non-empty file name (not a folder) in an existing, writable
+/// folder, and check_output_target. Throws InputError or IoError naming the
+/// option and the path.
 void check_output_file(const std::string& option, const std::filesystem::path& file);
 
 /// An output folder named by `option`, created now (with its parents) and
@@ -39,7 +49,8 @@ std::string_view temp_target_name(std::string_view name);
 enum class Durability { fsync, rename_only };
 
 /// Streams into temp_path_for(path); commit() flushes (fsyncs) and renames
-/// onto `path`. Destroyed without commit, it removes the temp file.
+/// onto `path`. Destroyed without commit, it removes the temp file. Both the
+/// constructor and commit() check `path` by check_output_target.
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path path, Durability d = Durability::fsync);

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -9,6 +10,7 @@
 #include <ctime>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace tumble::io {
@@ -40,24 +42,70 @@ void write_holder(int fd, const std::string& holder, const std::string& key) {
                    "; wait for it to finish or stop it (a killed holder frees the folder at once)");
 }
 
+/// The folder's gate (see the header), held from construction to destruction.
+class Gate {
+ public:
+  explicit Gate(const std::filesystem::path& dir) {
+    // A folder we may not read, or a filesystem that cannot lock one (NFS
+    // emulates flock with write locks, which a read-only descriptor cannot
+    // take): no gate; the lock file decides alone, as it did before the gate.
+    fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    while (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+      if (errno == EINTR) continue;
+      ::close(fd_);
+      fd_ = -1;
+      break;
+    }
+  }
+  ~Gate() {
+    if (fd_ >= 0) ::close(fd_);  // closing drops the flock
+  }
+  Gate(const Gate&) = delete;
+  Gate& operator=(const Gate&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+/// The lock file, opened without following a link or waiting on a FIFO; -1 when absent and !create.
+int open_lock_file(const std::filesystem::path& path, bool create) {
+  const int fd = ::open(path.c_str(), (create ? O_RDWR | O_CREAT : O_RDONLY) | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
+  if (fd < 0) {
+    if (!create && errno == ENOENT) return -1;
+    throw IoError("cannot open the lock file " + path.string() + ": " + std::strerror(errno));
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw IoError("the lock file " + path.string() + " is " + file_kind(st.st_mode) + ", not a regular file; remove it");
+  }
+  return fd;
+}
+
 }  // namespace
 
-void FolderLock::refuse_if_held(const std::filesystem::path& dir) {
-  const int fd = ::open((dir / kLockFileName).c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-  if (fd < 0) return;  // no lock file: no holder
+FolderLock::Holder FolderLock::refuse_if_held(const std::filesystem::path& dir, const std::string& sibling_key) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) return Holder::none;
+  const Gate gate(dir);
+  const int fd = open_lock_file(dir / kLockFileName, false);
+  if (fd < 0) return Holder::none;  // no lock file: no holder
   if (::flock(fd, LOCK_EX | LOCK_NB) == 0) {  // free: nobody holds it (ours is dropped on close)
     ::close(fd);
-    return;
+    return Holder::none;
   }
-  const std::string who = read_holder(fd, nullptr);
+  std::string key;
+  const bool shards = ::flock(fd, LOCK_SH | LOCK_NB) == 0;
+  const std::string who = read_holder(fd, &key);
   ::close(fd);
-  throw_in_use(dir, who, "");
+  if (shards && !sibling_key.empty() && key == sibling_key) return Holder::siblings;
+  throw_in_use(dir, who, shards && !sibling_key.empty() ? " (rendering another scene or other settings there)" : "");
 }
 
 FolderLock::FolderLock(const std::filesystem::path& dir, Mode mode, const std::string& holder, const std::string& key) {
   const std::filesystem::path path = dir / kLockFileName;
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (fd_ < 0) throw IoError("cannot open the lock file " + path.string() + ": " + std::strerror(errno));
+  const Gate gate(dir);  // nobody else decides until we have
+  fd_ = open_lock_file(path, true);
   auto refuse = [&](const std::string& why) {
     if (errno != EWOULDBLOCK) {  // no lock support here (some network filesystems): say so, not "in use"
       const int e = errno;
@@ -71,15 +119,16 @@ FolderLock::FolderLock(const std::filesystem::path& dir, Mode mode, const std::s
     fd_ = -1;
     throw_in_use(dir, who, why);
   };
-  if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) {
+  if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) {  // free
     write_holder(fd_, holder, key);
     if (mode == Mode::exclusive) return;
-    // Let the other shards of this render in (not atomic; a second taker in the
-    // gap finds our note and checks its key against ours).
-    if (::flock(fd_, LOCK_SH) == 0) return;
+    // Let the other shards of this render in. The conversion is not atomic,
+    // but every other taker waits at the gate meanwhile.
+    if (::flock(fd_, LOCK_SH | LOCK_NB) == 0) return;
+    refuse("");
   }
   if (mode == Mode::exclusive) refuse("");
-  if (::flock(fd_, LOCK_SH | LOCK_NB) != 0) refuse("");
+  if (::flock(fd_, LOCK_SH | LOCK_NB) != 0) refuse("");  // held exclusively
   std::string other_key;
   (void)read_holder(fd_, &other_key);
   errno = EWOULDBLOCK;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/input_file.hpp"
 #include "io/image.hpp"
 
 namespace tumble::io {
@@ -18,7 +19,14 @@ std::vector<std::uint8_t> encode_png(const Image& image);
 /// path. Thread-safe for distinct paths.
 void write_png_atomic(const std::filesystem::path& path, const Image& image);
 
-/// Reads any 8-bit PNG as RGB. Throws IoError naming the path.
-Image read_png(const std::filesystem::path& path);
+/// Largest PNG file read (bytes) and decoded image (pixels): far beyond any
+/// frame, so a crafted or mistaken file cannot fill memory.
+inline constexpr std::size_t kMaxPngBytes = std::size_t(1) << 30;
+inline constexpr long long kMaxPngPixels = 1LL << 26;
+
+/// Reads any 8-bit PNG as RGB, a regular file only (core/input_file.hpp:
+/// never blocks on a FIFO). Throws IoError naming the path, UnreadableFile
+/// (not a regular file) or InputError (missing, over the caps).
+Image read_png(const std::filesystem::path& path, ReadRole role = ReadRole::input);
 
 }  // namespace tumble::io

@@ -8,6 +8,8 @@
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 
 #include "io/atomic_file.hpp"
@@ -15,10 +17,17 @@
 
 namespace tumble::io {
 
-Image read_png(const std::filesystem::path& path) {
+Image read_png(const std::filesystem::path& path, ReadRole role) {
+  const std::string bytes = read_input_file(path, kMaxPngBytes, "PNG file", role);
+  const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int len = static_cast<int>(std::min<std::size_t>(bytes.size(), INT32_MAX));
   int w = 0, h = 0, channels = 0;
-  const std::unique_ptr<stbi_uc, void (*)(void*)> data(
-      stbi_load(path.c_str(), &w, &h, &channels, 3), stbi_image_free);
+  if (!stbi_info_from_memory(p, len, &w, &h, &channels)) throw IoError("cannot read PNG " + path.string() + ": not a PNG image");
+  if (static_cast<long long>(w) * h > kMaxPngPixels)
+    throw IoError("cannot read PNG " + path.string() + ": " + std::to_string(w) + "x" + std::to_string(h) +
+                  " pixels, more than the cap of " + std::to_string(kMaxPngPixels));
+  const std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load_from_memory(p, len, &w, &h, &channels, 3),
+                                                       stbi_image_free);
   if (!data) {
     // stbi_failure_reason uses a global; the message is only a hint anyway.
     throw IoError("cannot read PNG " + path.string());

@@ -4,14 +4,20 @@
 
 #include "render/font_atlas.hpp"
 
+#include "core/input_file.hpp"
+#include "render/font_check.hpp"
+#include "render/resource_dir.hpp"
+
 #include <algorithm>
 #include <array>
-#include <fstream>
 #include <iterator>
 #include <stdexcept>
 
 namespace tumble::render {
 namespace {
+
+constexpr std::size_t kMaxFontBytes = std::size_t(64) << 20;  // DejaVu Sans is 0.7 MB
+constexpr const char* kFontPackage = " (tumble reads DejaVu Sans, from the Debian package fonts-dejavu-core)";
 
 struct Range {
   char32_t first;
@@ -61,13 +67,19 @@ char32_t next_code_point(std::string_view s, std::size_t& i) {
 }  // namespace
 
 FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_(bake_px) {
-  std::ifstream in(ttf, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read font " + ttf.string());
-  const std::vector<unsigned char> data{std::istreambuf_iterator<char>(in), {}};
+  std::string bytes;
+  try {
+    bytes = read_input_file(ttf, kMaxFontBytes, "font");
+  } catch (const std::exception& e) {
+    throw ResourceError(std::string(e.what()) + kFontPackage);
+  }
+  if (const std::string why = truetype_problem(bytes); !why.empty())
+    throw ResourceError(ttf.string() + ": damaged font: " + why + kFontPackage);
+  const std::vector<unsigned char> data(bytes.begin(), bytes.end());
 
   stbtt_fontinfo info;
   if (!stbtt_InitFont(&info, data.data(), stbtt_GetFontOffsetForIndex(data.data(), 0))) {
-    throw std::runtime_error("not a usable TrueType font: " + ttf.string());
+    throw ResourceError(ttf.string() + ": not a usable TrueType font" + kFontPackage);
   }
   int ascent = 0, descent = 0, gap = 0;
   stbtt_GetFontVMetrics(&info, &ascent, &descent, &gap);
@@ -99,7 +111,8 @@ FontAtlas::FontAtlas(const std::filesystem::path& ttf, float bake_px) : bake_px_
     }
   }
   stbtt_PackEnd(&pack);
-  if (!ok) throw std::runtime_error("font atlas too small for " + ttf.string());
+  // DejaVu Sans fills about half the atlas; only a damaged font's glyph boxes overflow it.
+  if (!ok) throw ResourceError(ttf.string() + ": damaged font: its glyphs do not fit the atlas (boxes too large)" + kFontPackage);
   std::sort(glyphs_.begin(), glyphs_.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   // The middle of the full block: coverage 1 at every mipmap level text uses.

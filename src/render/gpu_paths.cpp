@@ -24,9 +24,11 @@ GpuPaths parse_gpu_paths(std::string_view text, bool hardware_gpu) {
   return p;
 }
 
-GpuPaths default_gpu_paths(const GlContext& context) {
+GpuPaths gpu_paths_from_env(bool hardware_gpu) {
   const char* env = std::getenv("TUMBLE_GPU_PATHS");
-  return parse_gpu_paths(env ? env : "", context.hardware_gpu());
+  return parse_gpu_paths(env ? env : "", hardware_gpu);
 }
+
+GpuPaths default_gpu_paths(const GlContext& context) { return gpu_paths_from_env(context.hardware_gpu()); }
 
 }  // namespace tumble::render

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/atomic_file.hpp"
+
 namespace tumble::render {
 namespace {
 
@@ -17,12 +19,19 @@ GlObject make_storage(const GlFunctions& gl, GLenum format, int samples, int w, 
   return rb;
 }
 
-void check_complete(const GlFunctions& gl, const char* which) {
+/// A framebuffer GL could not make is a size (or sample count) past what this
+/// GL can hold, not a bug: said so, with the limit, as an I/O-class error.
+void check_complete(const GlFunctions& gl, const char* which, int w, int h, int samples) {
   const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error(std::string("offscreen ") + which +
-                             " framebuffer incomplete, status " + std::to_string(status));
-  }
+  if (status == GL_FRAMEBUFFER_COMPLETE) return;
+  const GLenum error = gl.GetError();
+  GLint max_size = 0;
+  gl.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  throw io::IoError("cannot make the " + std::to_string(w) + "x" + std::to_string(h) + " offscreen " + which +
+                    " framebuffer" + (samples > 0 ? " with " + std::to_string(samples) + " MSAA samples" : "") +
+                    " (GL status " + std::to_string(status) +
+                    (error == GL_OUT_OF_MEMORY ? ", GL_OUT_OF_MEMORY" : "") + "; this GL's largest renderbuffer is " +
+                    std::to_string(max_size) + " px): lower --width/--height or --msaa, or give the process more memory");
 }
 
 }  // namespace
@@ -47,7 +56,7 @@ OffscreenTarget::OffscreenTarget(const GlFunctions& gl, int width, int height, i
     gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                resolve_depth_.id());
   }
-  check_complete(gl, "resolve");
+  check_complete(gl, "resolve", width, height, 0);
 
   if (samples_ > 0) {
     ms_fbo_ = make_framebuffer(gl);
@@ -58,7 +67,7 @@ OffscreenTarget::OffscreenTarget(const GlFunctions& gl, int width, int height, i
                                ms_color_.id());
     gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
                                ms_depth_.id());
-    check_complete(gl, "multisample");
+    check_complete(gl, "multisample", width, height, samples_);
   }
 }
 
@@ -137,7 +146,7 @@ void OffscreenTarget::begin_post_pass() {
     post_fbo_ = make_framebuffer(gl_);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, post_fbo_.id());
     gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, post_texture_.id(), 0);
-    check_complete(gl_, "post-pass");
+    check_complete(gl_, "post-pass", width_, height_, 0);
   }
   resolve();
   gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, post_fbo_.id());

@@ -28,6 +28,9 @@ struct GpuPaths {
 /// TUMBLE_GPU_PATHS overrides: "auto", "none", or a comma list of "pbo" and
 /// "fxaa". Throws std::invalid_argument naming the variable on other values.
 GpuPaths default_gpu_paths(const GlContext& context);
+/// The paths env TUMBLE_GPU_PATHS asks for on a GPU of that kind; throws
+/// std::invalid_argument naming the variable, so it can be checked before work.
+GpuPaths gpu_paths_from_env(bool hardware_gpu);
 GpuPaths parse_gpu_paths(std::string_view text, bool hardware_gpu);
 
 class Renderer {
@@ -44,9 +47,9 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  /// Renders all views (grid of `columns`, row-major, each view's label in
-  /// its top-left corner) plus the frame overlay texts. Makes the context
-  /// current on the calling thread.
+  /// Renders all views (grid of `columns`, row-major; each its 3D items in its
+  /// content rectangle, then its texts) plus the frame overlay texts. Makes
+  /// the context current on the calling thread.
   io::Image render(const viz::DrawList& frame);
   /// Same, into `out`, reusing its pixel storage (cheaper in a frame loop).
   void render(const viz::DrawList& frame, io::Image& out);

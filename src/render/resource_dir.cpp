@@ -28,7 +28,7 @@ std::filesystem::path find_resource_dir() {
 #ifdef TUMBLE_SOURCE_DIR
   if (has_shaders(TUMBLE_SOURCE_DIR)) return fs::path(TUMBLE_SOURCE_DIR);
 #endif
-  throw std::runtime_error("cannot find the tumble resource directory (a folder holding "
+  throw ResourceError("cannot find the tumble resource directory (a folder holding "
                            "shaders/); looked in:" + tried);
 }
 
@@ -39,7 +39,7 @@ std::filesystem::path find_font_file(const std::filesystem::path& resource_dir) 
     std::error_code ec;
     if (fs::is_regular_file(p, ec)) return p;
   }
-  throw std::runtime_error("font DejaVuSans.ttf not found in " +
+  throw ResourceError("font DejaVuSans.ttf not found in " +
                            (resource_dir / "fonts").string() +
                            " nor /usr/share/fonts/truetype/dejavu (Debian package "
                            "fonts-dejavu-core)");

@@ -1,20 +1,24 @@
 #include "render/shader_program.hpp"
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/input_file.hpp"
+#include "render/resource_dir.hpp"
+
 namespace tumble::render {
 namespace {
 
+constexpr const char* kShaderSource = " (tumble's own shaders/ folder, found beside the binary or in its source tree)";
+
 std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read shader " + path.string());
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  try {
+    return read_input_file(path, std::size_t(1) << 20, "shader");
+  } catch (const std::exception& e) {
+    throw ResourceError(e.what() + std::string(kShaderSource));
+  }
 }
 
 GlObject compile(const GlFunctions& gl, GLenum type, const std::filesystem::path& path) {
@@ -28,7 +32,7 @@ GlObject compile(const GlFunctions& gl, GLenum type, const std::filesystem::path
   if (ok != GL_TRUE) {
     char log[2048] = {};
     gl.GetShaderInfoLog(shader.id(), sizeof log, nullptr, log);
-    throw std::runtime_error("compiling " + path.string() + ":\n" + log);
+    throw ResourceError("compiling " + path.string() + kShaderSource + ":\n" + log);
   }
   return shader;
 }

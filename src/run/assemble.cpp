@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
@@ -20,7 +21,8 @@ namespace fs = std::filesystem;
 
 std::string describe(const Part& p) {
   return "scene hash " + p.scene_hash + ", settings hash " + p.settings_hash + ", " +
-         std::to_string(p.frame_count) + " frames, video " + p.video_format + " at CRF " + std::to_string(p.crf);
+         std::to_string(p.frame_count) + " frames of " + std::to_string(p.width) + "x" + std::to_string(p.height) +
+         " at " + format_number(p.fps) + " fps, video " + p.video_format + " at CRF " + std::to_string(p.crf);
 }
 
 /// Every reason the parts do not make one whole render (empty when they do):
@@ -34,7 +36,8 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
   long damaged = 0;
   for (const Part& p : parts) {
     if (!p.ok) {
-      errors.push_back(p.file + ": not a manifest part written by tumble (unreadable, fields missing or out of range)");
+      errors.push_back(p.file + ": not a manifest part written by tumble (" +
+                       (p.bad_field.empty() ? std::string("unreadable, or not JSON") : p.bad_field) + ")");
     } else if (describe(p) != describe(ref)) {
       errors.push_back(p.file + " (" + describe(p) + ") is not a shard of the same render as " + ref.file + " (" +
                        describe(ref) + "); render its frames again with the same scene and options, or remove it");
@@ -45,7 +48,7 @@ std::vector<std::string> check_parts(const fs::path& dir, const std::vector<Part
                        ":" + std::to_string(p.last) + " --resume");
     } else {
       // Each frame must be what its shard recorded when it wrote it (io/frame_sums.hpp).
-      const int w = ref.json.value("width", 0), h = ref.json.value("height", 0);
+      const int w = ref.width, h = ref.height;
       for (long k = std::max(0L, p.first); k <= p.last && k < ref.frame_count; ++k) {
         if (have[static_cast<std::size_t>(k)]) continue;
         const std::string why = io::check_frame(io::frame_path(dir, k), sums, w, h);
@@ -75,7 +78,11 @@ std::pair<std::vector<Part>, std::size_t> tumble_parts(const fs::path& dir) {
                      dir.string() + " --frames A:B");
   std::size_t ref = 0;
   while (ref < parts.size() && !parts[ref].ok) ++ref;
-  if (ref == parts.size()) throw InputError("tumble assemble: no manifest part in " + dir.string() + " was written by tumble");
+  if (ref == parts.size()) {
+    std::string why;
+    for (const Part& p : parts) why += "\n  " + p.file + ": " + (p.bad_field.empty() ? "unreadable, or not JSON" : p.bad_field);
+    throw InputError("tumble assemble: no manifest part in " + dir.string() + " was written by tumble:" + why);
+  }
   return {std::move(parts), ref};
 }
 
@@ -101,7 +108,7 @@ Outcome assemble(const fs::path& dir, std::optional<scene::VideoFormat> video, L
   try {  // a foreign folder gets no lock file: check first (a read), then lock, then check all
     (void)tumble_parts(dir);
   } catch (const InputError&) {
-    io::FolderLock::refuse_if_held(dir);  // a first shard may still be writing its part
+    (void)io::FolderLock::refuse_if_held(dir);  // a first shard may still be writing its part
     throw;
   }
   const io::FolderLock lock(dir, io::FolderLock::Mode::exclusive, "tumble assemble", "");  // no shard may run meanwhile
@@ -132,7 +139,7 @@ Outcome assemble(const fs::path& dir, std::optional<scene::VideoFormat> video, L
     io::write_json_atomic(mpath, man);  // "complete": false until the video exists
     l.begin(count);
     const VideoResult v =
-        encode_video(dir, static_cast<int>(std::lround(man.value("fps", 30.0))), f, ref.crf, dir / video_name,
+        encode_video(dir, static_cast<int>(std::lround(ref.fps)), f, ref.crf, dir / video_name,
                      [&] { return l.stop(); }, [&](long n) { l.advance(std::min(n, count)); });
     l.end();
     if (!v.ok()) {

@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <set>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
 #include "io/png.hpp"
@@ -48,12 +48,15 @@ double parse_time(const std::string& s) {
   return parse_num("--at", s.substr(0, slash)) / den;
 }
 
-std::string slurp(const fs::path& p, bool& ok) {
-  std::ifstream in(p, std::ios::binary);
-  ok = static_cast<bool>(in);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+constexpr std::size_t kMaxTrajectoryBytes = std::size_t(256) << 20;
+
+/// A golden file's bytes ("" and !ok when missing). A golden is this run's
+/// input, unless --update may rewrite it.
+std::string slurp(const fs::path& p, bool& ok, bool update) {
+  const std::optional<std::string> text = read_file_if_exists(
+      p, kMaxTrajectoryBytes, "golden trajectory", update ? ReadRole::own_output : ReadRole::input);
+  ok = text.has_value();
+  return text.value_or("");
 }
 
 /// A string field of a sidecar, or "?".
@@ -120,7 +123,7 @@ void GoldenCheck::check_physics() {
   const std::string actual = g.frames.trajectory_csv({rows.begin(), rows.end()});
   const fs::path path = g.dir / (g.s.name + ".trajectory.csv");
   bool ok = false;
-  const std::string expected = slurp(path, ok);
+  const std::string expected = slurp(path, ok, g.update);
   const std::string what = "physics " + path.filename().string();
   if (g.update) {
     if (!ok || expected != actual) {
@@ -208,7 +211,7 @@ void GoldenCheck::check_images(const scene::FrameSettings& f, render::GlContext&
                    images[i], std::nullopt, {}};
     if (fs::exists(im.png)) {
       try {
-        im.expected = io::read_png(im.png);
+        im.expected = io::read_png(im.png, g.update ? ReadRole::own_output : ReadRole::input);
       } catch (const std::exception& e) {
         im.read_error = e.what();
       }

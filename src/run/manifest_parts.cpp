@@ -27,26 +27,45 @@ Part read_part(const std::filesystem::path& path) {
   p.file = path.filename().string();
   const std::optional<io::Json> j = io::read_json_file(path);
   if (!j || !j->is_object() || j->value("tool", "") != "tumble") return p;
+  const char* field = "";
   try {
-    p.scene_hash = j->at("scene_hash").get<std::string>();
-    p.settings_hash = j->at("settings_hash").get<std::string>();
-    p.video_format = j->value("video_format", "none");
-    p.crf = j->value("crf", 18);
-    p.first = j->at("frames").at(0).get<long>();
-    p.last = j->at("frames").at(1).get<long>();
-    p.frame_count = j->at("frame_count").get<long>();
-    p.written = j->at("frames_written").get<long>();
-    p.complete = j->at("complete").get<bool>();
+    auto get = [&](const char* name) -> const io::Json& { return j->at(field = name); };
+    p.scene_hash = get("scene_hash").get<std::string>();
+    p.settings_hash = get("settings_hash").get<std::string>();
+    p.video_format = j->value(field = "video_format", "none");
+    p.crf = j->value(field = "crf", 18);
+    p.first = get("frames").at(0).get<long>();
+    p.last = get("frames").at(1).get<long>();
+    p.frame_count = get("frame_count").get<long>();
+    p.written = get("frames_written").get<long>();
+    p.complete = get("complete").get<bool>();
+    p.width = get("width").get<int>();
+    p.height = get("height").get<int>();
+    p.fps = get("fps").get<double>();
   } catch (const io::Json::exception&) {
-    return p;  // not ok: a field missing or of the wrong type
+    p.bad_field = std::string(field) + " missing or of the wrong type";
+    return p;  // not ok
   }
   // Numbers a disk or a hand could have changed stay within what a render
   // writes (frames 0 … ⌊duration·fps⌋ under the scene's cap), so nothing sized
-  // by them (assemble's table of frames) can be absurd (issue 26).
+  // by them (assemble's table of frames) can be absurd. The settings hash
+  // does not cover the video's fields, so they are checked as the scene
+  // checks them (and against the other parts, by assemble).
   const long cap = static_cast<long>(scene::kMaxFrames) + 1;
   if (p.frame_count < 1 || p.frame_count > cap || p.first < 0 || p.first > p.last || p.last >= p.frame_count ||
       p.written < 0 || p.written > p.last - p.first + 1)
-    return p;  // not ok: out of range
+    p.bad_field = "frames, frame_count or frames_written out of range";
+  else if (!scene::parse_video_format(p.video_format))
+    p.bad_field = "video_format '" + p.video_format + "' is not none, mp4 or gif";
+  else if (p.crf < 0 || p.crf > 51)
+    p.bad_field = "crf " + std::to_string(p.crf) + " is not in 0..51";
+  else if (!(p.fps >= 1e-3 && p.fps <= 1000))
+    p.bad_field = "fps is not in [0.001, 1000]";
+  else if (p.width < scene::kMinFramePx || p.width > scene::kMaxFramePx || p.height < scene::kMinFramePx ||
+           p.height > scene::kMaxFramePx)
+    p.bad_field = "width or height is not in " + std::to_string(scene::kMinFramePx) + ".." +
+                  std::to_string(scene::kMaxFramePx);
+  if (!p.bad_field.empty()) return p;  // not ok
   p.json = *j;
   p.ok = true;
   return p;

@@ -26,7 +26,9 @@ struct Part {
   bool ok = false, complete = false;
   std::string scene_hash, settings_hash, video_format;
   long first = 0, last = -1, frame_count = 0, written = 0;
-  int crf = 0;
+  int crf = 0, width = 0, height = 0;
+  double fps = 0;
+  std::string bad_field;  ///< when !ok: the field missing, mistyped or out of range
   io::Json json;
 };
 Part read_part(const std::filesystem::path& path);

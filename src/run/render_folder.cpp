@@ -103,21 +103,27 @@ void open_folder(Job& j) {
   // part, so shards running at once never overwrite each other's manifest.
   j.shard = asked.first != 0 || asked.second != j.count - 1;
   j.own = j.shard ? part_manifest_name(asked.first, asked.second) : "manifest.json";
+  // No output may replace an input (a scene file named like the video, say):
+  // refused before anything in the folder changes.
+  io::check_output_target(j.req.dir / j.own, "the manifest");
+  if (s.render.output.video != scene::VideoFormat::none)
+    io::check_output_target(j.req.dir / video_file_name(s, s.render.output.video), "the video");
   // Nothing is written into a folder that is refused (not even the lock file):
   // check it first (a read), then lock, then check again under the lock.
   std::error_code ec;
+  const std::string key = j.man.scene_hash + " " + j.man.settings_hash;
   if (!j.req.force && fs::is_directory(j.req.dir, ec)) try {
       (void)inspect_output(j.req.dir, j.man, j.own, false);
     } catch (const InputError&) {
-      io::FolderLock::refuse_if_held(j.req.dir);  // foreign-looking because its writer is mid-way
-      throw;
+      // Foreign-looking because its writer is mid-way: refused as in use, unless
+      // that writer is a shard of this very render (then check again under the lock).
+      if (io::FolderLock::refuse_if_held(j.req.dir, j.shard ? key : "") != io::FolderLock::Holder::siblings) throw;
     }
   make_folder(j.req.dir);
   // One writer per folder; the shards of one render (same scene and settings) together.
   j.lock = std::make_unique<io::FolderLock>(
       j.req.dir, j.shard ? io::FolderLock::Mode::shared : io::FolderLock::Mode::exclusive,
-      "tumble render " + quote_arg(j.req.scene_arg) + (j.shard ? " --frames " + j.req.frames : std::string()),
-      j.man.scene_hash + " " + j.man.settings_hash);
+      "tumble render " + quote_arg(j.req.scene_arg) + (j.shard ? " --frames " + j.req.frames : std::string()), key);
   j.existing = inspect_output(j.req.dir, j.man, j.own, j.req.force);
   const Existing& ex = j.existing;
   std::tie(j.first, j.last) = asked;
@@ -135,7 +141,6 @@ void open_folder(Job& j) {
     const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
     if (!j.shard || target == j.own || (k >= j.first && k <= j.last)) remove_file(t);
   }
-  if (!j.resume && !j.shard) remove_file(j.req.dir / io::kFrameSumsName);  // every frame is written again
 }
 
 /// What the manifest records of the runs, the GL context and the frames.
@@ -324,6 +329,8 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
                                    ? choose_video_encoder(ctx->vendor(), render::usable_cores())
                                    : VideoEncoder{};
   describe(j, runs, *ctx, renderer.samples(), encoder);
+  // Every frame is written again; gone only now that GL (and its settings) work.
+  if (!j.resume && !j.shard) remove_file(j.req.dir / io::kFrameSumsName);
   l.arm_stop();
   if (r.stream) {
     j.save();

@@ -93,6 +93,18 @@ bool same_scene_file(const std::optional<std::string>& path, const std::optional
   return !ec1 && !ec2 && a == b;
 }
 
+/// --force: the old render goes, so none of its frames can pass for ours later
+/// (a resumed run trusts every frame file in the folder).
+void remove_render(const fs::path& dir, const std::vector<fs::path>& frames, const std::vector<std::string>& videos,
+                   const std::vector<fs::path>& manifests) {
+  std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
+            << " frames)\n";
+  for (const fs::path& f : frames) remove_file(f);
+  for (const std::string& v : videos)
+    if (fs::path(v).filename() == v && is_video_name(v)) remove_file(dir / v);
+  for (const fs::path& m : manifests) remove_file(m);
+}
+
 }  // namespace
 
 Existing inspect_output(const fs::path& dir, const Manifest& want, const std::string& own, bool force) {
@@ -106,9 +118,13 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, const std::st
   if (fs::exists(dir / "manifest.json", ec)) manifests.insert(manifests.begin(), dir / "manifest.json");
   std::string problem;
   std::vector<std::string> videos;
+  std::size_t seen = 0;
   for (const fs::path& mpath : manifests) {
     const std::string name = mpath.filename().string();
-    const std::optional<io::Json> m = io::read_json_file(mpath);
+    bool missing = false;
+    const std::optional<io::Json> m = io::read_json_file(mpath, &missing);
+    if (missing) continue;  // removed since it was listed (a shard beside us finished replacing it)
+    ++seen;
     const std::optional<std::string> hash = m ? string_field(*m, "scene_hash") : std::nullopt;
     const std::optional<std::string> old_video = m ? string_field(*m, "video") : std::nullopt;
     if (old_video) videos.push_back(*old_video);
@@ -136,7 +152,7 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, const std::st
         ex.first = (*r)[0].get<long>(), ex.last = (*r)[1].get<long>();
     }
   }
-  if (manifests.empty() && !frames.empty())
+  if (seen == 0 && !frames.empty())
     problem = "holds " + std::to_string(frames.size()) + " frame_*.png file(s) but no manifest.json";
   if (problem.empty()) {
     if (ex.replacing) ex.resumable = false, ex.first = 0, ex.last = -1;
@@ -145,14 +161,7 @@ Existing inspect_output(const fs::path& dir, const Manifest& want, const std::st
   if (!force)
     throw InputError("tumble: output folder " + dir.string() + " " + problem +
                      ".\ntumble: choose another folder with -o, or add --force to replace that render");
-  // --force: the old render goes, so none of its frames can pass for ours later
-  // (a resumed run trusts every frame file in the folder).
-  std::cerr << "tumble: --force: removing the previous render in " << dir.string() << " (" << frames.size()
-            << " frames)\n";
-  for (const fs::path& f : frames) remove_file(f);
-  for (const std::string& v : videos)
-    if (fs::path(v).filename() == v && is_video_name(v)) remove_file(dir / v);
-  for (const fs::path& m : manifests) remove_file(m);
+  remove_render(dir, frames, videos, manifests);
   return {};
 }
 

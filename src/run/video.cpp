@@ -164,6 +164,15 @@ VideoEncoder choose_video_encoder(const std::string& gl_vendor, int cores) {
   return x264_encoder(cores);
 }
 
+std::string refused_target(const std::filesystem::path& video) {
+  try {
+    io::check_output_target(video, "the video");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
+}
+
 std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp,
                                             const VideoEncoder& encoder) {
   if (format == VideoFormat::mp4) {
@@ -224,6 +233,10 @@ VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoF
     std::filesystem::remove(tmp, ec);
     return {VideoResult::failed, 0, "ffmpeg's " + output.filename().string() + " failed its check (" + bad + ")" +
                                         (std::filesystem::exists(output, ec) ? "; the earlier video is kept" : "")};
+  }
+  if (const std::string why = refused_target(output); !why.empty()) {
+    std::filesystem::remove(tmp, ec);
+    return {VideoResult::failed, 0, why};
   }
   std::filesystem::rename(tmp, output, ec);
   if (ec) return {VideoResult::failed, 0, "cannot rename " + tmp.string() + " to " + output.string() + ": " + ec.message()};

@@ -49,6 +49,9 @@ std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const s
 /// it merges repeats) lasting about frames / fps, as ffprobe counts them;
 /// else what is wrong.
 std::string verify_video(const std::filesystem::path& video, long frames, int fps, VideoFormat format);
+/// Why `video` may not be written (io::check_output_target: an input of this
+/// run, or not a regular file), or "" when it may.
+std::string refused_target(const std::filesystem::path& video);
 
 /// How an encode ended. `signal` is SIGINT/SIGTERM when it was interrupted
 /// (tumble asked to stop, or ffmpeg itself got the terminal's Ctrl-C).

@@ -134,6 +134,10 @@ VideoResult VideoStream::finish(const StopPoll& stop) {
     std::filesystem::remove(tmp_, ec);
     return status_ = {VideoResult::failed, 0, "ffmpeg's " + output_.filename().string() + " failed its check (" + bad + ")"};
   }
+  if (const std::string why = refused_target(output_); !why.empty()) {
+    std::filesystem::remove(tmp_, ec);
+    return status_ = {VideoResult::failed, 0, why};
+  }
   std::filesystem::rename(tmp_, output_, ec);
   if (ec) {
     std::filesystem::remove(tmp_, ec);

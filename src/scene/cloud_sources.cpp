@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/input_file.hpp"
 #include "scene/internal.hpp"
 
@@ -147,6 +148,14 @@ ParticleCloud cylinder_shape(ShapeFields& f, LoadContext& ctx, double mass, Soli
   const int n = static_cast<int>(f.resolution(15, 2, 10000));
   if (!f.ok) return {};
   const double nz = std::max(1.0, std::round(n * length / (2 * radius)));
+  // Cubic cells: the layers follow length / diameter, at least twice it (resolution 2).
+  if (const double least = std::round(length / radius); !(least <= static_cast<double>(kMaxParticles))) {
+    f.s.error("length", "length / diameter = " + format_number(length / (2 * radius), 3) + " needs at least " +
+                            format_number(least, 3) + " layers of particles at any resolution (the cells are "
+                            "cubes), over the cap of " + std::to_string(kMaxParticles) +
+                            "; give the cylinder a thicker radius");
+    return {};
+  }
   if (!reserve(ctx, f.s, "resolution", 0.7854 * n * n * nz)) return {};
   return make_cylinder(radius, length, n, mass);
 }

@@ -130,15 +130,16 @@ MeshFile read_mesh_bytes(const std::string& bytes, MeshFormat format, const std:
 }
 
 MeshFile read_mesh_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(path.string() + ": no such mesh file (paths are relative to the scene file)");
   const MeshFormat format = mesh_format(path.string());
   std::string bytes;
-  try {
+  try {  // a regular file only, opened without blocking; a FIFO or device says what it is
     bytes = read_input_file(path, kMaxMeshBytes, "mesh file");
   } catch (const UnreadableFile& e) {
     throw InputError(e.what());
+  } catch (const InputError& e) {
+    std::error_code ec;
+    if (std::filesystem::exists(std::filesystem::symlink_status(path, ec))) throw;
+    throw InputError(path.string() + ": no such mesh file (paths are relative to the scene file)");
   }
   return read_mesh_bytes(bytes, format, path.string(), {});
 }

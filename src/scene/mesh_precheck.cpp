@@ -71,6 +71,15 @@ class Lines {
   int line_ = 0;
 };
 
+// Corners of one polygon: assimp's triangulation takes time quadratic in
+// them (a face of 32 000 corners took some 10 s); 4096 stays under 0.2 s.
+constexpr std::size_t kMaxFaceCorners = 4096;
+
+std::string too_many_corners(std::size_t n) {
+  return "a face of " + std::to_string(n) + " corners; tumble reads faces of at most " +
+         std::to_string(kMaxFaceCorners) + " (triangulating one takes time quadratic in its corners): split it";
+}
+
 // v x y z [w]; f/l/p with 1-based (or negative, relative) vertex references.
 void precheck_obj(std::string_view text, const std::string& name) {
   Lines in(text, name);
@@ -85,6 +94,7 @@ void precheck_obj(std::string_view text, const std::string& name) {
       const std::size_t least = k == "f" ? 3 : k == "l" ? 2 : 1;
       if (in.words.size() < least + 1)
         in.fail("expected at least " + std::to_string(least) + " vertices after '" + std::string(k) + "'");
+      if (in.words.size() - 1 > kMaxFaceCorners) in.fail(too_many_corners(in.words.size() - 1));
       for (std::size_t i = 1; i < in.words.size(); ++i) {
         const std::string_view w = in.words[i];
         const long long r = in.integer(w.substr(0, w.find('/')));
@@ -123,6 +133,7 @@ void precheck_off(std::string_view text, const std::string& name) {
     const long long n = in.integer(in.words[0]);
     if (n < 1 || static_cast<std::size_t>(n) + 1 > in.words.size())
       in.fail("face " + std::to_string(f) + ": expected " + quote_token(in.words[0], '\'') + " vertex indices after the count");
+    if (static_cast<std::size_t>(n) > kMaxFaceCorners) in.fail("face " + std::to_string(f) + ": " + too_many_corners(n));
     for (long long i = 1; i <= n; ++i)
       if (const long long k = in.integer(in.words[static_cast<std::size_t>(i)]); k < 0 || k >= nv)
         in.fail("face " + std::to_string(f) + ": vertex index " + std::to_string(k) + "; expected 0.." + std::to_string(nv - 1));

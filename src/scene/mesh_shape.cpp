@@ -1,5 +1,6 @@
 // shape = { type = "mesh", ... }: a mesh file, checked, turned into particles,
 // with the exact mass properties beside the cloud's for `tumble info`.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -77,7 +78,21 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
     const LatticeSpec l = lattice_for(src.report, res);
     const double budget = static_cast<double>(kMaxParticles - ctx.particles);
     VolumeFill f;
-    if (volume) f = fill_volume(mesh, watertight, l, 1.0, 4 * budget);
+    try {
+      if (volume) f = fill_volume(mesh, watertight, l, 1.0, {.max_points = 4 * budget});
+    } catch (const FillTooCostly& e) {  // bounded like the import: a clear stop, not minutes of work
+      s.error(q.tolerance ? "inertia_tolerance" : "resolution",
+              src.file + ": the volume fill at resolution " + std::to_string(res) + " stopped: " + e.what() +
+                  "; lower the resolution" + (q.tolerance ? " (raise inertia_tolerance)" : "") +
+                  (watertight ? "" : ", close the mesh,") + " or use fill = \"surface\"");
+      return {};
+    }
+    if (f.overlapped > 0 && q.tolerance) {
+      s.error("inertia_tolerance", src.file + ": the surface intersects itself (" + std::to_string(f.overlapped) +
+                                       " lattice points are enclosed twice or negatively), so there is no exact "
+                                       "tensor to meet; give resolution instead, or merge the shells into one");
+      return {};
+    }
     const double estimate = volume ? f.lattice_points : src.report.area / (l.spacing * l.spacing);
     if (estimate > 4 * budget) {
       s.error(q.tolerance ? "inertia_tolerance" : "resolution",
@@ -90,6 +105,8 @@ ParticleCloud fill_mesh(const TriangleMesh& mesh, const Request& q, MeshSource& 
     if (volume) {
       c = std::move(f.cloud);
       src.ambiguous = f.ambiguous;
+      src.near = f.near;
+      src.overlapped = f.overlapped;
     } else {
       c = fill_surface(mesh, static_cast<std::size_t>(std::max(1.0, std::round(estimate))), 1.0,
                        static_cast<std::uint64_t>(res));
@@ -178,9 +195,11 @@ std::optional<ParticleCloud> vertex_cloud(const Request& q, const LoadedMesh& m,
     // Every PLY vertex with its own mass (kg); a shape `mass` rescales them to that total.
     for (const std::string& w : m.ply->warnings) st.ctx.diag.warning(st.t.source(), st.path, w);
     for (double w : m.ply->masses) src.file_mass += w;
-    const double k = q.mass ? *q.mass / src.file_mass : 1.0;
     for (std::size_t i = 0; i < m.ply->masses.size(); ++i) {
-      if (m.ply->masses[i] > 0) cloud.push_back({m.ply->positions[i] * q.scale, m.ply->masses[i] * k});
+      // Each mass's share of the file's total, then the shape's mass: 1/total
+      // first overflowed for tiny (subnormal) masses and gave "mass inf".
+      const double w = q.mass ? m.ply->masses[i] / src.file_mass * *q.mass : m.ply->masses[i];
+      if (m.ply->masses[i] > 0) cloud.push_back({m.ply->positions[i] * q.scale, w});
       else ++src.massless_vertices;  // adds nothing; the core wants every mass > 0
     }
     if (!reserve_particles(st.ctx, st.s, "file", static_cast<double>(cloud.size()))) return std::nullopt;
@@ -230,12 +249,13 @@ std::optional<SolidProperties> exact_reference(const Request& q, TriangleMesh& m
 
 /// A volume fill of an open mesh: the winding number's ambiguous share of the
 /// cloud is tolerated with a warning up to kMaxAmbiguous, an error above.
-bool tolerate_holes(const Request& q, const ParticleCloud& cloud, const MeshSource& src, const Stage& st) {
+bool tolerate_holes(const Request& q, const MeshSource& src, const Stage& st) {
   if (q.fill != "volume" || src.report.watertight()) return true;
-  const double frac = static_cast<double>(src.ambiguous) / static_cast<double>(cloud.size());
+  // Of the points the test counts as inside or nearly (winding number over 0.25), so at most 100 %.
+  const double frac = static_cast<double>(src.ambiguous) / static_cast<double>(std::max<std::size_t>(src.near, 1));
   const std::string what = "not watertight (" + holes(src.report) + "); the inside test is the generalized "
                            "winding number, which is ambiguous (between 0.25 and 0.75) at " + format_number(100 * frac, 3) +
-                           " % of the " + std::to_string(cloud.size()) + " particles";
+                           " % of the " + std::to_string(src.near) + " lattice points it finds inside or nearly so";
   if (frac > kMaxAmbiguous) {
     st.s.error("fill", src.file + ": " + what + ": the holes are too large for it to tolerate (limit " +
                            format_number(100 * kMaxAmbiguous, 3) + " %); close the mesh or use fill = \"surface\"");
@@ -258,7 +278,17 @@ std::optional<ParticleCloud> filled_cloud(const Request& q, TriangleMesh& mesh, 
     st.s.error("resolution", src.file + ": no lattice point falls inside the mesh; raise the resolution");
     return std::nullopt;
   }
-  if (!tolerate_holes(q, cloud, src, st)) return std::nullopt;
+  if (!tolerate_holes(q, src, st)) return std::nullopt;
+  if (src.overlapped > 0) {
+    // The exact (divergence-theorem) tensor counts overlapping regions twice;
+    // the lattice counts the union once, so the union's mass is weighed.
+    src.has_exact = false;
+    st.warn(src.file + ": the surface intersects itself: " + std::to_string(src.overlapped) + " of the " +
+            std::to_string(cloud.size()) + " lattice points inside are enclosed twice or negatively (shells that "
+            "overlap, e.g. parts exported without a boolean union); the mass and inertia are the union's, from the "
+            "lattice (exact volume " + format_number(std::abs(exact->volume), 4) + " m³ counts the overlap twice; "
+            "lattice volume " + format_number(static_cast<double>(cloud.size()) * std::pow(src.spacing, 3), 4) + " m³)");
+  }
   const double measure = src.has_exact ? std::abs(exact->volume)
                                        : static_cast<double>(cloud.size()) * std::pow(src.spacing, 3);
   const double mass = q.mass ? *q.mass : q.density ? *q.density * measure : 1.0;

@@ -10,12 +10,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <sstream>
 #include <optional>
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/format.hpp"
+#include "scene/mesh_file.hpp"
 
 namespace tumble::scene {
 
@@ -374,10 +376,17 @@ PlyVertices read_ply_vertices(std::istream& in, const std::string& name) { retur
 void check_ply_mesh(std::istream& in, const std::string& name) { (void)read_ply(in, name, true); }
 
 PlyVertices read_ply_vertices(const std::filesystem::path& path) {
-  std::error_code ec;
-  std::ifstream in(path, std::ios::binary);
-  if (!std::filesystem::is_regular_file(path, ec) || !in)
+  std::string bytes;
+  try {  // as every mesh: a regular file only, never waited on, under the mesh size cap
+    bytes = read_input_file(path, kMaxMeshBytes, "PLY file");
+  } catch (const UnreadableFile& e) {
+    throw InputError(e.what());
+  } catch (const InputError& e) {
+    std::error_code ec;
+    if (std::filesystem::exists(std::filesystem::symlink_status(path, ec))) throw;
     throw InputError(path.string() + ": cannot open the PLY file (paths are relative to the scene file)");
+  }
+  std::istringstream in(std::move(bytes));
   return read_ply_vertices(in, path.string());
 }
 

@@ -110,6 +110,8 @@ struct MeshSource {
   bool flipped = false;             ///< was inside out; turned right way out
   std::string inside_test;          ///< volume fill: how inside was decided
   std::size_t ambiguous = 0;        ///< volume fill: lattice points with winding number in (0.25, 0.75)
+  std::size_t near = 0;             ///< volume fill: lattice points with winding number over 0.25
+  std::size_t overlapped = 0;       ///< volume fill: lattice points enclosed twice or negatively (self-intersection)
   TriangleMesh surface;             ///< body cloud axes (part placement applied), m
   double mass = 0;                  ///< kg
   std::size_t particles = 0;

@@ -10,12 +10,6 @@
 
 namespace tumble::viz {
 
-LabelMetrics view_label_metrics(float height_px) {
-  const float size = std::clamp(height_px * 0.055f, 11.0f, 26.0f);
-  const float pad = std::round(size * 0.6f);
-  return {size, pad, pad * 0.6f, pad * 0.6f + 1.25f * size};
-}
-
 float fade_alpha(double tau, double start, double end, double fade) {
   if (tau < start || tau > end) return 0.0f;
   const double f = std::min(fade, 0.25 * (end - start));

@@ -11,14 +11,6 @@
 
 namespace tumble::viz {
 
-/// Where the renderer draws a view's title (View::label), top-left, in a
-/// viewport `height_px` high: text size, left pad and top (px), and the y just
-/// below it, where the view's own text may start.
-struct LabelMetrics {
-  float size_px, pad_px, top_px, bottom_px;
-};
-LabelMetrics view_label_metrics(float height_px);
-
 /// Opacity in [0, 1] at video time `tau` of text shown over [start, end]
 /// (video s): linear fades of `fade` s (at most a quarter of the span).
 float fade_alpha(double tau, double start, double end, double fade = 0.4);

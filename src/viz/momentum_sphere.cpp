@@ -88,36 +88,17 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   return out;
 }
 
-float sphere_shift_room(float width_px, float height_px) {
-  // |L| is the height's 1/(2 kSphereReach) (fov: ±kSphereReach |L|); the axis labels, at
-  // kAxisLabelReach and about 6 % of the height wide, stay inside with a 2 % margin.
-  const float unit = height_px / (2.0f * static_cast<float>(kSphereReach));
-  return std::max(0.0f, 0.5f * width_px - static_cast<float>(kAxisLabelReach) * unit - 0.05f * height_px);
-}
-
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const Eigen::Vector3d& I = in.inertia;
   const double L = in.momentum.norm();
   view.name = "momentum_sphere";
   view.camera = sphere_camera(in.pose, in.camera);
   if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
-  const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
-  if (in.key) {
-    const float size = text_px(TextRole::key, in.frame_h);
-    const std::vector<KeyEntry> entries = sphere_key(in);
-    KeySpot spot;  // by default bottom-left, the sphere moved right by half the key's width so they part
-    const glm::vec2 k = key_size(entries, size);
-    spot.top_left = {0.5f * size, std::max(top, in.height_px - k.y - 0.5f * size)};
-    spot.shift_px = std::min(0.5f * k.x, sphere_shift_room(in.width_px, in.height_px));
-    if (in.key_spot) spot = *in.key_spot;
-    add_key(view, entries, spot.top_left, size);
-    shift_content(view, spot.shift_px, in.height_px);
-  }
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
   add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
   if (L <= 0) return;
-  if (!in.outline_only && draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
+  if (draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
       PolylineItem p{{}, c, w, false, name};
@@ -133,7 +114,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
   const double lo = L * L / I[2], hi = L * L / I[0];
   constexpr int kLevels = 10;
-  for (int j = 1; j < kLevels && !in.outline_only; ++j) {
+  for (int j = 1; j < kLevels; ++j) {
     const double two_E = lo + (hi - lo) * j / kLevels;
     if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
     const auto curves = polhodes(I, L, two_E, 96);
@@ -144,11 +125,10 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const std::size_t front_first = view.polylines.size();
   // The separatrix wide, the body's own polhode narrow on top of it: near it
   // the two nearly coincide, and both stay visible (sky-blue edges, magenta core).
-  if (!in.outline_only) add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 4.5f, "separatrix");
+  add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 4.5f, "separatrix");
   const auto own = polhodes(I, L, in.two_E, 192);
   add(own, color_of(Meaning::polhode), 2.0f, "polhode");
-  if (!in.outline_only)
-    for (const auto& c : own) add_direction_arrows(view, unit(c), I, 4, color_of(Meaning::polhode), 0.13);
+  for (const auto& c : own) add_direction_arrows(view, unit(c), I, 4, color_of(Meaning::polhode), 0.13);
   add_saddles(view);
   view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);

@@ -55,14 +55,6 @@ Box text_box(const TextItem& t);
 
 }  // namespace tumble::viz
 
-namespace tumble::viz {
-
-/// Adds `title` at the top-left of a view `width_px` wide, at the view-title
-/// size of a frame `frame_h` high, wrapped to the view's width. Returns the y
-/// (px) just below it, where the view's other text may start (0: no title).
-float add_view_title(View& view, const std::string& title, float width_px, int frame_h);
-
-}  // namespace tumble::viz
 
 namespace tumble::viz {
 

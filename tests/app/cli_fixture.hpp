@@ -83,6 +83,22 @@ class Cli : public testing::Test {
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
   }
+  // Runs tumble with at most `seconds` and 2 GB of address space: a hang or a
+  // runaway read fails the test instead of the machine. Under AddressSanitizer
+  // (whose shadow memory reserves terabytes of address space) only the time
+  // limit applies. `prefix`: shell words before the command (ulimit -f 8; cd DIR &&).
+  Result bounded(const std::string& args, int seconds = 20, const std::string& prefix = "") const {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+#if defined(__SANITIZE_ADDRESS__)
+    const std::string limit = "";
+#else
+    const std::string limit = "ulimit -v 2000000; ";
+#endif
+    const std::string cmd = "bash -c \"" + limit + prefix + " exec timeout -s KILL " + std::to_string(seconds) + " '" +
+                            tumble_bin() + "' " + args + "\" >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int st = std::system(cmd.c_str());
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(out), slurp(err)};
+  }
   static std::string slurp(const fs::path& p) {
     std::ifstream in(p);
     std::stringstream s;

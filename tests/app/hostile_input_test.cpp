@@ -17,22 +17,6 @@ class HostileInput : public Cli {
     std::ofstream(p) << "[[bodies]]\ncloud = \"" << cloud << "\"\n";
     return "'" + p.string() + "'";
   }
-  // Runs tumble with at most 20 s and 2 GB of address space: a hang or a
-  // runaway read fails the test instead of the machine. Under AddressSanitizer
-  // (whose shadow memory reserves terabytes of address space) only the time
-  // limit applies.
-  Result bounded(const std::string& args) const {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-#if defined(__SANITIZE_ADDRESS__)
-    const std::string limit = "";
-#else
-    const std::string limit = "ulimit -v 2000000; ";
-#endif
-    const std::string cmd = "bash -c \"" + limit + "exec timeout -s KILL 20 '" + tumble_bin() + "' " + args +
-                            "\" >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int st = std::system(cmd.c_str());
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(out), slurp(err)};
-  }
   // Runs tumble unable to read what its mode bits forbid, even as root: without
   // CAP_DAC_OVERRIDE / CAP_DAC_READ_SEARCH (setpriv drops them from the bounding
   // set, so the exec'd tumble never gets them back).

@@ -83,10 +83,10 @@ TEST(VolumeFill, RowCrossingsAgreeWithWindingNumber) {
 TEST(VolumeFill, MaxPointsCountsWithoutFilling) {
   const TriangleMesh m = box_mesh({1.0, 0.6, 0.4});
   const LatticeSpec l{0.1, Eigen::Vector3d::Constant(0.5)};
-  const VolumeFill over = fill_volume(m, true, l, 1.0, 239);
+  const VolumeFill over = fill_volume(m, true, l, 1.0, {239});
   EXPECT_EQ(over.lattice_points, 240.0);
   EXPECT_TRUE(over.cloud.empty());
-  EXPECT_EQ(fill_volume(m, true, l, 1.0, 240).cloud.size(), 240u);
+  EXPECT_EQ(fill_volume(m, true, l, 1.0, {240}).cloud.size(), 240u);
   EXPECT_EQ(fill_volume(m, true, l, 1.0).lattice_points, lattice_counts(m, l).prod());
 }
 

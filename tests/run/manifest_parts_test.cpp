@@ -42,7 +42,8 @@ TEST(ManifestParts, APartWithAbsurdNumbersIsNotOk) {
   fs::create_directories(dir);
   const fs::path part = dir / part_manifest_name(0, 3);
   auto write = [&](const std::string& count, const std::string& range, const std::string& written) {
-    std::ofstream(part, std::ios::trunc) << R"({"tool": "tumble", "scene_hash": "a", "settings_hash": "b", "frames": )"
+    std::ofstream(part, std::ios::trunc) << R"({"tool": "tumble", "scene_hash": "a", "settings_hash": "b", "fps": 10, )"
+                                         << R"("width": 96, "height": 72, "frames": )"
                                          << range << R"(, "frame_count": )" << count << R"(, "frames_written": )"
                                          << written << R"(, "complete": true})";
     return tumble::run::read_part(part).ok;

@@ -96,9 +96,8 @@ TEST(SphereFigure, TextbookCameraShowsAllSixEndsAndTheStartingSaddle) {
 
 TEST(SphereFigure, SaddlesMarkedAndTheFarSideShowsFaintly) {
   const Eigen::Vector3d pi = near_saddle();
-  MomentumSphereInput in{kI, pi, {}, two_E(pi), ""};
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
   in.camera = textbook_camera(kI, pi);
-  in.key = false;
   View v;
   build_momentum_sphere(v, in);
   int saddles = 0;
@@ -120,8 +119,7 @@ TEST(SphereFigure, SaddlesMarkedAndTheFarSideShowsFaintly) {
 
 TEST(SphereFigure, EnergyEllipsoidHasItsOwnColourAndCanBeTurnedOff) {
   const Eigen::Vector3d pi = near_saddle();
-  MomentumSphereInput in{kI, pi, {}, two_E(pi), ""};
-  in.key = false;
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
   View on;
   build_momentum_sphere(on, in);
   ASSERT_EQ(on.surfaces.size(), 1u);

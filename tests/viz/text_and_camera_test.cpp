@@ -40,6 +40,13 @@ TEST(TextLayout, WrapsAtTheWidthAndKeepsExplicitBreaks) {
   EXPECT_LE(text_width(w, 20), 250.0f);
   EXPECT_GE(text_lines(w), 3);
   EXPECT_NE(w.find("\nSecond line"), std::string::npos);
+  // Spaces written between words stay within a line (a legend's "   " between
+  // items); a break drops them, and none lead a line.
+  EXPECT_EQ(wrap_text("red = I1   green = I2", 20, 1000), "red = I1   green = I2");
+  const std::string legend = wrap_text("red = smallest moment   green = intermediate   blue = largest", 20, 300);
+  EXPECT_GE(text_lines(legend), 2);
+  EXPECT_EQ(legend.find("\n "), std::string::npos);
+  EXPECT_NE(legend.find("moment   green"), std::string::npos) << legend;
   // Widths follow DejaVu Sans drawn at the renderer's scale, where the size is
   // ascent − descent (2384 font units; an em is 2048): "H" advances 1540 units.
   EXPECT_NEAR(glyph_metrics(U'H').advance, 1540.0f / 2384.0f, 1e-4f);
@@ -55,7 +62,7 @@ TEST(Key, EntriesSitOnTheBackdropWithoutOverlapping) {
   const std::vector<KeyEntry> entries = {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e₁ e₂ e₃"},
                                          key_entry(Meaning::L, "L, fixed in space"),
                                          key_entry(Meaning::momentum_point, "Π")};
-  const Box box = add_key_top_right(v, entries, 480, 30, 13);
+  const Box box = add_key(v, entries, {20, 30}, 13);
   ASSERT_EQ(v.texts.size(), 3u + 3u + 2u);
   EXPECT_GT(v.texts[0].backdrop.a, 0.5f);
   for (std::size_t i = 0; i < v.texts.size(); ++i) {
@@ -67,8 +74,8 @@ TEST(Key, EntriesSitOnTheBackdropWithoutOverlapping) {
     EXPECT_LE(b.y1, box.y1);
     for (std::size_t j = i + 1; j < v.texts.size(); ++j) EXPECT_FALSE(b.overlaps(text_box(v.texts[j]))) << i << " " << j;
   }
-  EXPECT_LE(box.x1, 480.0f);
-  EXPECT_GE(box.y0, 30.0f);
+  EXPECT_FLOAT_EQ(box.x0, 20.0f);  // at the corner it was given
+  EXPECT_FLOAT_EQ(box.y0, 30.0f);
 }
 
 // docs/colours.md lists every meaning with the same RGB as viz::kPalette.
@@ -166,7 +173,7 @@ TEST(SphereCamera, PoseDependsOnlyOnThePast) {
 }
 
 TEST(MomentumSphere, AxesLabelledWhereTheyCanBeSeen) {
-  MomentumSphereInput in{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""};
+  MomentumSphereInput in{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0};
   in.pose.dir = in.momentum.normalized();
   in.pose.up = Eigen::Vector3d(0, 0, 1);
   in.width_px = 960, in.height_px = 540, in.frame_h = 540;

@@ -85,7 +85,6 @@ class SpherePanel : public Panel {
       in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
     }
     in.camera = settings_;
-    in.key = false;  // the layout draws it, beside the content
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     in.fit_radius = kFitRadius;

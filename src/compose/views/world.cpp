@@ -15,6 +15,8 @@ namespace {
 
 constexpr double kMargin = 0.04;  // of the content's half size, kept clear at each edge
 constexpr long kFitSamples = 240;  // frames looked at to fit the camera
+constexpr double kClosest = 0.1;   // a camera moves at most this much closer to fit
+constexpr double kFillMargin = 0.1;  // room around what a camera moved closer frames
 
 class WorldPanel : public Panel {
  public:
@@ -29,14 +31,39 @@ class WorldPanel : public Panel {
     size_ = size;
     const double aspect = size.x / std::max(size.y, 1.0f);
     camera_ = own_ ? view_camera(*own_) : scene_camera(ctx_.scene, ctx_.runs, aspect);
+    // The cells of a [compare] grid share one camera, fitted to every run, so
+    // the methods' bodies are drawn at one scale side by side.
+    const bool grid = ctx_.scene.render.explain.views.empty() && ctx_.runs.size() > 1;
     std::vector<Shot> shots;
     const long n = ctx_.world.clock().count();
-    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
-      const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
-      const viz::View v = ctx_.world.view(run_, k, camera_, int(size.x), int(size.y));
-      shots.push_back({v.camera, solid_points(v)});
+    for (std::size_t r = 0; r < ctx_.runs.size(); ++r) {
+      if (!grid && r != run_) continue;
+      for (long i = 0; i < std::min(n, kFitSamples); ++i) {
+        const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
+        const viz::View v = ctx_.world.view(r, k, camera_, int(size.x), int(size.y));
+        shots.push_back({v.camera, solid_points(v)});
+      }
     }
-    camera_ = backed_off(camera_, backoff(shots, aspect, kMargin));
+    camera_ = backed_off(camera_, backoff(shots, aspect, margins(size), closest()));
+  }
+
+  // A camera set for the whole frame (the scene's) frames its view of a
+  // laid-out frame loosely, and so does an automatic one (bounding spheres):
+  // both move closer until the whole video's bodies and arrows fill the
+  // content. A classic single view keeps the scene's camera, backed off only
+  // where something would leave the frame.
+  double closest() const {
+    if (own_) return 1.0;  // the view's own camera is where its author put it (backed off only if something leaves)
+    const bool laid_out = !ctx_.scene.render.explain.views.empty() || ctx_.runs.size() > 1;
+    return laid_out || ctx_.scene.render.camera.automatic ? kClosest : 1.0;
+  }
+  // Room at the edges: the margin, and above and below a name label's line
+  // (labels sit beside their bodies: above or below, or at their sides).
+  Margins margins(glm::vec2 size) const {
+    const double m = closest() < 1 ? kFillMargin : kMargin;
+    if (!ctx_.scene.render.explain.labels) return m;
+    const double line = 1.2 * 1.1 * ctx_.world.font_px();
+    return {m, std::max(m, line / (0.5 * std::max(size.y, 1.0f)))};
   }
 
   viz::View content(long k) const override {
