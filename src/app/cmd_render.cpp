@@ -61,6 +61,26 @@ render::GlBackend parse_backend_option(const std::string& gl) {
   }
 }
 
+GlChoice choose_gl(const std::string& gl, std::optional<int> gpu) {
+  // --gpu N means an EGL device: a user picking a GPU wants it drawing.
+  if (gpu && gl == "osmesa") throw InputError("--gpu chooses an EGL device; it needs --gl egl, not osmesa");
+  GlChoice c{gpu ? render::GlBackend::egl : parse_backend_option(gl), gpu};
+  try {  // the environment's device is checked before any work, as the options are
+    if (!c.gpu && c.backend == render::GlBackend::egl) c.gpu = render::default_egl_device();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  return c;
+}
+
+void add_gl_options(CLI::App* cmd, std::string& gl, std::optional<int>& gpu) {
+  cmd->add_option("--gl", gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
+  cmd->add_option("--gpu", gpu,
+                  "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "
+                  "Mesa's surfaceless display or device 0)")
+      ->check(CLI::Range(0, 1023));
+}
+
 namespace {
 
 /// The options that are scene keys go into the scene before it is validated,
@@ -86,15 +106,11 @@ RenderPlan plan_render(const RenderOptions& o) {
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
   if (o.frames_out != "png" && o.frames_out != "none")
     throw InputError("--frames-out: expected png or none, found '" + o.frames_out + "'");
-  // --gpu N means an EGL device: a user picking a GPU wants it drawing.
-  if (o.gpu && o.gl == "osmesa") throw InputError("--gpu chooses an EGL device; it needs --gl egl, not osmesa");
-  const render::GlBackend backend = o.gpu ? render::GlBackend::egl : parse_backend_option(o.gl);
+  const GlChoice gl = choose_gl(o.gl, o.gpu);
   int jobs = 0;
-  std::optional<int> gpu = o.gpu;
   try {  // the environment's values are checked before any work, as the options are
     jobs = render::worker_threads(o.jobs);
     (void)render::gpu_paths_from_env(false);  // TUMBLE_GPU_PATHS, read again once the GL context is known
-    if (!gpu && backend == render::GlBackend::egl) gpu = render::default_egl_device();
   } catch (const std::invalid_argument& e) {
     throw InputError(e.what());
   }
@@ -106,7 +122,7 @@ RenderPlan plan_render(const RenderOptions& o) {
   if (o.frames_out == "none" && !o.frames.empty())
     throw InputError("--frames-out none streams the whole video; --frames needs PNG frames (--frames-out png)");
   out.apply_quality(*q, o.frame.msaa || !o.frame.aa.empty());
-  return {std::move(s), backend, gpu, jobs};
+  return {std::move(s), gl.backend, gl.gpu, jobs};
 }
 
 // --layout FILE: the layout report of the asked frames, no pixels (no GL, no output folder).
@@ -150,11 +166,7 @@ void add_render_command(CLI::App& app, Action& action) {
                   "Write only the layout report, JSON Lines (frame, view, name, kind, box, visible per drawn item), "
                   "to this file: no pixels, no output folder")
       ->check(kPath);
-  cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
-  cmd->add_option("--gpu", o->gpu,
-                  "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "
-                  "Mesa's surfaceless display or device 0)")
-      ->check(CLI::Range(0, 1023));
+  add_gl_options(cmd, o->gl, o->gpu);
   cmd->add_option("--jobs", o->jobs,
                   "Frame encoder threads (default: env TUMBLE_JOBS, else the cores this process may use: "
                   "affinity mask and cgroup CPU quota); the frames' bytes do not depend on it")
