@@ -59,11 +59,12 @@ int run_storyboard(const StoryboardOptions& o) {
   const fs::path path = output_path(o, s);
   ConsoleListener listener(o.progress != "none");
   const run::StoryboardSummary m = run::write_storyboard({s, path, o.spread, o.tile_width, o.columns, gl.backend, gl.gpu}, listener);
-  std::cout << "storyboard of " << s.name << ": " << m.tiles.size() << " tiles (frames";
+  std::cout << "storyboard of " << s.name << ": " << m.tiles.size() << (m.tiles.size() == 1 ? " tile" : " tiles")
+            << " (frames";
   for (const compose::StoryTile& t : m.tiles) std::cout << " " << t.frame;
   std::cout << " of " << m.count << "), each " << m.tile_w << "x" << m.tile_h << ", sheet " << m.width << "x"
             << m.height << " written to " << path.string() << "\n";
-  return kOk;
+  return m.diverged ? kDiverged : kOk;  // as render: the frames before the divergence are there
 }
 
 }  // namespace
