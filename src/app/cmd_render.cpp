@@ -43,13 +43,15 @@ std::vector<scene::Override> frame_overrides(const FrameOverrides& o) {
   return v;
 }
 
-void add_frame_override_options(CLI::App* cmd, FrameOverrides& o) {
+void add_frame_override_options(CLI::App* cmd, FrameOverrides& o, bool quality) {
   cmd->add_option("--width", o.width, "Frame width, px");
   cmd->add_option("--height", o.height, "Frame height, px");
   cmd->add_option("--fps", o.fps, "Frames per second (frame k shows t = k·time_scale/fps)");
-  cmd->add_option("--aa", o.aa, "Anti-aliasing fxaa, msaa or none (overrides the scene's aa and --quality)");
+  const std::string over = quality ? " and --quality" : "";
+  cmd->add_option("--aa", o.aa, "Anti-aliasing fxaa, msaa or none (overrides the scene's aa" + over + ")");
   cmd->add_option("--msaa", o.msaa,
-                  "MSAA samples 0, 2 or 4 (overrides --quality; alone it also sets aa: msaa, or none for 0)");
+                  "MSAA samples 0, 2 or 4 (overrides the scene's msaa" + over +
+                      "; alone it also sets aa: msaa, or none for 0)");
 }
 
 render::GlBackend parse_backend_option(const std::string& gl) {
@@ -152,7 +154,7 @@ void add_render_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "render",
                                     "Render a scene headless to PNG frames, a manifest and a video", run_render);
   cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)")->check(kPath);
-  add_frame_override_options(cmd, o->frame);
+  add_frame_override_options(cmd, o->frame, true);
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
   cmd->add_option("--frames-out", o->frames_out,

@@ -83,7 +83,7 @@ void add_storyboard_command(CLI::App& app, Action& action) {
                   "video's size and scaled down to it")
       ->check(CLI::Range(64, 3840));
   cmd->add_option("--columns", o->columns, "Tiles per row (default 4)")->check(CLI::Range(1, 16));
-  add_frame_override_options(cmd, o->frame);
+  add_frame_override_options(cmd, o->frame, false);
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
   add_gl_options(cmd, o->gl, o->gpu);
 }

@@ -69,7 +69,8 @@ struct FrameOverrides {
   std::string aa;
 };
 std::vector<scene::Override> frame_overrides(const FrameOverrides& o);
-void add_frame_override_options(CLI::App* cmd, FrameOverrides& o);
+/// `quality`: the command has --quality too (the help says --aa and --msaa override it).
+void add_frame_override_options(CLI::App* cmd, FrameOverrides& o, bool quality);
 
 /// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
 /// naming the option for an unknown name, so it fails before any work.
