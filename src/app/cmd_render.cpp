@@ -43,13 +43,15 @@ std::vector<scene::Override> frame_overrides(const FrameOverrides& o) {
   return v;
 }
 
-void add_frame_override_options(CLI::App* cmd, FrameOverrides& o) {
+void add_frame_override_options(CLI::App* cmd, FrameOverrides& o, bool quality) {
   cmd->add_option("--width", o.width, "Frame width, px");
   cmd->add_option("--height", o.height, "Frame height, px");
   cmd->add_option("--fps", o.fps, "Frames per second (frame k shows t = k·time_scale/fps)");
-  cmd->add_option("--aa", o.aa, "Anti-aliasing fxaa, msaa or none (overrides the scene's aa and --quality)");
+  const std::string over = quality ? " and --quality" : "";
+  cmd->add_option("--aa", o.aa, "Anti-aliasing fxaa, msaa or none (overrides the scene's aa" + over + ")");
   cmd->add_option("--msaa", o.msaa,
-                  "MSAA samples 0, 2 or 4 (overrides --quality; alone it also sets aa: msaa, or none for 0)");
+                  "MSAA samples 0, 2 or 4 (overrides the scene's msaa" + over +
+                      "; alone it also sets aa: msaa, or none for 0)");
 }
 
 render::GlBackend parse_backend_option(const std::string& gl) {
@@ -59,6 +61,26 @@ render::GlBackend parse_backend_option(const std::string& gl) {
   } catch (const std::invalid_argument& e) {
     throw InputError(where + ": " + e.what());
   }
+}
+
+GlChoice choose_gl(const std::string& gl, std::optional<int> gpu) {
+  // --gpu N means an EGL device: a user picking a GPU wants it drawing.
+  if (gpu && gl == "osmesa") throw InputError("--gpu chooses an EGL device; it needs --gl egl, not osmesa");
+  GlChoice c{gpu ? render::GlBackend::egl : parse_backend_option(gl), gpu};
+  try {  // the environment's device is checked before any work, as the options are
+    if (!c.gpu && c.backend == render::GlBackend::egl) c.gpu = render::default_egl_device();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  return c;
+}
+
+void add_gl_options(CLI::App* cmd, std::string& gl, std::optional<int>& gpu) {
+  cmd->add_option("--gl", gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
+  cmd->add_option("--gpu", gpu,
+                  "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "
+                  "Mesa's surfaceless display or device 0)")
+      ->check(CLI::Range(0, 1023));
 }
 
 namespace {
@@ -86,15 +108,11 @@ RenderPlan plan_render(const RenderOptions& o) {
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
   if (o.frames_out != "png" && o.frames_out != "none")
     throw InputError("--frames-out: expected png or none, found '" + o.frames_out + "'");
-  // --gpu N means an EGL device: a user picking a GPU wants it drawing.
-  if (o.gpu && o.gl == "osmesa") throw InputError("--gpu chooses an EGL device; it needs --gl egl, not osmesa");
-  const render::GlBackend backend = o.gpu ? render::GlBackend::egl : parse_backend_option(o.gl);
+  const GlChoice gl = choose_gl(o.gl, o.gpu);
   int jobs = 0;
-  std::optional<int> gpu = o.gpu;
   try {  // the environment's values are checked before any work, as the options are
     jobs = render::worker_threads(o.jobs);
     (void)render::gpu_paths_from_env(false);  // TUMBLE_GPU_PATHS, read again once the GL context is known
-    if (!gpu && backend == render::GlBackend::egl) gpu = render::default_egl_device();
   } catch (const std::invalid_argument& e) {
     throw InputError(e.what());
   }
@@ -106,7 +124,7 @@ RenderPlan plan_render(const RenderOptions& o) {
   if (o.frames_out == "none" && !o.frames.empty())
     throw InputError("--frames-out none streams the whole video; --frames needs PNG frames (--frames-out png)");
   out.apply_quality(*q, o.frame.msaa || !o.frame.aa.empty());
-  return {std::move(s), backend, gpu, jobs};
+  return {std::move(s), gl.backend, gl.gpu, jobs};
 }
 
 // --layout FILE: the layout report of the asked frames, no pixels (no GL, no output folder).
@@ -136,7 +154,7 @@ void add_render_command(CLI::App& app, Action& action) {
   const auto [cmd, o] = add_command(app, action, "render",
                                     "Render a scene headless to PNG frames, a manifest and a video", run_render);
   cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)")->check(kPath);
-  add_frame_override_options(cmd, o->frame);
+  add_frame_override_options(cmd, o->frame, true);
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
   cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
   cmd->add_option("--frames-out", o->frames_out,
@@ -150,11 +168,7 @@ void add_render_command(CLI::App& app, Action& action) {
                   "Write only the layout report, JSON Lines (frame, view, name, kind, box, visible per drawn item), "
                   "to this file: no pixels, no output folder")
       ->check(kPath);
-  cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
-  cmd->add_option("--gpu", o->gpu,
-                  "EGL device N of eglQueryDevicesEXT (implies --gl egl; default: env TUMBLE_EGL_DEVICE, else "
-                  "Mesa's surfaceless display or device 0)")
-      ->check(CLI::Range(0, 1023));
+  add_gl_options(cmd, o->gl, o->gpu);
   cmd->add_option("--jobs", o->jobs,
                   "Frame encoder threads (default: env TUMBLE_JOBS, else the cores this process may use: "
                   "affinity mask and cgroup CPU quota); the frames' bytes do not depend on it")

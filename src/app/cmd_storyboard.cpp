@@ -46,8 +46,7 @@ fs::path output_path(const StoryboardOptions& o, const scene::Scene& s) {
 int run_storyboard(const StoryboardOptions& o) {
   if (o.progress != "auto" && o.progress != "none")
     throw InputError("--progress: expected auto or none, found '" + o.progress + "'");
-  if (o.gpu && o.gl == "osmesa") throw InputError("--gpu chooses an EGL device; it needs --gl egl, not osmesa");
-  const render::GlBackend backend = o.gpu ? render::GlBackend::egl : parse_backend_option(o.gl);
+  const GlChoice gl = choose_gl(o.gl, o.gpu);
   scene::Scene s = load_scene_verbose(o.scene, frame_overrides(o.frame));
   scene::OutputConfig& out = s.render.output;
   out.apply_quality(scene::Quality::high, o.frame.msaa || !o.frame.aa.empty());  // render's default
@@ -59,12 +58,13 @@ int run_storyboard(const StoryboardOptions& o) {
                      " px; lower --columns or --tile-width");
   const fs::path path = output_path(o, s);
   ConsoleListener listener(o.progress != "none");
-  const run::StoryboardSummary m = run::write_storyboard({s, path, o.spread, o.tile_width, o.columns, backend, o.gpu}, listener);
-  std::cout << "storyboard of " << s.name << ": " << m.tiles.size() << " tiles (frames";
+  const run::StoryboardSummary m = run::write_storyboard({s, path, o.spread, o.tile_width, o.columns, gl.backend, gl.gpu}, listener);
+  std::cout << "storyboard of " << s.name << ": " << m.tiles.size() << (m.tiles.size() == 1 ? " tile" : " tiles")
+            << " (frames";
   for (const compose::StoryTile& t : m.tiles) std::cout << " " << t.frame;
   std::cout << " of " << m.count << "), each " << m.tile_w << "x" << m.tile_h << ", sheet " << m.width << "x"
             << m.height << " written to " << path.string() << "\n";
-  return kOk;
+  return m.diverged ? kDiverged : kOk;  // as render: the frames before the divergence are there
 }
 
 }  // namespace
@@ -83,10 +83,9 @@ void add_storyboard_command(CLI::App& app, Action& action) {
                   "video's size and scaled down to it")
       ->check(CLI::Range(64, 3840));
   cmd->add_option("--columns", o->columns, "Tiles per row (default 4)")->check(CLI::Range(1, 16));
-  add_frame_override_options(cmd, o->frame);
+  add_frame_override_options(cmd, o->frame, false);
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
-  cmd->add_option("--gl", o->gl, "osmesa or egl (default: env TUMBLE_GL, else osmesa)");
-  cmd->add_option("--gpu", o->gpu, "EGL device N of eglQueryDevicesEXT (implies --gl egl)")->check(CLI::Range(0, 1023));
+  add_gl_options(cmd, o->gl, o->gpu);
 }
 
 }  // namespace tumble::app

@@ -69,11 +69,22 @@ struct FrameOverrides {
   std::string aa;
 };
 std::vector<scene::Override> frame_overrides(const FrameOverrides& o);
-void add_frame_override_options(CLI::App* cmd, FrameOverrides& o);
+/// `quality`: the command has --quality too (the help says --aa and --msaa override it).
+void add_frame_override_options(CLI::App* cmd, FrameOverrides& o, bool quality);
 
 /// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
 /// naming the option for an unknown name, so it fails before any work.
 render::GlBackend parse_backend_option(const std::string& gl);
+
+/// `--gl` and `--gpu` as render and storyboard take them: the backend (--gpu
+/// implies egl; with --gl osmesa an InputError) and the EGL device (--gpu,
+/// else env TUMBLE_EGL_DEVICE for egl, else automatic), checked before any work.
+struct GlChoice {
+  render::GlBackend backend;
+  std::optional<int> gpu;
+};
+GlChoice choose_gl(const std::string& gl, std::optional<int> gpu);
+void add_gl_options(CLI::App* cmd, std::string& gl, std::optional<int>& gpu);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);

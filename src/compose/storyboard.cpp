@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/error.hpp"
 #include "scene/events.hpp"
 #include "viz/palette.hpp"
 #include "viz/text_layout.hpp"
@@ -30,7 +31,12 @@ std::string speed_event(const scene::ClockSpan& span, bool after_title) {
 
 void add_flips(const scene::Scene& s, const scene::FrameClock& clock, std::vector<StoryMoment>& out) {
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
-    const std::vector<double> flips = scene::body_flip_times(s, b);
+    std::vector<double> flips;
+    try {
+      flips = scene::body_flip_times(s, b);
+    } catch (const Diverged&) {  // its run diverges too: the sheet shows what came before, without flips
+      continue;
+    }
     for (std::size_t i = 0; i < flips.size(); ++i)
       out.push_back({frame_from(clock.video_time(flips[i]), clock.fps()),
                      "flip " + std::to_string(i + 1) + (s.bodies.size() > 1 ? " of " + s.bodies[b].name : "")});

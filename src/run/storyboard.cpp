@@ -90,7 +90,8 @@ StoryboardSummary write_storyboard(const StoryboardRequest& r, Listener& l) {
   // A single run stops at its divergence: the sheet shows the frames before.
   const long last = (runs.size() == 1 ? static_cast<long>(runs[0].frames.size()) : m.count) - 1;
   if (last < 0) throw InputError(s.name + ": no frame to show: " + runs[0].diverged.value_or("the run stopped"));
-  if (last < m.count - 1) l.note(runs[0].diverged.value_or("the simulation stopped early") + "; the storyboard shows frames 0-" + std::to_string(last));
+  m.diverged = last < m.count - 1;
+  if (m.diverged) l.note(runs[0].diverged.value_or("the simulation stopped early") + "; the storyboard shows frames 0-" + std::to_string(last));
   const compose::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
   m.tiles = compose::story_tiles(compose::story_events(s, clock, last), r.spread, last);
   std::tie(m.tile_w, m.tile_h) = tile_size(out.width, out.height, r.tile_width);

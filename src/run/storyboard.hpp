@@ -30,6 +30,7 @@ struct StoryboardSummary {
   std::vector<compose::StoryTile> tiles;
   long count = 0;                 ///< frames of the video
   int tile_w = 0, tile_h = 0, width = 0, height = 0;
+  bool diverged = false;          ///< the simulation stopped early: the sheet shows the frames before
 };
 
 /// The tile size for a `frame_w` × `frame_h` video at `tile_width`: as wide,

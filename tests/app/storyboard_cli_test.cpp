@@ -156,6 +156,20 @@ TEST_F(StoryboardCli, BadOptionsAreRefusedNamingTheOptionAndWriteNothing) {
   EXPECT_NE(folder.err.find("found a folder"), std::string::npos) << folder.err;
 }
 
+// As render: a run that diverges shows the frames before, says so and exits 3.
+TEST_F(StoryboardCli, ADivergingRunShowsTheFramesBeforeAndExits3) {
+  TUMBLE_NEED_GL();
+  const std::string scene = "'" + (kSource / "tests/app/data/damped_blowup_euler.toml").string() + "'";
+  const Result r = run("storyboard " + scene + " -o '" + (dir_ / "d.png").string() + "' --progress none");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("diverged"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the storyboard shows frames 0-"), std::string::npos) << r.err;
+  ASSERT_TRUE(fs::exists(dir_ / "d.png"));
+  const std::vector<long> frames = listed_frames(r.out);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_LT(frames.back(), 30) << "a frame past the divergence";
+}
+
 // What the layout leaves out is a warning of `tumble render` (and a line of
 // `tumble info`): which element, which frames, why.
 TEST_F(StoryboardCli, RenderWarnsOfWhatTheLayoutLeavesOut) {

@@ -173,4 +173,23 @@ TEST(LayoutNotes, CheckLayoutSaysWhatEveryFrameLeavesOut) {
   EXPECT_NE(lines[0].find("(frames 0-10)"), std::string::npos) << lines[0];
 }
 
+// A body name with no place in its small view is a note of each frame it is left out of.
+TEST(LayoutNotes, ALabelLeftOutIsANoteOfItsFrames) {
+  const scene::Scene s = scene::load_scene_from_string(
+      "[simulation]\nmethod = \"exact\"\nduration = 1\nfps = 10\n"
+      "[[bodies]]\nname = \"a_body_name_far_wider_than_its_view\"\n"
+      "shape = { type = \"box\", size = [0.3, 0.1, 0.02], resolution = 4, mass = 1 }\n"
+      "omega_body = [0.05, 5.0, 0.05]\n"
+      "[output]\nwidth = 400\nheight = 300\n[draw]\nlabels = true\n"
+      "[[views]]\nkind = \"world\"\nviewport = [0, 0, 0.3, 0.5]\n"
+      "[[views]]\nkind = \"plot\"\nviewport = [0.3, 0, 0.7, 1]\n",
+      "label.toml");
+  const std::vector<std::string> lines = compose::check_layout(s).lines();
+  const auto it = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.find("view 0 (world): label 'a_body_name_far_wider_than_its_view' left out") != std::string::npos;
+  });
+  ASSERT_NE(it, lines.end()) << (lines.empty() ? "no notes" : lines[0]);
+  EXPECT_NE(it->find("(frames 0-10)"), std::string::npos) << *it;
+}
+
 }  // namespace
