@@ -1,9 +1,12 @@
 #include "compose/frame_builder.hpp"
 
+#include "compose/views/kinds.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "viz/captions.hpp"
 #include "viz/palette.hpp"
@@ -22,20 +25,8 @@ int grid_columns(std::size_t runs) {
   return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
 }
 
-// The widest speed badge the video shows ("" when it runs in real time throughout).
-std::string widest_speed(const scene::FrameClock& clock, int frame_h) {
-  std::string widest;
-  const float size = viz::text_px(viz::TextRole::caption, frame_h);
-  double last = 1;
-  for (long k = 0; k < clock.count(); ++k) {
-    const double rate = clock.rate(k);
-    if (rate == last || rate == 1) continue;
-    last = rate;
-    const std::string t = clock.in_hold(k) ? kPaused : scene::speed_text(rate);
-    if (viz::text_width(t, size) > viz::text_width(widest, size)) widest = t;
-  }
-  return widest;
-}
+// How long a flip's mark stays up after the flip, video s (through a hold there).
+constexpr double kFlipMarkSeconds = 3.0;
 
 void move_text(viz::TextItem& t, glm::vec2 d) {
   t.position_px += d;
@@ -61,9 +52,9 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     needs.columns = grid_columns(runs.size());
     for (std::size_t r = 0; r < runs.size(); ++r) {
       panels_.push_back(make_run_panel(context_, r));
-      titles_.push_back(runs.size() > 1 ? runs[r].label : "");
+      titles_.push_back(runs.size() > 1 ? runs[r].title : "");
     }
-    needs.legend = legend();
+    needs.frame_key = legend();
   } else {
     for (std::size_t i = 0; i < views.size(); ++i) {
       panels_.push_back(make_panel(context_, i));
@@ -81,11 +72,12 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     needs.views.push_back(std::move(v));
   }
   for (const scene::Caption& c : s.render.explain.captions) needs.captions.push_back(c.text);
+  mark_flips();
   // One caption strip; the scene reader makes every caption agree on where it goes.
   const auto& captions = s.render.explain.captions;
   if (!captions.empty() && captions.front().position == scene::CaptionPosition::top)
     needs.caption_side = FrameNeeds::CaptionSide::top;
-  needs.badge = widest_speed(world_.clock(), height);
+  needs.badge = widest_status();
   plan_ = plan_frame(needs);
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
@@ -93,20 +85,62 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   }
 }
 
-std::string FrameBuilder::legend() const {
+// The video times at which the marked body's flips are first shown.
+void FrameBuilder::mark_flips() {
+  if (!scene_.render.explain.flip_marks) return;
+  const scene::FrameClock& clock = world_.clock();
+  long k = 0;
+  for (double flip : scene::body_flip_times(scene_, *scene_.render.explain.flip_marks)) {
+    while (k < clock.count() && clock.time(k) < flip - 1e-9) ++k;
+    if (k < clock.count()) flip_video_.push_back(static_cast<double>(k) / clock.fps());
+  }
+}
+
+// The badge of frame k: a flip's mark ("flip 2") for a while after it, and the
+// speed while the video does not run in real time ("×1/8 slow motion", "paused").
+std::string FrameBuilder::status(long k) const {
+  const scene::FrameClock& clock = world_.clock();
+  const double tau = static_cast<double>(k) / clock.fps(), rate = clock.rate(k);
+  std::string out;
+  for (std::size_t i = 0; i < flip_video_.size(); ++i)
+    if (tau >= flip_video_[i] - 1e-9 && tau < flip_video_[i] + kFlipMarkSeconds) out = "flip " + std::to_string(i + 1);
+  const std::string speed = clock.in_hold(k) ? kPaused
+                            : rate == 1      ? ""
+                                             : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
+  if (!speed.empty()) out += (out.empty() ? "" : "  \u00b7  ") + speed;
+  return out;
+}
+
+// The widest badge the video shows ("" when it has none).
+std::string FrameBuilder::widest_status() const {
+  std::string widest;
+  const float size = viz::text_px(viz::TextRole::badge, height_);
+  for (long k = 0; k < world_.clock().count(); ++k) {
+    const std::string t = status(k);
+    if (viz::text_width(t, size) > viz::text_width(widest, size)) widest = t;
+  }
+  return widest;
+}
+
+// A classic scene's legend: one key for the frame, what its arrows and box mean.
+std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   const viz::DrawOptions& draw = world_.draw();
-  if (!scene_.render.draw.legend || !draw.axes) return "";
-  std::string legend = "principal axes:  red = smallest moment   green = intermediate   blue = largest";
-  if (draw.angular_momentum) legend += "   orange = L";
-  if (draw.omega) legend += "   purple = omega";
-  return legend;
+  if (!scene_.render.draw.legend) return {};
+  std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt);
+  if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
+    const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
+    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 1.0f)}, "box: extent along e\u2081 e\u2082 e\u2083"});
+  }
+  return key;
 }
 
 viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>& notes) const {
   const ViewPlan& p = plan_.views[i];
   viz::View v = panels_[i]->content(k);
   const viz::Box& c = p.content;
-  // Labels settle inside the content rectangle, clear of its other text; then move with it into the view.
+  // Arrows are named at their tips, then labels settle inside the content
+  // rectangle, clear of its other text; then move with it into the view.
+  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_));
   for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0))
     notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
                     "the view's other text, bodies, arrows and curves");
@@ -138,8 +172,6 @@ std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) con
 }
 
 void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
-  const scene::FrameClock& clock = world_.clock();
-  const double rate = clock.rate(k);
   const glm::vec2 shift{0, plan_.caption_shift};
   for (const auto& [i, a] : captions_at(k)) {
     for (viz::TextItem& t : viz::caption_items(scene_.render.explain.captions[i].text, a, width_, height_, plan_.badge_side)) {
@@ -147,10 +179,9 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
       dl.texts.push_back(std::move(t));
     }
   }
-  const auto badge = clock.in_hold(k) ? viz::speed_badge(kPaused, false, width_, height_, true)
-                                      : viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
-  if (badge) {
+  if (const auto badge = viz::speed_badge(status(k), false, width_, height_, true)) {
     viz::TextItem b = *badge;
+    b.position_px.y = plan_.badge_y;
     move_text(b, shift);
     dl.texts.push_back(std::move(b));
   }
@@ -158,11 +189,6 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
     const viz::Box& b = plan_.frame_key_box;
     viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * static_cast<float>(width_), b.y0 + 0.5f * plan_.frame_key_px,
                      plan_.frame_key_px, static_cast<float>(width_) - plan_.frame_key_px);
-  }
-  if (plan_.legend.y1 > plan_.legend.y0) {
-    const float pad = 0.5f * plan_.legend_px;
-    dl.texts.push_back({viz::wrap_text(legend(), plan_.legend_px, static_cast<float>(width_) - 2 * pad),
-                        {pad, plan_.legend.y0 + pad}, plan_.legend_px, kInk, "legend"});
   }
 }
 

@@ -38,7 +38,10 @@ class FrameBuilder {
   viz::View view_at(std::size_t i, long k, std::vector<std::string>& notes) const;
   void add_frame_text(viz::DrawList& dl, long k) const;
   bool title_card(viz::DrawList& dl, long k) const;
-  std::string legend() const;
+  std::vector<viz::KeyEntry> legend() const;
+  void mark_flips();
+  std::string status(long k) const;
+  std::string widest_status() const;
 
   const scene::Scene& scene_;
   const std::vector<scene::Run>& runs_;
@@ -48,6 +51,7 @@ class FrameBuilder {
   std::vector<std::unique_ptr<Panel>> panels_;
   std::vector<std::string> titles_;
   FramePlan plan_;
+  std::vector<double> flip_video_;  // video s at which each marked flip is first shown
 };
 
 }  // namespace tumble::compose

@@ -23,17 +23,20 @@ std::string px(float v) {
 std::string view_name(std::size_t i, const ViewNeeds& v) { return compose::view_name(i, v.kind, v.title); }
 
 // The caption strip: as tall as the longest caption wraps (viz::caption_items
-// places each inside it), the speed badge at its right.
+// places each inside it), with a row above the captions for the status badge
+// (speed, paused, a flip's mark) at its right, so the captions keep the
+// frame's whole width and the badge is read at a size a hall can see.
 void plan_captions(const FrameNeeds& n, FramePlan& p) {
   const float fh = static_cast<float>(n.height);
   float top = fh;
-  if (const auto badge = viz::speed_badge(n.badge, true, n.width, n.height)) {
-    p.badge_side = static_cast<float>(n.width) - badge->position_px.x;
-    top = std::min(top, badge->position_px.y - 0.3f * badge->size_px);
-  }
   for (const std::string& c : n.captions)
-    for (const viz::TextItem& t : viz::caption_items(c, 1.0f, n.width, n.height, p.badge_side))
+    for (const viz::TextItem& t : viz::caption_items(c, 1.0f, n.width, n.height))
       if (t.backdrop.a > 0) top = std::min(top, t.backdrop_px.y - 0.25f * viz::text_px(viz::TextRole::caption, n.height));
+  if (const auto badge = viz::speed_badge(n.badge, true, n.width, n.height, true)) {
+    p.badge_y = (top < fh ? top : badge->position_px.y + 1.3f * badge->size_px) - 1.25f * badge->size_px;
+    if (top >= fh) p.badge_y = badge->position_px.y;
+    top = p.badge_y - 0.15f * badge->size_px;
+  }
   if (top >= fh) return;
   const float h = fh - std::floor(top);
   if (n.caption_side == FrameNeeds::CaptionSide::top) {
@@ -44,24 +47,13 @@ void plan_captions(const FrameNeeds& n, FramePlan& p) {
   }
 }
 
-void plan_legend(const FrameNeeds& n, FramePlan& p) {
-  if (n.legend.empty()) return;
-  p.legend_px = viz::text_px(viz::TextRole::key, n.height);
-  const float pad = 0.5f * p.legend_px;
-  const int lines = viz::text_lines(viz::wrap_text(n.legend, p.legend_px, static_cast<float>(n.width) - 2 * pad));
-  const float h = std::ceil(static_cast<float>(lines) * p.legend_px + 2 * pad);
-  const float bottom = p.captions.y1 > p.captions.y0 && p.captions.y0 > 0 ? p.captions.y0 : static_cast<float>(n.height);
-  p.legend = {0, bottom - h, static_cast<float>(n.width), bottom};
-}
-
-// The views' area: the frame less the caption, legend and frame-key strips.
+// The views' area: the frame less the caption and frame-key strips.
 viz::Box views_area(const FrameNeeds& n, const FramePlan& p) {
   viz::Box a{0, 0, static_cast<float>(n.width), static_cast<float>(n.height)};
   if (p.captions.y1 > p.captions.y0) {
     if (p.captions.y0 <= 0) a.y0 = p.captions.y1;  // the strip at the top
     else a.y1 = p.captions.y0;
   }
-  if (p.legend.y1 > p.legend.y0) a.y1 = std::min(a.y1, p.legend.y0);
   if (p.frame_key_box.y1 > p.frame_key_box.y0) a.y1 = std::min(a.y1, p.frame_key_box.y0);
   return a;
 }
@@ -95,7 +87,30 @@ std::vector<std::vector<viz::KeyEntry>> split_keys(const FrameNeeds& n, FramePla
   return own;
 }
 
-// The frame key's strip: its rows across the frame, above the legend and captions.
+// A key beside a view that would leave its content under kFrameKeyShare of
+// the view's width (bigger text, narrower views) goes to the frame key
+// instead, in rows above the captions: the content keeps its width.
+constexpr float kFrameKeyShare = 0.62f;
+
+std::array<double, 4> declared_extent(const FrameNeeds& n);
+
+void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<viz::KeyEntry>>& keys) {
+  const float key_px = viz::text_px(viz::TextRole::key, n.height), pad = 0.5f * key_px;
+  if (key_px < viz::kMinKeyPx) return;
+  const std::array<double, 4> e = declared_extent(n);
+  const int cols = std::max(1, std::min(n.columns, static_cast<int>(n.views.size())));
+  for (std::size_t i = 0; i < n.views.size(); ++i) {
+    if (keys[i].empty()) continue;
+    const double share = n.views[i].viewport ? (*n.views[i].viewport)[2] / (e[2] - e[0]) : 1.0 / cols;
+    const float w = static_cast<float>(share * n.width);
+    if (w - viz::key_size(keys[i], key_px).x - 3 * pad >= kFrameKeyShare * w) continue;
+    for (const viz::KeyEntry& k : keys[i])
+      if (!has_entry(p.frame_key, k)) p.frame_key.push_back(k);
+    keys[i].clear();
+  }
+}
+
+// The frame key's strip: its rows across the frame, above the captions.
 void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
   if (p.frame_key.empty()) return;
   p.frame_key_px = viz::text_px(viz::TextRole::key, n.height);
@@ -109,7 +124,6 @@ void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
   const glm::vec2 size = viz::key_rows(p.frame_key, p.frame_key_px, static_cast<float>(n.width) - 2 * pad).size;
   float bottom = static_cast<float>(n.height);
   if (p.captions.y1 > p.captions.y0 && p.captions.y0 > 0) bottom = p.captions.y0;
-  if (p.legend.y1 > p.legend.y0) bottom = std::min(bottom, p.legend.y0);
   p.frame_key_box = {0, bottom - std::ceil(size.y + 2 * pad), static_cast<float>(n.width), bottom};
 }
 
@@ -201,8 +215,9 @@ std::string view_name(std::size_t i, const std::string& kind, const std::string&
 FramePlan plan_frame(const FrameNeeds& n) {
   FramePlan p;
   plan_captions(n, p);
-  plan_legend(n, p);
+  p.frame_key = n.frame_key;
   std::vector<std::vector<viz::KeyEntry>> keys = split_keys(n, p);
+  move_wide_keys(n, p, keys);
   plan_frame_key(n, p);
   const viz::Box area = views_area(n, p);
   const int count = static_cast<int>(n.views.size());

@@ -1,5 +1,5 @@
 // A frame laid out like a textbook figure, once per video (docs/architecture.md,
-// "Layout rectangles"): the caption strip and the legend strip are taken from
+// "Layout rectangles"): the caption strip and the frame key's strip are taken from
 // the frame first; each view gets its rectangle of what is left, a title strip
 // (title, then the overlay lines), a key strip beside its content and the
 // content rectangle, where alone its 3D items are drawn. What does not fit is
@@ -33,8 +33,10 @@ struct FrameNeeds {
   int columns = 1;                   ///< grid of the views without a viewport
   std::vector<ViewNeeds> views;
   std::vector<std::string> captions; ///< every caption's text
-  std::string badge;                 ///< the widest speed badge's text ("": none)
-  std::string legend;                ///< the classic legend line ("": none)
+  std::string badge;                 ///< the widest status badge's text (speed, a flip's mark; "": none)
+  /// Entries of a key for the whole frame, in rows above the captions (a
+  /// classic scene's legend), besides those views would repeat.
+  std::vector<viz::KeyEntry> frame_key;
   /// Where the caption strip goes. A hook for a declared caption position: top
   /// moves the strip (and the views below it), nothing else changes.
   enum class CaptionSide { bottom, top } caption_side = CaptionSide::bottom;
@@ -59,9 +61,8 @@ struct FramePlan {
   std::vector<ViewPlan> views;
   viz::Box captions;        ///< frame px (zero height: none)
   float caption_shift = 0;  ///< px the captions move from their bottom place (a caption strip at the top)
-  float badge_side = 0;     ///< px the captions keep free at each side for the speed badge
-  viz::Box legend;          ///< frame px (zero height: none)
-  float legend_px = 0;
+  float badge_side = 0;     ///< px the captions keep free at each side for the badge (0: it has its own row)
+  float badge_y = 0;        ///< the badge's top, frame px, in its row at the top of the caption strip
   /// One key for the whole frame, in rows across its own strip above the
   /// captions, when views would repeat each other's entries (zero height: none).
   std::vector<viz::KeyEntry> frame_key;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/dynamics.hpp"
+#include "core/format.hpp"
 #include "viz/captions.hpp"
 #include "viz/particle_set.hpp"
 #include "viz/surfaces.hpp"
@@ -80,25 +81,25 @@ std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run
   // Largest relative energy error over the bodies: the failure users look
   // for. Only where energy is conserved (gravity is in it, as potential):
   // a thruster, torque or damping does work, and its change is no error.
-  double rel = 0;
+  double rel = 0;  // signed: a method that gains energy shows '+'
   bool conserved = true;
   for (size_t i = 0; i < snaps.size(); ++i) {
     conserved = conserved && snaps[i].model->forces.conserves_energy();
     const double e0 = run.energy0[i];
-    const double e = total_energy(*snaps[i].model, snaps[i].state);
-    rel = std::max(rel, std::abs(e - e0) / std::max(std::abs(e0), 1e-300));
+    const double d = (total_energy(*snaps[i].model, snaps[i].state) - e0) / std::max(std::abs(e0), 1e-300);
+    if (std::abs(d) > std::abs(rel) || std::isnan(d)) rel = d;
   }
-  // In a comparison grid the label names the method; keep the line short
-  // and the font in proportion to the viewport.
-  // Below 1e-13 the digits are round-off: they would change with the
+  // For people: two digits, a power of ten written out, a percentage where it
+  // is large. Below 1e-13 the digits are round-off: they would change with the
   // compiler and break golden images for no physical reason.
-  char energy[40];
-  if (!conserved) std::snprintf(energy, sizeof energy, "(forces do work)");
-  else if (rel < 1e-13) std::snprintf(energy, sizeof energy, "|dE/E| < 1e-13");
-  else std::snprintf(energy, sizeof energy, "|dE/E| = %.1e", rel);
+  std::string energy;
+  if (!conserved) energy = "(forces do work)";
+  else if (std::abs(rel) < 1e-13) energy = "|\u0394E/E| < 10\u207b\u00b9\u00b3";
+  else if (std::abs(rel) >= 1e-2) energy = "\u0394E/E = " + format_for_people(100 * rel, 2, true) + " %";
+  else energy = "\u0394E/E = " + format_for_people(rel, 2, true);
+  // Digits are two spaces wide in the font: padded so that "t =" never moves.
   char time[40];
-  if (run_count > 1) std::snprintf(time, sizeof time, "t = %.2f s", t);
-  else std::snprintf(time, sizeof time, "t = %6.2f s", t);
+  std::snprintf(time, sizeof time, "t = %s%.2f s", t < 10 ? "  " : "", t);
   std::string line;
   auto part = [&](bool on, const std::string& text) {
     if (on) line += (line.empty() ? "" : "   ") + text;
@@ -112,9 +113,42 @@ std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run
 
 }  // namespace
 
+viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& L, int sign, double azimuth_deg,
+                          double elevation_deg, double distance, double fov_y_deg) {
+  const Eigen::Vector3d l = L.norm() > 0 ? Eigen::Vector3d(sign * L.normalized()) : Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d u = -Eigen::Vector3d::UnitY() + l.y() * l;  // the side nearest world −y
+  if (u.norm() < 1e-3) u = Eigen::Vector3d::UnitX() - l.x() * l;
+  u.normalize();
+  const Eigen::Vector3d v = l.cross(u);
+  const double az = azimuth_deg * M_PI / 180, el = elevation_deg * M_PI / 180;
+  const Eigen::Vector3d d = std::cos(el) * (std::cos(az) * u + std::sin(az) * v) + std::sin(el) * l;
+  viz::Camera c;
+  c.target = to_glm(target);
+  c.position = to_glm(target + distance * d);
+  c.up = to_glm(l);
+  c.fov_y_deg = fov_y_deg;
+  c.near_m = 0.02 * distance;
+  c.far_m = 50 * distance;
+  return c;
+}
+
 viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
   const scene::CameraConfig& c = s.render.camera;
   viz::Camera camera;
+  if (c.across != 0 && !s.bodies.empty()) {
+    // Across the followed (else the first) body's L, far enough to hold every body; the views fit it closer.
+    const scene::Body* b = s.find_body(c.follow);
+    if (!b) b = &s.bodies.front();
+    double reach = 0;
+    for (const scene::Run& r : runs)
+      for (const auto& states : r.frames)
+        for (std::size_t i = 0; i < states.size() && i < s.bodies.size(); ++i)
+          if (states[i].c.allFinite() && states[i].c.norm() < 1e6)
+            reach = std::max(reach, (states[i].c - c.target).norm() + 3 * viz::box_radius(s.bodies[i].model));
+    const double half = 0.5 * c.fov_y_deg * M_PI / 180 * std::min(1.0, aspect);
+    return across_camera(c.target, b->initial.L, c.across, c.azimuth_deg, c.elevation_deg,
+                         std::max(reach, 1e-3) / std::sin(half), c.fov_y_deg);
+  }
   if (c.automatic) {
     // Frame every body over the whole run (all runs: a failing method may drift).
     std::vector<glm::dvec3> centres;

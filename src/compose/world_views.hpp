@@ -22,6 +22,13 @@ namespace tumble::compose {
 /// (frames every body over all runs) or as configured.
 viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect);
 
+/// A camera looking across `L` at `target` (`sign` +1: L up in the picture,
+/// −1: down): from `azimuth_deg` around L (0: the side nearest world −y) and
+/// `elevation_deg` towards it, `distance` m away. L then lies in (or, with an
+/// elevation, near) the picture plane, as long as the picture is high.
+viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& L, int sign, double azimuth_deg,
+                          double elevation_deg, double distance, double fov_y_deg);
+
 class WorldViews {
  public:
   /// `font_px`: the overlay's and labels' text size. Keeps references to `s` and `runs`.

@@ -19,4 +19,9 @@ inline constexpr int kShortestDigits = -1;
 /// format_number(1.5e-5, 1, 'e') == "1.5e-05", format_number(v, kShortestDigits) == "0.1".
 std::string format_number(double v, int digits = kRoundTripDigits, char conversion = 'g');
 
+/// `v` for people, with `digits` significant digits: "4.7×10⁻¹³", "0.032",
+/// "12.5" (plain from 10⁻² to 10⁴; a power of ten with superscripts outside);
+/// `plus`: a '+' before a positive value, for a signed change. UTF-8.
+std::string format_for_people(double v, int digits = 2, bool plus = false);
+
 }  // namespace tumble

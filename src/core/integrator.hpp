@@ -56,6 +56,7 @@ struct StepCost {
 struct MethodInfo {
   Method method;
   std::string_view name;
+  std::string_view title;    ///< what a figure calls it ("explicit Euler", "RK4")
   /// One line for people (markdown: `code`, no '|' escaping): what the method
   /// is and what it integrates in. The README's method table is generated from
   /// it (`tumble methods --readme README.md`).

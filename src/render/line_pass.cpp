@@ -31,7 +31,7 @@ void LinePass::draw(const std::vector<LineVertex>& vertices, const glm::mat4& vi
   if (vertices.size() < 2) return;
   program_.use();
   program_.set("u_view_proj", view_proj);
-  gl_->LineWidth(std::clamp(width_px, 1.0f, max_width_));
+  gl_->LineWidth(std::clamp(width_px * scale_, 1.0f, max_width_));
   gl_->BindVertexArray(vao_.id());
   gl_->BindBuffer(GL_ARRAY_BUFFER, vbo_.id());
   gl_->BufferData(GL_ARRAY_BUFFER, vertices.size() * sizeof(LineVertex), vertices.data(),

@@ -215,6 +215,7 @@ void Renderer::Impl::gl_fxaa_pass() {
 void Renderer::Impl::draw(const viz::DrawList& frame) {
   context_.make_current();
   target_.bind_for_drawing();
+  lines_.set_frame_height(target_.height());
   gl_.Disable(GL_SCISSOR_TEST);
   // Without MSAA's samples, lines get smooth coverage (Mesa's anti-aliased
   // line stage); set every frame, another renderer may share the context.

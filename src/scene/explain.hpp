@@ -56,6 +56,9 @@ struct ViewCamera {
   std::optional<double> azimuth_deg, elevation_deg;  ///< degrees
   std::optional<double> distance;  ///< body_frame: body sizes; momentum_sphere: |L|; poinsot: largest semi-axes
   std::optional<bool> follow;      ///< momentum_sphere: follow Π (default: a fixed textbook view); body_frame: turn with the body
+  /// world and body_frame views: across = "L" (+1) or "-L" (−1) looks across
+  /// L at t = 0, L up (down) in the picture plane (scene.hpp, CameraConfig)
+  int across = 0;
   /// world views only: as [camera] (m, world; degrees)
   std::optional<std::array<double, 3>> position, target, up;
   std::optional<double> fov_y_deg;
@@ -90,6 +93,8 @@ struct ExplainConfig {
   std::vector<ViewConfig> views;   ///< empty: the classic single world view (or [compare] grid)
   bool labels = false;             ///< [draw] labels: body names next to the bodies
   bool key = true;                 ///< [draw] key: each view's key of colours and meanings
+  /// [draw] flips: the body whose flips are marked on screen ("flip 1", ...); none: no marks.
+  std::optional<std::size_t> flip_marks;
 };
 
 }  // namespace tumble::scene

@@ -86,12 +86,18 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
     r.error("camera", "a plot view has no camera");
     return;
   }
-  if (v.kind == ViewKind::world) {
+  const bool across = t->contains("across");
+  if (across && v.kind != ViewKind::world && v.kind != ViewKind::body_frame)
+    r.error("camera", "only a world or body_frame view looks across L");
+  if (v.kind == ViewKind::world && !across) {
     TableReader c(*t, r.key_path("camera"), ctx.diag, {"position", "target", "up", "fov_y"});
     read_world_camera(c, v);
     return;
   }
-  TableReader c(*t, r.key_path("camera"), ctx.diag, {"azimuth", "elevation", "distance", "follow"});
+  TableReader c(*t, r.key_path("camera"), ctx.diag,
+                v.kind == ViewKind::world ? std::vector<std::string_view>{"across", "azimuth", "elevation"}
+                                          : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow"});
+  if (across) v.camera.across = read_across(c);
   v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
   v.camera.elevation_deg = c.number("elevation", Range::closed(-89, 89));
   v.camera.distance = c.number("distance", Range::closed(1.5, 100));

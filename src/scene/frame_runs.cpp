@@ -42,6 +42,9 @@ Propagators start_run(const Scene& s, const SimulationConfig& sim, Run& run) {
     if (std::find(used.begin(), used.end(), plan.config.method) == used.end()) {
       used.push_back(plan.config.method);
       run.label += (run.label.empty() ? "" : "/") + std::string(method_name(plan.config.method));
+      const MethodInfo& info = method_info(plan.config.method);
+      run.title += (run.title.empty() ? "" : " / ") + std::string(info.title) +
+                   (info.order > 0 ? ", order " + std::to_string(info.order) : "");
     }
   }
   return props;

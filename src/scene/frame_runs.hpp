@@ -17,6 +17,7 @@ namespace tumble::scene {
 /// stored at every frame time t_k (k/fps, or the scene's FrameClock).
 struct Run {
   std::string label;                        ///< method name(s)
+  std::string title;                        ///< for a figure: "explicit Euler, order 1", "exact (closed form)"
   std::string step_label;                   ///< "dt = 0.001 s", "rtol = 1e-08", "closed form" (per body, joined)
   std::vector<std::vector<BodyState>> frames;  ///< [frame][body]
   std::vector<double> energy0;              ///< per body, J

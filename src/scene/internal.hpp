@@ -40,6 +40,9 @@ void read_bodies(TableReader& root, LoadContext& ctx, Scene& scene);
 /// Reads [output], [camera], [draw], [compare] into scene.render.
 void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene);
 
+/// `across` of a camera table: "L" → +1, "-L" → −1 (an error otherwise, 0).
+int read_across(TableReader& r);
+
 /// Reads [[views]], [[captions]], [title], [[slow_motion]] into scene.render.explain
 /// (after read_render_config and read_bodies: it checks body names and times).
 void read_explain_config(TableReader& root, LoadContext& ctx, Scene& scene);

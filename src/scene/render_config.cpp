@@ -6,6 +6,15 @@
 
 namespace tumble::scene::detail {
 
+int read_across(TableReader& r) {
+  const auto a = r.string("across");
+  if (!a) return 0;
+  if (*a == "L") return 1;
+  if (*a == "-L") return -1;
+  r.error("across", "expected \"L\" (L up in the picture) or \"-L\" (L down), found " + quote_token(*a));
+  return 0;
+}
+
 namespace {
 
 void read_output(TableReader& r, Scene& s) {
@@ -40,6 +49,15 @@ void read_output(TableReader& r, Scene& s) {
 
 void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
   CameraConfig& c = s.render.camera;
+  if (r.has("across")) {
+    c.across = read_across(r);
+    if (r.has("position")) r.error("across", "a camera across L finds its own position; remove 'position'");
+    if (r.has("auto")) r.error("across", "a camera across L is placed by L; remove 'auto'");
+    c.azimuth_deg = r.number("azimuth", Range::closed(-360, 360)).value_or(c.azimuth_deg);
+    c.elevation_deg = r.number("elevation", Range::closed(-80, 80)).value_or(c.elevation_deg);
+  } else if (r.has("azimuth") || r.has("elevation")) {
+    r.error(r.has("azimuth") ? "azimuth" : "elevation", "only a camera across L (across = \"L\") takes azimuth and elevation");
+  }
   const bool has_position = r.has("position");
   c.automatic = r.boolean("auto").value_or(!has_position);
   if (c.automatic && has_position && r.has("auto"))
@@ -68,7 +86,22 @@ void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
   }
 }
 
-void read_draw(TableReader& r, Scene& s) {
+// `flips`: true marks the first body's flips on screen, a body's name that body's.
+void read_flip_marks(TableReader& r, const LoadContext& ctx, Scene& s) {
+  const toml::node* n = r.node("flips");
+  if (!n) return;
+  if (const auto* b = n->as_boolean()) {
+    if (b->get()) s.render.explain.flip_marks = 0;
+    return;
+  }
+  const auto name = r.string("flips");
+  if (!name) return;  // the reader said what it expected
+  const auto at = std::find(ctx.body_names.begin(), ctx.body_names.end(), *name);
+  if (at == ctx.body_names.end()) return r.error("flips", "expected true, false or the name of a body, found " + quote_token(*name));
+  s.render.explain.flip_marks = static_cast<std::size_t>(at - ctx.body_names.begin());
+}
+
+void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   DrawConfig& d = s.render.draw;
   if (r.has("box")) d.box = r.boolean("box");
   d.surface = r.boolean("surface").value_or(d.surface);
@@ -95,6 +128,7 @@ void read_draw(TableReader& r, Scene& s) {
   s.render.explain.labels = r.boolean("labels").value_or(false);
   s.render.explain.key = r.boolean("key").value_or(true);
   d.legend = r.boolean("legend").value_or(d.legend);
+  read_flip_marks(r, ctx, s);
 }
 
 void read_compare(TableReader& r, Scene& s) {
@@ -132,13 +166,14 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
     read_output(r, scene);
   }
   if (auto t = root.subtable("camera")) {
-    TableReader r(*t, "camera", ctx.diag, {"position", "target", "up", "fov_y", "auto", "follow"});
+    TableReader r(*t, "camera", ctx.diag, {"position", "target", "up", "fov_y", "auto", "follow", "across", "azimuth", "elevation"});
     read_camera(r, ctx, scene);
   }
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
-                  {"box", "surface", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key"});
-    read_draw(r, scene);
+                  {"box", "surface", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key",
+                   "flips"});
+    read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {
     TableReader r(*t, "compare", ctx.diag, {"methods"});

@@ -78,6 +78,11 @@ struct CameraConfig {
   Eigen::Vector3d up{0, 0, 1};
   double fov_y_deg = 35;                 ///< vertical field of view, degrees
   std::string follow;                    ///< body name; empty = fixed camera
+  /// across = "L" (+1) or "-L" (−1): look across the first body's (or the
+  /// followed body's) angular momentum, L up (or down) in the picture plane,
+  /// from `azimuth` around L and `elevation` towards it (degrees); 0: not.
+  int across = 0;
+  double azimuth_deg = 25, elevation_deg = 12;
 };
 
 /// Lines of the overlay, each switchable (`[draw] overlay = ["time", ...]`).

@@ -100,7 +100,7 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is) {
   if (speed.empty()) return std::nullopt;
   const std::string text = as_is ? speed : speed + (slow ? " slow motion" : " fast");
-  const float size = std::max(12.0f, static_cast<float>(frame_h) / 36.0f);
+  const float size = text_px(TextRole::badge, frame_h);
   // Bottom-right; captions shown with it keep clear of it (caption_items' side_px).
   const float x = right_aligned_x(text, size, static_cast<float>(frame_w) - 0.8f * size);
   return TextItem{text, {x, static_cast<float>(frame_h) - 1.3f * size}, size, {0.70f, 0.12f, 0.10f, 1.0f}, "speed"};

@@ -46,9 +46,10 @@ inline constexpr Color kTitleCardBackground{0.12f, 0.15f, 0.21f, 1.0f};
 std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
                                   int frame_h);
 
-/// The speed badge in the frame's bottom-right corner, beside the caption, while the video does not
+/// The speed badge at the frame's bottom-right corner while the video does not
 /// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
-/// `as_is`: `speed` is the whole text ("paused"), without "slow motion" or "fast".
+/// `as_is`: `speed` is the whole text ("paused", "flip 1 · paused"), without
+/// "slow motion" or "fast". The frame layout moves it to its row above the captions.
 std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is = false);
 
 

@@ -44,6 +44,8 @@ struct ArrowItem {
   double radius;            ///< shaft radius, m (head scales with it)
   Color color;
   std::string name = {};    ///< in the layout report (empty: not reported)
+  std::string tip = {};     ///< its name drawn at its tip ("e₁", "L"; viz::label_arrow_tips), empty: none
+  int tip_rank = 0;         ///< lower ranks are named first and keep their place
 };
 
 /// A particle drawn as a small sphere/point sprite.

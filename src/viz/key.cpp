@@ -45,10 +45,12 @@ KeyEntry key_entry(Meaning m, std::string text) {
 
 std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pair<std::string, Color>>& bodies) {
   std::vector<KeyEntry> out;
-  if (d.axes)
-    out.push_back({Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"});
-  if (d.angular_momentum) out.push_back(key_entry(Meaning::L, "L, fixed in space"));
-  if (d.omega) out.push_back(key_entry(Meaning::omega, "\u03c9, angular velocity"));
+  // The arrows carry their names at their tips; the key says what the names mean, briefly.
+  const std::vector<Color> axes{kAxisColors[0], kAxisColors[1], kAxisColors[2]};
+  if (d.axes) out.push_back({Swatch::line, axes, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"});
+  if (d.axes && d.trail_seconds > 0) out.push_back({Swatch::line, axes, "trails of their tips"});
+  if (d.angular_momentum) out.push_back(key_entry(Meaning::L, "L: angular momentum"));
+  if (d.omega) out.push_back(key_entry(Meaning::omega, "\u03c9: angular velocity"));
   for (const auto& [name, color] : bodies) out.push_back({Swatch::block, {Color(glm::vec3(color), 1.0f)}, name});
   return out;
 }

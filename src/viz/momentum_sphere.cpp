@@ -75,18 +75,59 @@ bool draws_energy_ellipsoid(const MomentumSphereInput& in) {
 }
 
 std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
-  std::vector<KeyEntry> out{
-      {Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "\u00b1e\u2081 \u00b1e\u2082 \u00b1e\u2083: I\u2081 < I\u2082 < I\u2083"}};
-  if (in.momentum.norm() <= 0) return out;  // only the axes are drawn
-  out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L in body axes"));
-  out.push_back(key_entry(Meaning::polhode, "polhode (arrows: \u03a0's way)"));
+  // The axes are named at their ends: no entry for them.
+  std::vector<KeyEntry> out;
+  if (in.momentum.norm() <= 0) return out;
+  out.push_back(key_entry(Meaning::momentum_point, "\u03a0 = L in body axes"));
+  out.push_back(key_entry(Meaning::polhode, "polhode: \u03a0's path"));
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
-  out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});
   out.push_back(key_entry(Meaning::other_levels, "other energies"));
   return out;
 }
+
+std::vector<Eigen::Vector3d> own_polhode(const Eigen::Vector3d& I, const Eigen::Vector3d& pi, int n) {
+  const double L = pi.norm();
+  if (L <= 0) return {};
+  const double two_E = pi.cwiseAbs2().cwiseQuotient(I).sum(), sep = L * L / I[1];
+  auto curves = polhodes(I, L, two_E, n);
+  if (curves.empty() || std::abs(two_E - sep) <= 1e-12 * sep) return {};  // on the separatrix: it is drawn already
+  // Two branches, one about +e_a and one about −e_a (a: the pole it circles): Π stays on its own.
+  const int a = two_E > sep ? 0 : 2;
+  for (auto& c : curves)
+    if (!c.empty() && (c.front()[a] >= 0) == (pi[a] >= 0)) return std::move(c);
+  return std::move(curves.front());
+}
+
+namespace {
+
+// `curve` as dashes `on` long with gaps `off` (lengths along it, same units).
+std::vector<std::vector<glm::dvec3>> dashed(const std::vector<glm::dvec3>& curve, double on, double off) {
+  std::vector<std::vector<glm::dvec3>> out;
+  double s = 0;
+  bool drawing = true;
+  std::vector<glm::dvec3> dash{curve.empty() ? glm::dvec3(0) : curve.front()};
+  for (std::size_t i = 1; i < curve.size(); ++i) {
+    glm::dvec3 a = curve[i - 1];
+    double left = glm::length(curve[i] - a);
+    while (left > 0) {
+      const double room = (drawing ? on : off) - s, step = std::min(room, left);
+      const glm::dvec3 b = a + (curve[i] - a) * (step / std::max(left, 1e-300));
+      if (drawing) dash.push_back(b);
+      s += step, left -= step, a = b;
+      if (s >= (drawing ? on : off) - 1e-12) {
+        if (drawing && dash.size() >= 2) out.push_back(std::move(dash));
+        dash = {a};
+        drawing = !drawing, s = 0;
+      }
+    }
+  }
+  if (drawing && dash.size() >= 2) out.push_back(std::move(dash));
+  return out;
+}
+
+}  // namespace
 
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const Eigen::Vector3d& I = in.inertia;
@@ -96,15 +137,15 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
-  add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
-  if (L <= 0) return;
+  if (L <= 0) {
+    add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
+    return;
+  }
   if (draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
-  auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
-    for (const auto& curve : curves) {
-      PolylineItem p{{}, c, w, false, name};
-      for (const Eigen::Vector3d& x : curve) p.points.push_back(g(x / L));
-      view.polylines.push_back(std::move(p));
-    }
+  auto scaled = [&](const std::vector<Eigen::Vector3d>& curve) {
+    std::vector<glm::dvec3> out;
+    for (const Eigen::Vector3d& x : curve) out.push_back(g(x / L));
+    return out;
   };
   auto unit = [&](const std::vector<Eigen::Vector3d>& curve) {
     std::vector<Eigen::Vector3d> u;
@@ -117,25 +158,28 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   for (int j = 1; j < kLevels; ++j) {
     const double two_E = lo + (hi - lo) * j / kLevels;
     if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
-    const auto curves = polhodes(I, L, two_E, 96);
-    add(curves, color_of(Meaning::other_levels, 0.5f), 1.0f, "");
-    for (const auto& c : curves) add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
+    for (const auto& c : polhodes(I, L, two_E, 96)) {
+      view.polylines.push_back({scaled(c), color_of(Meaning::other_levels, 0.55f), 1.2f, false});
+      add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
+    }
   }
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
-  // The separatrix wide, the body's own polhode narrow on top of it: near it
-  // the two nearly coincide, and both stay visible (sky-blue edges, magenta core).
-  add(separatrix(I, L, 192), color_of(Meaning::separatrix, 0.95f), 4.5f, "separatrix");
-  const auto own = polhodes(I, L, in.two_E, 192);
-  add(own, color_of(Meaning::polhode), 2.0f, "polhode");
-  for (const auto& c : own) add_direction_arrows(view, unit(c), I, 4, color_of(Meaning::polhode), 0.13);
+  add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
+  // The body's own polhode, wide, then the separatrix dashed over it: where
+  // the two run together both stay visible (magenta edges, sky-blue dashes).
+  const auto own = own_polhode(I, in.momentum, 192);
+  if (!own.empty()) {
+    view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f, false, "polhode"});
+    add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
+  }
+  for (const auto& circle : separatrix(I, L, 192))
+    for (auto& dash : dashed(scaled(circle), 0.07, 0.045))
+      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f, false, "separatrix"});
   add_saddles(view);
-  view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
+  // Π now: a large dot standing out of the sphere, over every curve.
+  view.points.push_back({1.02 * g(in.momentum / L), 0.072, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
-  // Π's recent path, on the near side only (its fade runs oldest to newest).
-  PolylineItem path{{}, color_of(Meaning::momentum_point, 0.8f), 2.0f, true, "momentum_path"};
-  for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
-  if (path.points.size() >= 2) view.polylines.push_back(std::move(path));
 }
 
 }  // namespace tumble::viz

@@ -25,6 +25,11 @@ std::vector<std::vector<Eigen::Vector3d>> polhodes(const Eigen::Vector3d& inerti
 /// The separatrix: both great circles Π3 = ±k Π1, k² = (1/I1 - 1/I2)/(1/I2 - 1/I3), radius L.
 std::vector<std::vector<Eigen::Vector3d>> separatrix(const Eigen::Vector3d& inertia, double L, int n);
 
+/// The branch of the level through `pi` that Π follows (its polhode): of the
+/// two closed curves about ±e₁ (or ±e₃), the one on Π's side; empty on the
+/// separatrix itself. Principal frame, `n` points (first = last).
+std::vector<Eigen::Vector3d> own_polhode(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi, int n);
+
 /// What the momentum-sphere view draws for one body.
 struct MomentumSphereInput {
   Eigen::Vector3d inertia;                  ///< principal moments, ascending, kg·m²

@@ -1,10 +1,11 @@
 // One colour per meaning, in every view and in the plot (docs/colours.md
 // holds the same table for readers; tests/viz/palette_test checks they agree).
-// Principal axes follow the moments' order: e₁ (smallest moment) red, e₂
-// green, e₃ (largest) blue; nothing else uses those hues. The polhode
-// (magenta, a darker Okabe–Ito reddish purple) and the separatrix (Okabe–Ito
-// sky blue), drawn together on the momentum sphere, differ in hue, not only
-// in lightness (Okabe & Ito 2008); docs/colours.md gives their simulated
+// The principal axes follow the moments' order in Okabe & Ito's (2008)
+// colour-blind-safe hues: e₁ (smallest moment) vermillion, e₂ bluish green,
+// e₃ blue, which differ under every simulated deficiency as red and green did
+// not; drawn arrows also carry their names at their tips, so colour is never
+// the only key. L is black, the fixed vector of every figure, and Π, which is
+// L seen from the body, takes its colour. docs/colours.md gives the simulated
 // colour-blind differences (scripts/colour_blind_check.py).
 #pragma once
 
@@ -19,7 +20,7 @@ enum class Meaning {
   axis1, axis2, axis3,   ///< principal axes e₁, e₂, e₃ (I₁ < I₂ < I₃) and ω₁, ω₂, ω₃ in the plot
   L,                     ///< angular momentum (world), and the invariable plane's normal
   omega,                 ///< angular velocity ω
-  momentum_point,        ///< Π = Rᵀ L on the momentum sphere and its path
+  momentum_point,        ///< Π = Rᵀ L on the momentum sphere: L's colour
   polhode,               ///< this body's polhode (and its energy ellipsoid)
   herpolhode,            ///< ω's tip on the invariable plane
   separatrix,            ///< the level 2E = |L|²/I₂ through ±e₂
@@ -40,12 +41,12 @@ struct MeaningColor {
 
 /// The table, in Meaning order.
 inline const std::array<MeaningColor, static_cast<std::size_t>(Meaning::count)> kPalette = {{
-    {Meaning::axis1, "e1", "red", {0.86f, 0.15f, 0.15f, 1}},
-    {Meaning::axis2, "e2", "green", {0.12f, 0.62f, 0.20f, 1}},
-    {Meaning::axis3, "e3", "blue", {0.15f, 0.30f, 0.90f, 1}},
-    {Meaning::L, "L", "orange", {0.95f, 0.60f, 0.05f, 1}},
+    {Meaning::axis1, "e1", "vermillion", {0.84f, 0.37f, 0.0f, 1}},
+    {Meaning::axis2, "e2", "bluish green", {0.0f, 0.62f, 0.45f, 1}},
+    {Meaning::axis3, "e3", "blue", {0.10f, 0.35f, 0.85f, 1}},
+    {Meaning::L, "L", "black", {0.05f, 0.05f, 0.07f, 1}},
     {Meaning::omega, "omega", "purple", {0.60f, 0.20f, 0.75f, 1}},
-    {Meaning::momentum_point, "momentum_point", "near-black", {0.10f, 0.10f, 0.15f, 1}},
+    {Meaning::momentum_point, "momentum_point", "black", {0.05f, 0.05f, 0.07f, 1}},
     {Meaning::polhode, "polhode", "magenta", {0.75f, 0.20f, 0.55f, 1}},
     {Meaning::herpolhode, "herpolhode", "brown", {0.50f, 0.30f, 0.12f, 1}},
     {Meaning::separatrix, "separatrix", "sky blue", {0.34f, 0.71f, 0.91f, 1}},

@@ -39,13 +39,14 @@ PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vecto
 }
 
 std::vector<KeyEntry> poinsot_key() {
+  // The axes, L and ω as every view of bodies names them (one entry each in a frame's key).
   return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
-          key_entry(Meaning::ellipsoid, "inertia ellipsoid (body)"),
-          key_entry(Meaning::L, "L: \u22a5 the plane"),
-          key_entry(Meaning::omega, "\u03c9: to the contact"),
-          key_entry(Meaning::polhode, "polhode: \u03c9 on the body"),
-          key_entry(Meaning::herpolhode, "herpolhode: \u03c9 on the plane"),
-          key_entry(Meaning::plane, "invariable plane")};
+          key_entry(Meaning::L, "L: angular momentum"),
+          key_entry(Meaning::omega, "\u03c9: angular velocity"),
+          key_entry(Meaning::ellipsoid, "inertia ellipsoid, turns with the body"),
+          key_entry(Meaning::plane, "invariable plane, fixed"),
+          key_entry(Meaning::polhode, "polhode: \u03c9's tip on the ellipsoid"),
+          key_entry(Meaning::herpolhode, "herpolhode: \u03c9's tip on the plane")};
 }
 
 namespace {
@@ -94,8 +95,11 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
     }
     view.polylines.push_back(std::move(section));
   }
+  // The axes end on the ellipsoid's surface, where ω ends too.
+  static const char* const kNames[3] = {"e\u2081", "e\u2082", "e\u2083"};
   for (int i = 0; i < 3; ++i)
-    view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * f.scale * 1.15), 0.012, kAxisColors[i]});
+    view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * f.scale), 0.012, kAxisColors[i],
+                           std::string("e") + char('1' + i), kNames[i], 2});
 }
 
 // The invariable plane: opaque, centred on the foot of L, with a faint grid
@@ -103,6 +107,7 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
 void add_invariable_plane(View& view, const PoinsotFrame& f) {
   const double half = 1.6, lift = 0.5 * kHerpolhodeLift;
   view.surfaces.push_back(rectangle(g(f.foot), g(f.u * half), g(f.v * half), kPlaneColor));
+  view.surfaces.back().name = "plane";
   const Color grid = color_of(Meaning::plane, 0.45f);
   const Eigen::Vector3d on = f.foot - lift * f.p.normal;
   for (int i = -4; i <= 4; ++i) {
@@ -117,8 +122,8 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const PoinsotGeometry& p = f.p;
   // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
   const Eigen::Vector3d L_tip = f.foot - 3 * kHerpolhodeLift * p.normal;
-  view.arrows.push_back({{0, 0, 0}, g(L_tip), 0.015, kLColor, "L"});
-  view.arrows.push_back({{0, 0, 0}, g(p.contact * f.scale), 0.015, kOmegaColor, "omega"});
+  view.arrows.push_back({{0, 0, 0}, g(L_tip), 0.015, kLColor, "L", "L", 0});
+  view.arrows.push_back({{0, 0, 0}, g(p.contact * f.scale), 0.015, kOmegaColor, "omega", "\u03c9", 1});
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f, false, "polhode"};
   PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f, false, "herpolhode"};
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * f.scale * 1.006));

@@ -98,9 +98,11 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     const BodyState& s = b.state;
     const double size = std::max(largest_half_extent(m), 1e-3);
     if (opt.box.value_or(!has_surface(b, opt))) view.boxes.push_back(body_box(b, opt));
+    static const char* const kAxisNames[3] = {"e\u2081", "e\u2082", "e\u2083"};
     if (opt.axes)
       for (int i = 0; i < 3; ++i)
-        view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i]});
+        view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i],
+                               std::string("e") + char('1' + i), kAxisNames[i], 2});
     const Eigen::Quaterniond qc = cloud_orientation(m, s);
     const glm::dmat4 model = cloud_to_world(s.c - qc * m.com_cloud, qc);
     if (has_surface(b, opt))
@@ -115,13 +117,19 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
         view.points.push_back({to_glm(s.c + qc * (p.position - m.com_cloud)), particle_radius(m), pc});
     }
     // L and ω show direction only (their magnitudes have other units than
-    // length), at a fixed multiple of the body's size.
-    if (opt.angular_momentum && s.L.norm() > 0)
-      view.arrows.push_back({to_glm(s.c), to_glm(1.5 * size * s.L.normalized()), 0.025 * size, kLColor});
+    // length), at fixed multiples of the body's size, longer than the body so
+    // that neither hides in it: L as a line through the body (it is fixed in
+    // space: the line stays put while the body turns about it), ω past the axes.
+    if (opt.angular_momentum && s.L.norm() > 0) {
+      const glm::dvec3 l = to_glm(s.L.normalized());
+      view.arrows.push_back({to_glm(s.c) - kLBehind * size * l, (kLBehind + kLReach) * size * l, 0.025 * size, kLColor,
+                             "L", "L", 0});
+    }
     if (opt.omega) {
       const Eigen::Vector3d w = omega_world(m, s);
       if (w.norm() > 0)
-        view.arrows.push_back({to_glm(s.c), to_glm(1.3 * size * w.normalized()), 0.02 * size, kOmegaColor});
+        view.arrows.push_back({to_glm(s.c), to_glm(kOmegaReach * size * w.normalized()), 0.02 * size, kOmegaColor,
+                               "omega", "\u03c9", 1});
     }
   }
   if (trails && opt.trail_seconds > 0)

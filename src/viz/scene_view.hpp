@@ -32,6 +32,9 @@ inline const Color kOmegaColor = color_of(Meaning::omega);
 
 /// Axis arrows reach past the box face by this factor, so their heads stay visible.
 inline constexpr double kAxisOvershoot = 1.3;
+/// L's line runs from kLBehind to kLReach body sizes (largest half extents)
+/// either side of the centre, ω's arrow kOmegaReach: both past the axes.
+inline constexpr double kLBehind = 0.5, kLReach = 1.6, kOmegaReach = 1.35;
 
 /// World position of the tip of principal axis `i` (0..2) of a body: the axis
 /// runs from the centre of mass through the box face (at least 45% of the

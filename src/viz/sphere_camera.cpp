@@ -93,11 +93,13 @@ SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen
   // The pole the polhode circles: e1 above the separatrix level L²/I2, e3 below.
   const int pole = L > 0 && two_E > L * L / inertia[1] ? 0 : 2, other = 2 - pole;
   auto sign = [](double x) { return x < 0 ? -1.0 : 1.0; };
+  // 12°: the pole's loop is seen nearly from above, both separatrix circles
+  // open (they lean about 30° from e₃ for a T-handle, either way), ±e₂ on the
+  // rim left and right; the far end of the pole's axis is named at the rim.
+  constexpr double kTilt = 12 * kDeg;
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
-  d[pole] = 0.70 * sign(pi0[pole]);
-  d[1] = 0.45 * sign(pi0[1]);
-  d[other] = 0.55;
-  d.normalize();
+  d[pole] = std::cos(kTilt) * sign(pi0[pole]);
+  d[other] = std::sin(kTilt) * sign(pi0[other]);
   SphereCameraSettings s;
   s.follow = false;
   s.azimuth_deg = std::atan2(d.y(), d.x()) / kDeg;

@@ -36,13 +36,15 @@ struct SphereCameraSettings {
 };
 
 /// Half the momentum sphere view's height, |L|: its axes (1.5) and their labels fit.
-inline constexpr double kSphereReach = 1.85;
+inline constexpr double kSphereReach = 1.95;
 
 /// The momentum sphere's default camera, a fixed textbook view for a body
 /// whose Π starts at `pi0` (principal moments `inertia`, ascending): it looks
-/// at the hemisphere of the pole its polhode circles (within 46° of it), with
-/// the saddle Π starts near in front (63° off the view) and every axis at 45°
-/// to 135° from it, so all six ends ±e_i stand out past the sphere; from far
+/// from the side of the pole its polhode circles (e₁ or e₃, on Π's side),
+/// tilted 12° from it towards the other pole's axis, with ±e₂ across the
+/// picture on the rim: the whole polhode lies in front (a loop near the
+/// separatrix runs from saddle to saddle over the near hemisphere); the far
+/// end of the pole's axis, behind the ball, is named at the rim; from far
 /// away (distance 14), nearly without perspective.
 SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi0);
 

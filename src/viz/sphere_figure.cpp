@@ -112,14 +112,15 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       glm::dvec3 end(0);
       end[i] = sign * kAxisReach;
       glm::vec2 tip, base;
-      if (hidden_by_ball(view.camera.position, end, kSphereBall) || !project(end, tip) || !project(glm::dvec3(0), base))
-        continue;
+      if (!project(end, tip) || !project(glm::dvec3(0), base)) continue;
+      // An end behind the ball is named too, at the rim where its axis goes
+      // behind (its line shows through faintly, show_far_side).
       TextItem t{sign > 0 ? kPlus[i] : kMinus[i], {0, 0}, label_px, kAxisColors[i]};
       const InkSpan ink = text_ink(t.text, label_px);
       const glm::vec2 along = tip - base;
       const float len = glm::length(along);
       const glm::vec2 d0 = len > 0.25f * label_px ? along / len : glm::vec2(0, -1);
-      // An end in front of the ball: its label at the ball's rim, off the curves on it.
+      // An end in front of the ball (or behind it): its label at the ball's rim, off the curves on it.
       const glm::vec2 from = len < ball_px ? base + ball_px * d0 : tip;
       const float past = sign > 0 ? head_px : 1.0f;
       // Along the axis as drawn, else turned a little at a time until clear of the axes.
@@ -142,9 +143,10 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
 void add_saddles(View& view) {
   const Color ring = color_of(Meaning::separatrix);
   for (int sign : {1, -1}) {
-    // A dark dot in a sky-blue ring: where the two separatrix circles cross.
+    // A white dot in a sky-blue ring: where the two separatrix circles cross
+    // (Π, dark and larger, stands out on it when it passes).
     view.points.push_back({{0, sign * 1.0, 0}, 0.05, ring, sign > 0 ? "saddle_+e2" : "saddle_-e2"});
-    view.points.push_back({{0, sign * 1.02, 0}, 0.026, color_of(Meaning::ink), ""});
+    view.points.push_back({{0, sign * 1.02, 0}, 0.028, {1.0f, 1.0f, 1.0f, 1.0f}, ""});
   }
 }
 
@@ -161,7 +163,10 @@ void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve,
     while (j + 1 < along.size() && along[j + 1] < s) ++j;
     const Eigen::Vector3d p = curve[j];
     const Eigen::Vector3d v = p.cross(p.cwiseQuotient(inertia));  // dΠ/dt = Π × ω, up to |L|'s scale
-    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, g(p), 1.0)) continue;
+    // Only where the curve faces the eye: an arrow near the rim is a fragment.
+    const glm::dvec3 eye = glm::normalize(view.camera.position - view.camera.target);
+    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, g(p), 1.0) || glm::dot(eye, g(p.normalized())) < 0.35)
+      continue;
     const glm::dvec3 dir = g(v.normalized());
     view.arrows.push_back({g(p) - 0.5 * size * dir, size * dir, 0.12 * size, color, ""});
   }

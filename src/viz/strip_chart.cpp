@@ -14,6 +14,16 @@ namespace tumble::viz {
 
 namespace {
 
+// The key's names of the shaded bands: "■ ×1/8 slow motion", once per speed.
+std::vector<std::string> band_names(const StripChartInput& in) {
+  std::vector<std::string> out;
+  for (const StripChartInput::Band& b : in.shaded) {
+    const std::string n = "\u25a0 " + b.label + (b.label.find('/') != std::string::npos ? " slow motion" : " fast");
+    if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+  }
+  return out;
+}
+
 // The chart's head: the series' key (names in their colours) top-right, a
 // little below the view's top, or at its top when it fills the width; the
 // view's title is the layout's (compose::plan_frame), above the view.
@@ -30,6 +40,7 @@ Head head_layout(const StripChartInput& in, int width_px, float font_px) {
   const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h) : f;
   h.key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h) : f;
   for (const Series& s : in.series) h.key_w += text_width(s.name, h.key_px) + 1.2f * h.key_px;
+  for (const std::string& b : band_names(in)) h.key_w += text_width(b, h.key_px) + 1.2f * h.key_px;
   h.key_y = h.key_w + 2 * title_px < w ? 0.35f * title_px : 0.0f;
   // The plot starts below it, with room for the top value tick (half a tick above it).
   h.top_px = h.key_y + 1.3f * h.key_px + 0.7f * f;
@@ -59,6 +70,12 @@ glm::vec2 ChartMap::pixel(const glm::dvec3& p) const {
 
 namespace {
 
+// A time tick's step: 1, 2 or 5 times a power of ten, about six across.
+double time_step(double span) {
+  const double rough = std::max(span, 1e-9) / 6, decade = std::pow(10.0, std::floor(std::log10(rough)));
+  return rough >= 5 * decade ? 5 * decade : rough >= 2 * decade ? 2 * decade : decade;
+}
+
 // Slowed stretches: pale bands behind the curves (z < 0, the camera looks down -z), each labelled.
 void add_slow_bands(View& view, const StripChartInput& in, const ChartMap& m, float font_px) {
   for (const StripChartInput::Band& band : in.shaded) {
@@ -67,8 +84,7 @@ void add_slow_bands(View& view, const StripChartInput& in, const ChartMap& m, fl
     const glm::dvec3 p0 = m.at(t0, in.lo), p1 = m.at(t1, in.hi);
     view.surfaces.push_back(rectangle({0.5 * (p0.x + p1.x), 0.5 * (p0.y + p1.y), -0.5},
                                       {0.5 * (p1.x - p0.x), 0, 0}, {0, 0.5 * (p1.y - p0.y), 0}, kSlowBandColor));
-    const glm::vec2 at = m.pixel(m.at(t0, in.lo));
-    view.texts.push_back({band.label, {at.x + 0.2f * font_px, at.y + 0.3f * font_px}, font_px, {0.2f, 0.3f, 0.6f, 1.0f}});
+    (void)font_px;  // the bands are named in the chart's key, not under the axis (where a name reads as a tick)
   }
 }
 
@@ -80,11 +96,15 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
   };
   line({m.at(in.t0, in.lo), m.at(in.t1, in.lo), m.at(in.t1, in.hi), m.at(in.t0, in.hi), m.at(in.t0, in.lo)}, ink, 1.0f, "");
   if (in.lo < 0 && in.hi > 0) line({m.at(in.t0, 0), m.at(in.t1, 0)}, faint, 1.0f, "");
+  // Faint gridlines at the time ticks.
+  const double step = time_step(in.t1 - in.t0);
+  for (double t = std::ceil(in.t0 / step + 1e-9) * step; t < in.t1 - 1e-9; t += step)
+    line({m.at(t, in.lo), m.at(t, in.hi)}, {0.55f, 0.57f, 0.62f, 0.3f}, 1.0f, "");
   for (const Series& s : in.series) {
     std::vector<glm::dvec3> pts;
     for (std::size_t i = 0; i < in.times.size() && i < s.values.size(); ++i)
       if (std::isfinite(s.values[i])) pts.push_back(m.at(in.times[i], std::clamp(s.values[i], in.lo, in.hi)));
-    if (pts.size() >= 2) line(std::move(pts), s.color, 2.0f, "series");
+    if (pts.size() >= 2) line(std::move(pts), s.color, 3.0f, "series");
   }
   line({m.at(in.playhead, in.lo), m.at(in.playhead, in.hi)}, {0.2f, 0.2f, 0.25f, 0.8f}, 1.5f, "playhead");
 }
@@ -107,12 +127,27 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   const std::string t1 = format_number(in.t1, 3) + " s";
   text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
   text(t1, {right_aligned_x(t1, f, bottom_right.x), bottom_left.y + 0.3f * f}, ink);
+  // Whole steps between, where they clear the ends' labels.
+  const double step = time_step(in.t1 - in.t0);
+  const float left_end = bottom_left.x + text_width(format_number(in.t0, 3) + " s", f) + 0.5f * f;
+  const float right_end = right_aligned_x(t1, f, bottom_right.x) - 0.5f * f;
+  for (double t = std::ceil(in.t0 / step + 1e-9) * step; t < in.t1 - 1e-9; t += step) {
+    const std::string label = format_number(t, 3);
+    const float x = m.pixel(m.at(t, in.lo)).x, half = 0.5f * text_width(label, f);
+    if (x - half > left_end && x + half < right_end) text(label, {centred_x(label, f, x), bottom_left.y + 0.3f * f}, ink);
+  }
   float x = w - head.key_w;
   for (const Series& s : in.series) {
     TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};
     k.key = true;
     view.texts.push_back(std::move(k));
     x += text_width(s.name, head.key_px) + 1.2f * head.key_px;
+  }
+  for (const std::string& b : band_names(in)) {
+    TextItem k{b, {x, head.key_y}, head.key_px, {0.35f, 0.55f, 0.95f, 0.9f}, "key"};
+    k.key = true;
+    view.texts.push_back(std::move(k));
+    x += text_width(b, head.key_px) + 1.2f * head.key_px;
   }
 }
 

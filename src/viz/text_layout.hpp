@@ -15,7 +15,7 @@
 namespace tumble::viz {
 
 /// What a piece of text is for; one size per role in every view kind.
-enum class TextRole { title, subtitle, caption, view_title, key, label, tick };
+enum class TextRole { title, subtitle, caption, view_title, key, label, tick, badge };
 
 /// Height of `role`'s text, px, in a frame `frame_h` px high (fractions of it).
 float text_px(TextRole role, int frame_h);
@@ -71,6 +71,14 @@ bool is_label(const TextItem& t);
 /// (above, below, right, left, then the corners, stepping out); others move
 /// up or down by up to two lines, then sideways. Returns the labels left out.
 std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
+
+/// Names each arrow of `view` that has a `tip` text at its tip (text named
+/// "tip:<arrow name>", in the arrow's colour, `label_px` high): just past its
+/// head along the arrow as drawn, else turned a little at a time, clear of
+/// every arrow, named curve, opaque surface part, the view's text and the names
+/// placed before it (lower `tip_rank` first), inside the width × height view.
+/// Returns the names with no such place (left out).
+std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px);
 
 /// The box `points` cover as `camera` sees them in a width × height view,
 /// grown by `pad_px` and clipped to the view; nullopt when none of it shows.

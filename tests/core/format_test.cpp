@@ -39,3 +39,13 @@ TEST(FormatNumber, RejectsWhatPrintfCannotMean) {
 
 }  // namespace
 }  // namespace tumble
+
+TEST(FormatNumber, ForPeople) {
+  EXPECT_EQ(tumble::format_for_people(4.7e-13), "4.7\u00d710\u207b\u00b9\u00b3");
+  EXPECT_EQ(tumble::format_for_people(1.4e-4, 2, true), "+1.4\u00d710\u207b\u2074");
+  EXPECT_EQ(tumble::format_for_people(-0.78, 2, true), "\u22120.78");
+  EXPECT_EQ(tumble::format_for_people(0.032), "0.032");
+  EXPECT_EQ(tumble::format_for_people(12.5, 3), "12.5");
+  EXPECT_EQ(tumble::format_for_people(0), "0.0");
+  EXPECT_EQ(tumble::format_for_people(2.5e5), "2.5\u00d710\u2075");
+}

@@ -10,6 +10,7 @@
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
 #include "core/dynamics.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::compose {
 
@@ -36,6 +37,9 @@ viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, con
   cam.up = {0, 0, 1};
   cam.near_m = 0.05 * dist;
   cam.far_m = 20 * dist;
+  if (c.across != 0)  // across L at t = 0, L up: the camera then turns with the body
+    return across_camera(s0.c, s0.L, c.across, c.azimuth_deg.value_or(s.render.camera.azimuth_deg),
+                         c.elevation_deg.value_or(s.render.camera.elevation_deg), dist, cam.fov_y_deg);
   return cam;
 }
 
@@ -63,7 +67,10 @@ class BodyFramePanel : public Panel {
       const viz::View v = content(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
       shots.push_back({v.camera, solid_points(v)});
     }
-    camera_ = backed_off(camera_, backoff(shots, aspect, kMargin));
+    // Arrows carry their names past their tips: a name's height of room beyond them.
+    const double tip = 1.4 * viz::text_px(viz::TextRole::label, ctx_.frame_h);
+    const Margins m{std::max(kMargin, tip / (0.5 * std::max(size.x, 1.0f))), std::max(kMargin, tip / (0.5 * std::max(size.y, 1.0f)))};
+    camera_ = backed_off(camera_, backoff(shots, aspect, m, vc_.camera.distance ? 1.0 : 0.2));
   }
 
   viz::View content(long k) const override {

@@ -8,6 +8,7 @@
 #include "compose/camera_fit.hpp"
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::compose {
 
@@ -21,7 +22,8 @@ constexpr double kFillMargin = 0.1;  // room around what a camera moved closer f
 class WorldPanel : public Panel {
  public:
   WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewCamera* own = nullptr)
-      : ctx_(ctx), run_(run), keyed_(keyed), own_(own && own->position ? own : nullptr) {}
+      : ctx_(ctx), run_(run), keyed_(keyed), own_(own && own->position ? own : nullptr),
+        across_(own && own->across != 0 ? own : nullptr) {}
   std::string name() const override { return "world"; }
   std::vector<viz::KeyEntry> key() const override { return keyed_ ? bodies_key(ctx_, std::nullopt) : std::vector<viz::KeyEntry>{}; }
   std::vector<std::string> overlay(long k) const override { return ctx_.world.overlay(run_, k); }
@@ -31,6 +33,15 @@ class WorldPanel : public Panel {
     size_ = size;
     const double aspect = size.x / std::max(size.y, 1.0f);
     camera_ = own_ ? view_camera(*own_) : scene_camera(ctx_.scene, ctx_.runs, aspect);
+    if (across_) {
+      // The scene camera's target and distance, turned to look across the first body's L.
+      const scene::CameraConfig& sc = ctx_.scene.render.camera;
+      const double dist = glm::length(camera_.position - camera_.target) * 2;
+      camera_ = across_camera(Eigen::Vector3d(camera_.target.x, camera_.target.y, camera_.target.z),
+                              ctx_.scene.bodies.front().initial.L, across_->across,
+                              across_->azimuth_deg.value_or(sc.azimuth_deg), across_->elevation_deg.value_or(sc.elevation_deg),
+                              dist, camera_.fov_y_deg);
+    }
     // The cells of a [compare] grid share one camera, fitted to every run, so
     // the methods' bodies are drawn at one scale side by side.
     const bool grid = ctx_.scene.render.explain.views.empty() && ctx_.runs.size() > 1;
@@ -55,15 +66,19 @@ class WorldPanel : public Panel {
   double closest() const {
     if (own_) return 1.0;  // the view's own camera is where its author put it (backed off only if something leaves)
     const bool laid_out = !ctx_.scene.render.explain.views.empty() || ctx_.runs.size() > 1;
-    return laid_out || ctx_.scene.render.camera.automatic ? kClosest : 1.0;
+    return laid_out || ctx_.scene.render.camera.automatic || ctx_.scene.render.camera.across != 0 || across_ ? kClosest
+                                                                                                         : 1.0;
   }
   // Room at the edges: the margin, and above and below a name label's line
   // (labels sit beside their bodies: above or below, or at their sides).
   Margins margins(glm::vec2 size) const {
     const double m = closest() < 1 ? kFillMargin : kMargin;
-    if (!ctx_.scene.render.explain.labels) return m;
+    // Arrows carry their names past their tips: a name's height (and width) of room beyond them.
+    const double tip = 1.4 * viz::text_px(viz::TextRole::label, ctx_.frame_h);
+    Margins out{std::max(m, tip / (0.5 * std::max(size.x, 1.0f))), std::max(m, tip / (0.5 * std::max(size.y, 1.0f)))};
+    if (!ctx_.scene.render.explain.labels) return out;
     const double line = 1.2 * 1.1 * ctx_.world.font_px();
-    return {m, std::max(m, line / (0.5 * std::max(size.y, 1.0f)))};
+    return {out.x, std::max(out.y, line / (0.5 * std::max(size.y, 1.0f)))};
   }
 
   viz::View content(long k) const override {
@@ -77,6 +92,7 @@ class WorldPanel : public Panel {
   std::size_t run_;
   bool keyed_;
   const scene::ViewCamera* own_;  // the view's own camera (a world view's `camera` table), else the scene's
+  const scene::ViewCamera* across_;  // the view's camera across L
   glm::vec2 size_{1, 1};
 
   viz::Camera view_camera(const scene::ViewCamera& c) const {
@@ -95,7 +111,9 @@ class WorldPanel : public Panel {
 
 std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only) {
   std::vector<std::pair<std::string, viz::Color>> bodies;
-  for (std::size_t i = 0; i < ctx.scene.bodies.size(); ++i) {
+  // A body is named beside it (labels), or by the view's title: the key names bodies only when neither does.
+  const bool named = ctx.scene.render.explain.labels || only || ctx.scene.bodies.size() == 1;
+  for (std::size_t i = 0; i < ctx.scene.bodies.size() && !named; ++i) {
     if (only && i != *only) continue;
     const Eigen::Vector3f c = 0.75f * ctx.scene.bodies[i].color.cast<float>();
     bodies.emplace_back(ctx.scene.bodies[i].label.empty() ? ctx.scene.bodies[i].name : ctx.scene.bodies[i].label,

@@ -1,0 +1,125 @@
+// Arrows named at their tips ("e₁", "L", "ω"), as a textbook figure labels its
+// vectors, so that colour is never the only key. GL-free, from the view's
+// draw list: each name goes just past its arrow's head along the arrow as
+// drawn, turned a little at a time until it is clear of the other arrows, the
+// named curves, the bodies' parts, the view's text and the names placed before it.
+#include <algorithm>
+#include <cmath>
+
+#include "viz/captions.hpp"
+#include "viz/text_layout.hpp"
+
+namespace tumble::viz {
+
+namespace {
+
+struct Segment {
+  glm::vec2 a, b;
+  float r;  // half its drawn width, px, and a little room
+};
+
+bool segment_hits(const Segment& s, const Box& box) {
+  constexpr int kSteps = 24;
+  for (int i = 0; i <= kSteps; ++i) {
+    const glm::vec2 p = s.a + (s.b - s.a) * (static_cast<float>(i) / kSteps);
+    if (p.x + s.r > box.x0 && p.x - s.r < box.x1 && p.y + s.r > box.y0 && p.y - s.r < box.y1) return true;
+  }
+  return false;
+}
+
+// The screen length of a world length `r` at `p` (0 behind the camera).
+float screen_len(const ViewportProjection& project, const Camera& cam, const glm::dvec3& p, double r) {
+  glm::vec2 a, b;
+  if (!project(p, a) || !project(p + r * glm::normalize(view_up(cam)), b)) return 0.0f;
+  return glm::length(b - a);
+}
+
+// Each surface part's box on screen: the parts of a T-handle are its two bars.
+std::vector<Box> part_boxes(const View& view, const ViewportProjection& project) {
+  std::vector<Box> out;
+  for (const SurfaceItem& s : view.surfaces) {
+    // A body's parts (unnamed); a translucent veil or a figure's plane ("plane") takes no name off.
+    if (!s.mesh || s.color.a < 1.0f || !s.name.empty()) continue;
+    Box b{1e30f, 1e30f, -1e30f, -1e30f};
+    for (const glm::vec3& v : s.mesh->positions) {
+      glm::vec2 px;
+      if (!project(glm::dvec3(s.model * glm::dvec4(glm::dvec3(v), 1.0)), px)) continue;
+      b = {std::min(b.x0, px.x), std::min(b.y0, px.y), std::max(b.x1, px.x), std::max(b.y1, px.y)};
+    }
+    if (b.x0 < b.x1) out.push_back(b);
+  }
+  return out;
+}
+
+// What a tip's name is tried in turn: along the arrow, then turned either way.
+constexpr float kTurns[] = {0.0f, 0.5f, -0.5f, 1.0f, -1.0f, 1.5f, -1.5f, 2.0f, -2.0f, 2.6f, -2.6f};
+
+}  // namespace
+
+std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px) {
+  const ViewportProjection project(view.camera, width_px, height_px);
+  std::vector<Segment> shafts;
+  std::vector<glm::vec2> heads;  // tip centre, radius in z
+  std::vector<float> head_r;
+  for (const ArrowItem& a : view.arrows) {
+    glm::vec2 p0, p1;
+    if (!project(a.origin, p0) || !project(a.origin + a.vector, p1)) continue;
+    const float r = screen_len(project, view.camera, a.origin + a.vector, 2.4 * a.radius);
+    shafts.push_back({p0, p1, std::max(2.0f, screen_len(project, view.camera, a.origin, a.radius)) + 1.5f});
+    heads.push_back(p1);
+    head_r.push_back(r + 1.5f);
+  }
+  // The curves a viewer follows (named: a polhode, a herpolhode), as short segments.
+  for (const PolylineItem& l : view.polylines) {
+    if (l.name.empty()) continue;
+    glm::vec2 a, b;
+    for (std::size_t i = 1; i < l.points.size(); ++i)
+      if (project(l.points[i - 1], a) && project(l.points[i], b)) shafts.push_back({a, b, 2.0f});
+  }
+  std::vector<Box> taken = part_boxes(view, project);
+  for (const TextItem& t : view.texts) taken.push_back(text_box(t));
+  // L first, then ω, then the axes: the quantities the lesson is about keep their place.
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < view.arrows.size(); ++i)
+    if (!view.arrows[i].tip.empty()) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return view.arrows[a].tip_rank < view.arrows[b].tip_rank; });
+  std::vector<std::string> left_out;
+  for (std::size_t i : order) {
+    const ArrowItem& a = view.arrows[i];
+    glm::vec2 base, tip;
+    if (!project(a.origin, base) || !project(a.origin + a.vector, tip)) continue;
+    const float head = screen_len(project, view.camera, a.origin + a.vector, 2.4 * a.radius);
+    const InkSpan ink = text_ink(a.tip, label_px);
+    const glm::vec2 along = tip - base;
+    const float len = glm::length(along);
+    const glm::vec2 d0 = len > 0.3f * label_px ? along / len : glm::vec2(0, -1);
+    bool placed = false;
+    for (const float turn : kTurns) {
+      const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
+      const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.2f * label_px;
+      const glm::vec2 centre = tip + reach * d;
+      TextItem t{a.tip, {centred_x(a.tip, label_px, centre.x), centre.y - 0.5f * label_px}, label_px, a.color,
+                 "tip:" + (a.name.empty() ? a.tip : a.name)};
+      t.color.a = 1.0f;
+      const Box b = text_box(t);
+      if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
+      const auto on = [&](const Box& o) { return o.overlaps(b); };
+      if (std::any_of(taken.begin(), taken.end(), on)) continue;
+      if (std::any_of(shafts.begin(), shafts.end(), [&](const Segment& s) { return segment_hits(s, b); })) continue;
+      bool on_head = false;
+      for (std::size_t h = 0; h < heads.size() && !on_head; ++h)
+        on_head = heads[h].x + head_r[h] > b.x0 && heads[h].x - head_r[h] < b.x1 && heads[h].y + head_r[h] > b.y0 &&
+                  heads[h].y - head_r[h] < b.y1;
+      if (on_head) continue;
+      taken.push_back(b);
+      view.texts.push_back(std::move(t));
+      placed = true;
+      break;
+    }
+    if (!placed) left_out.push_back(a.tip);
+  }
+  return left_out;
+}
+
+}  // namespace tumble::viz
