@@ -102,13 +102,19 @@ void add_run(py::module_& m) {
 #ifdef TUMBLE_HAVE_GLTF
   m.def(
       "export_gltf",
-      [](const scene::Scene& s, const std::filesystem::path& path, std::optional<double> fps) {
+      [](const scene::Scene& s, const std::filesystem::path& path, std::optional<double> fps,
+         std::optional<double> key_tolerance) {
         if (fps && (!std::isfinite(*fps) || *fps <= 0)) throw InputError("fps: expected a finite number > 0");
+        gltf::KeyOptions keys;
+        keys.fps = fps.value_or(0);
+        keys.tolerance = key_tolerance.value_or(keys.tolerance);
         py::gil_scoped_release nogil;
-        gltf::export_gltf(s, path, fps.value_or(0), "path");
+        gltf::export_gltf(s, path, keys, "path", check_signals);
       },
-      py::arg("scene"), py::arg("path"), py::arg("fps") = py::none(),
-      "Writes the simulated scene as glTF 2.0 (.glb or .gltf), as `tumble export --gltf`.");
+      py::arg("scene"), py::arg("path"), py::arg("fps") = py::none(), py::kw_only(), py::arg("key_tolerance") = py::none(),
+      "Writes the simulated scene as glTF 2.0 (.glb or .gltf), as `tumble export --gltf`: y up, keys at fps "
+      "(default the scene's) at least and more where a body turns fast, so that a viewer's interpolation is within "
+      "key_tolerance (rad, default 0.001) of the simulation.");
 #endif
 }
 

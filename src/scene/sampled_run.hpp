@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/propagator.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::scene {
@@ -31,6 +32,29 @@ struct Trajectory {
   std::vector<double> energy;       ///< total energy, J
   std::size_t size() const { return t.size(); }
 };
+
+/// One body stepped from t = 0 with plan_method(sim, body) and sampled on
+/// request: the loop behind sample_run, for callers that pick the next sample
+/// time from the last state (the glTF export's keys).
+class BodyRun {
+ public:
+  BodyRun(const SimulationConfig& sim, const Body& body);
+  /// The state at t (s): a time at or before the last sample repeats it, as
+  /// Propagator::advance_to does. Throws Diverged.
+  const BodyState& at(double t) { return t <= p_.time() ? p_.state() : p_.advance_to(t); }
+  const RigidBodyModel& model() const { return body_->model; }
+  /// A Trajectory with no samples: the body, method, step and auto's reason.
+  Trajectory header() const;
+  long steps() const { return p_.steps(); }
+
+ private:
+  const Body* body_;
+  MethodPlan plan_;
+  Propagator p_;
+};
+
+/// Appends the sample (t, state) of a body of model `m` to `tr` (every column).
+void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const BodyState& s);
 
 /// Throws InputError unless `times` are finite, >= 0 and non-decreasing.
 void check_sample_times(std::span<const double> times);
