@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "compose/camera_fit.hpp"
 #include "compose/world_views.hpp"
 #include "core/error.hpp"
 #include "gltf/model_builder.hpp"
@@ -23,7 +24,58 @@ const Eigen::Vector3d kLightFromCamera = Eigen::Vector3d(-0.35, 0.55, 0.75).norm
 /// with as tumble does; Blender's importer reads it in its "Unitless" mode.
 constexpr double kLightLux = 3.0;
 
+/// How the world view fits the scene's camera (compose/views/world.cpp): an
+/// automatic camera moves up to 10× closer to fill the frame, 10 % clear at
+/// its edges; a camera the scene places only backs off, 4 % clear.
+constexpr double kAutoClosest = 0.1, kAutoMargin = 0.1, kFixedMargin = 0.04;
+constexpr int kFitSamples = 240;
+
 Eigen::Vector3d to_gltf(const Eigen::Vector3d& world) { return gltf_from_world() * world; }
+glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+/// A body's pose at time t as a viewer plays its keys (lerp, slerp), tumble's world.
+std::pair<Eigen::Vector3d, Eigen::Quaterniond> pose_at(const scene::Trajectory& tr, double t) {
+  std::size_t k = 0;
+  while (k + 2 < tr.size() && tr.t[k + 1] <= t) ++k;
+  if (tr.size() < 2) return {Eigen::Vector3d(tr.c[0], tr.c[1], tr.c[2]), Eigen::Quaterniond(tr.q[0], tr.q[1], tr.q[2], tr.q[3])};
+  const double u = std::clamp((t - tr.t[k]) / (tr.t[k + 1] - tr.t[k]), 0.0, 1.0);
+  const Eigen::Vector3d a(tr.c[3 * k], tr.c[3 * k + 1], tr.c[3 * k + 2]), b(tr.c[3 * k + 3], tr.c[3 * k + 4], tr.c[3 * k + 5]);
+  const Eigen::Quaterniond qa(tr.q[4 * k], tr.q[4 * k + 1], tr.q[4 * k + 2], tr.q[4 * k + 3]);
+  const Eigen::Quaterniond qb(tr.q[4 * k + 4], tr.q[4 * k + 5], tr.q[4 * k + 6], tr.q[4 * k + 7]);
+  return {(1 - u) * a + u * b, qa.slerp(u, qb)};
+}
+
+/// The scene's camera (compose::scene_camera) fitted as the world view fits
+/// it, to the bodies' principal boxes over the run, for a frame of `aspect`.
+viz::Camera fitted_camera(const scene::Scene& s, const std::vector<scene::Trajectory>& tracks, double aspect,
+                          std::size_t follow) {
+  std::vector<std::vector<glm::dvec3>> centres(tracks.size());
+  for (std::size_t i = 0; i < tracks.size(); ++i)
+    for (std::size_t k = 0; k < tracks[i].size(); ++k)
+      centres[i].emplace_back(tracks[i].c[3 * k], tracks[i].c[3 * k + 1], tracks[i].c[3 * k + 2]);
+  const viz::Camera cam = compose::scene_camera(s, centres, aspect);
+  std::vector<compose::Shot> shots;
+  for (int j = 0; j < kFitSamples && !tracks.empty(); ++j) {
+    const double t = s.simulation.duration * j / (kFitSamples - 1);
+    compose::Shot shot{cam, {}};
+    for (std::size_t i = 0; i < tracks.size(); ++i) {
+      const auto [c, q] = pose_at(tracks[i], t);
+      const RigidBodyModel& m = s.bodies[i].model;
+      for (int bits = 0; bits < 8; ++bits) {
+        const Eigen::Vector3d h = m.box.half_extents.cwiseProduct(Eigen::Vector3d(bits & 1 ? 1 : -1, bits & 2 ? 1 : -1, bits & 4 ? 1 : -1));
+        shot.points.push_back(to_glm(c + q * (m.cloud_from_principal * (m.box.center + h))));
+      }
+      if (i == follow) {  // the camera keeps its offset from the body it follows
+        shot.camera.position += to_glm(c) - cam.target;
+        shot.camera.target = to_glm(c);
+      }
+    }
+    shots.push_back(std::move(shot));
+  }
+  const bool automatic = s.render.camera.automatic;
+  return compose::backed_off(cam, compose::backoff(shots, aspect, automatic ? kAutoMargin : kFixedMargin,
+                                                   automatic ? kAutoClosest : 1.0));
+}
 
 /// The body's node tree; returns the node the keyframes move.
 int add_body(Builder& b, NodeNames& names, const scene::Body& body) {
@@ -103,16 +155,14 @@ Eigen::Quaterniond look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& ta
   return Eigen::Quaterniond(r).normalized();
 }
 
-/// The scene's camera as the renderer places it (compose::scene_camera, also
+/// The scene's camera as the renderer places it (fitted_camera, also
 /// following a body), and the renderer's light fixed to it.
 void add_camera(Builder& b, NodeNames& names, tinygltf::Animation& anim, const scene::Scene& s,
                 const std::vector<scene::Trajectory>& tracks, const std::vector<int>& times) {
   const double aspect = static_cast<double>(s.render.output.width) / s.render.output.height;
-  std::vector<std::vector<glm::dvec3>> centres(tracks.size());
-  for (std::size_t i = 0; i < tracks.size(); ++i)
-    for (std::size_t k = 0; k < tracks[i].size(); ++k)
-      centres[i].emplace_back(tracks[i].c[3 * k], tracks[i].c[3 * k + 1], tracks[i].c[3 * k + 2]);
-  const viz::Camera cam = compose::scene_camera(s, centres, aspect);
+  const scene::Body* follow = s.find_body(s.render.camera.follow);
+  const std::size_t f = follow ? static_cast<std::size_t>(follow - s.bodies.data()) : tracks.size();
+  const viz::Camera cam = fitted_camera(s, tracks, aspect, f);
   auto eig = [](const glm::dvec3& v) { return Eigen::Vector3d(v.x, v.y, v.z); };
   tinygltf::Camera c;
   c.type = "perspective";
@@ -127,8 +177,6 @@ void add_camera(Builder& b, NodeNames& names, tinygltf::Animation& anim, const s
   b.at(node).translation = vec(to_gltf(eig(cam.position)));
   b.at(node).rotation = rotation(look_at(to_gltf(eig(cam.position)), to_gltf(eig(cam.target)), to_gltf(eig(viz::view_up(cam)))));
   // A camera that follows a body keeps its offset from the body's centre of mass.
-  const scene::Body* follow = s.find_body(s.render.camera.follow);
-  const std::size_t f = follow ? static_cast<std::size_t>(follow - s.bodies.data()) : tracks.size();
   if (f < tracks.size() && times[f] >= 0) {
     std::vector<float> pos;
     const Eigen::Vector3d offset = eig(cam.position - cam.target);
