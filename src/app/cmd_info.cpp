@@ -79,9 +79,12 @@ std::string frames_text(const scene::Scene& s) {
   char line[200];
   for (const scene::ClockSpan& sp : scene::clock_spans(c)) {
     const double v0 = static_cast<double>(sp.first) / c.fps(), v1 = static_cast<double>(sp.last) / c.fps();
-    if (sp.rate == 0)
+    if (sp.rate == 0 && c.on_title_card(sp.first))
       std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  title card, t = 0 s\n", sp.first, sp.last,
                     v0, v1);
+    else if (sp.rate == 0)
+      std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  hold, t = %.4f s\n", sp.first, sp.last, v0,
+                    v1, c.time(sp.first));
     else
       std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  t = %.4f-%.4f s  %s\n", sp.first, sp.last,
                     v0, v1, c.time(sp.first), c.time(sp.last), (sp.rate == 1 ? "real time" : scene::speed_text(sp.rate)).c_str());

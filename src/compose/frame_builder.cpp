@@ -15,6 +15,7 @@ namespace {
 
 constexpr viz::Color kInk{0.12f, 0.13f, 0.16f, 1.0f};
 constexpr viz::Color kDiverged{0.75f, 0.1f, 0.1f, 1.0f};
+constexpr const char* kPaused = "paused";  // the badge while a [[holds]] stop lasts
 
 int grid_columns(std::size_t runs) {
   const int n = std::max<int>(1, static_cast<int>(runs));
@@ -30,7 +31,7 @@ std::string widest_speed(const scene::FrameClock& clock, int frame_h) {
     const double rate = clock.rate(k);
     if (rate == last || rate == 1) continue;
     last = rate;
-    const std::string t = scene::speed_text(rate);
+    const std::string t = clock.in_hold(k) ? kPaused : scene::speed_text(rate);
     if (viz::text_width(t, size) > viz::text_width(widest, size)) widest = t;
   }
   return widest;
@@ -75,11 +76,15 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     v.kind = panels_[i]->name();
     v.title = titles_[i];
     v.overlay_lines = panels_[i]->overlay_lines();
-    v.key = panels_[i]->key();
+    if (views.empty() || views[i].key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
     v.edge_to_edge = !views.empty() && views[i].kind == scene::ViewKind::plot;
     needs.views.push_back(std::move(v));
   }
   for (const scene::Caption& c : s.render.explain.captions) needs.captions.push_back(c.text);
+  // One caption strip; the scene reader makes every caption agree on where it goes.
+  const auto& captions = s.render.explain.captions;
+  if (!captions.empty() && captions.front().position == scene::CaptionPosition::top)
+    needs.caption_side = FrameNeeds::CaptionSide::top;
   needs.badge = widest_speed(world_.clock(), height);
   plan_ = plan_frame(needs);
   for (std::size_t i = 0; i < panels_.size(); ++i) {
@@ -125,7 +130,8 @@ std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) con
   std::vector<std::pair<std::size_t, float>> out;
   const auto& captions = scene_.render.explain.captions;
   for (std::size_t i = 0; i < captions.size(); ++i) {
-    const float a = viz::fade_alpha(tau, clock.video_time(captions[i].start), clock.video_time(captions[i].end));
+    // Up from the first frame showing `start` to the last showing `end` (through a hold there).
+    const float a = viz::fade_alpha(tau, clock.video_time(captions[i].start), clock.video_time_last(captions[i].end));
     if (a > 0) out.emplace_back(i, a);
   }
   return out;
@@ -141,9 +147,12 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
       dl.texts.push_back(std::move(t));
     }
   }
-  if (auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_)) {
-    move_text(*badge, shift);
-    dl.texts.push_back(std::move(*badge));
+  const auto badge = clock.in_hold(k) ? viz::speed_badge(kPaused, false, width_, height_, true)
+                                      : viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
+  if (badge) {
+    viz::TextItem b = *badge;
+    move_text(b, shift);
+    dl.texts.push_back(std::move(b));
   }
   if (!plan_.frame_key.empty()) {
     const viz::Box& b = plan_.frame_key_box;
@@ -174,7 +183,10 @@ viz::DrawList FrameBuilder::build(long k) const {
   dl.background = {static_cast<float>(bg.x()), static_cast<float>(bg.y()), static_cast<float>(bg.z()), 1.0f};
   if (title_card(dl, k)) return dl;  // the animation waits
   dl.notes = plan_.notes;
-  for (std::size_t i = 0; i < panels_.size(); ++i) dl.views.push_back(view_at(i, k, dl.notes));
+  const double t = world_.clock().time(k);
+  const auto& views = scene_.render.explain.views;
+  for (std::size_t i = 0; i < panels_.size(); ++i)
+    if (views.empty() || t >= views[i].appear) dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
   add_frame_text(dl, k);
   return dl;
 }

@@ -11,6 +11,7 @@
 #include "gltf/model_builder.hpp"
 #include "gltf/node_names.hpp"
 #include "io/atomic_file.hpp"
+#include "viz/body_look.hpp"
 #include "viz/scene_view.hpp"
 
 namespace tumble::gltf {
@@ -85,17 +86,22 @@ int add_body(Builder& b, NodeNames& names, const scene::Body& body) {
   const int shape = b.node(names.add(body.name, "_shape"), root);
   const int axes = b.node(names.add(body.name, "_principal_axes"), root);
   b.at(axes).rotation = rotation(m.cloud_from_principal);
+  // Its surfaces, as the renderer draws them: mesh files' and generated shapes' (a T-handle as a T).
   int mesh = -1;
+  auto add = [&](const Geometry& g, const Eigen::Vector3d& color, const std::string& what) {
+    if (!g.indices.empty()) mesh = b.primitive(mesh, b.at(root).name, g, b.material(color, b.at(root).name + what));
+  };
   for (std::size_t i = 0; i < body.meshes.size(); ++i) {
     Geometry g;
     append_mesh(g, body.meshes[i].surface);
-    if (g.indices.empty()) continue;
-    mesh = b.primitive(mesh, b.at(root).name, g, b.material(body.meshes[i].color, b.at(root).name + "_mesh" + std::to_string(i)));
+    add(g, body.meshes[i].color, "_mesh" + std::to_string(i));
   }
+  for (std::size_t i = 0; i < body.shapes.size(); ++i)
+    add(surface_geometry(*viz::solid_surface(body.shapes[i].shape)), body.shapes[i].color, "_solid" + std::to_string(i));
   if (mesh >= 0) {
     b.at(shape).mesh = mesh;
     b.at(shape).translation = vec(-m.com_cloud);
-  } else {  // the principal box, in the principal frame
+  } else {  // particles alone: the principal box, in the principal frame
     b.at(shape).rotation = rotation(m.cloud_from_principal);
     b.at(shape).mesh = b.primitive(-1, b.at(root).name + "_box",
                                    box_geometry(m.box.center - m.box.half_extents, m.box.center + m.box.half_extents),

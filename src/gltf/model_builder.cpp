@@ -37,6 +37,21 @@ void append_mesh(Geometry& g, const TriangleMesh& m) {
   for (const auto& t : m.triangles) add_triangle(g, {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]});
 }
 
+Geometry surface_geometry(const viz::SurfaceMesh& m) {
+  Geometry g;
+  for (std::size_t i = 0; i + 2 < m.positions.size(); i += 3) {
+    const glm::vec3 e = glm::cross(m.positions[i + 1] - m.positions[i], m.positions[i + 2] - m.positions[i]);
+    if (!(glm::length(e) > 0)) continue;  // no area, no normal
+    for (std::size_t j = i; j < i + 3; ++j) {
+      g.indices.push_back(static_cast<std::uint32_t>(g.positions.size() / 3));
+      const glm::vec3 n = glm::normalize(m.normals[j]);  // glTF requires unit normals
+      g.positions.insert(g.positions.end(), {m.positions[j].x, m.positions[j].y, m.positions[j].z});
+      g.normals.insert(g.normals.end(), {n.x, n.y, n.z});
+    }
+  }
+  return g;
+}
+
 std::vector<double> rotation(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
 std::vector<double> vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 

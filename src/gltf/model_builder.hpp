@@ -12,6 +12,7 @@
 #include <tiny_gltf.h>
 
 #include "core/triangle_mesh.hpp"
+#include "viz/draw_list.hpp"
 
 namespace tumble::gltf {
 
@@ -27,6 +28,8 @@ void add_triangle(Geometry& g, const std::array<Eigen::Vector3d, 3>& p);
 /// The box [lo, hi] (m), outward counter-clockwise faces.
 Geometry box_geometry(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
 void append_mesh(Geometry& g, const TriangleMesh& m);
+/// A surface as the renderer draws it (corners in threes, each with its normal).
+Geometry surface_geometry(const viz::SurfaceMesh& m);
 
 /// glTF's (x, y, z, w) and (x, y, z) of Eigen's values.
 std::vector<double> rotation(const Eigen::Quaterniond& q);

@@ -33,7 +33,9 @@ class ViewportProjection {
 /// A caption centred near the bottom of a frame_w × frame_h frame, on a
 /// backdrop: one item per line ('\n' breaks and wrapping at 90 % of the width,
 /// or narrower to keep `side_px` free at each side, e.g. for the speed badge).
-std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px = 0);
+/// `top`: at the frame's top instead of its bottom.
+std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px = 0,
+                                    bool top = false);
 /// Its first line (with the backdrop of them all).
 TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h);
 
@@ -46,7 +48,8 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 
 /// The speed badge in the frame's bottom-right corner, beside the caption, while the video does not
 /// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
-std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h);
+/// `as_is`: `speed` is the whole text ("paused"), without "slow motion" or "fast".
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is = false);
 
 
 }  // namespace tumble::viz

@@ -42,10 +42,13 @@ struct MomentumSphereInput {
 
 /// The energy ellipsoid is drawn only if its largest semi-axis is within this many |L|.
 inline constexpr double kEnergyEllipsoidReach = 1.3;
+/// Its opacity: a veil over the sphere, in its own colour.
+inline constexpr float kEnergyEllipsoidAlpha = 0.28f;
 
 /// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the
-/// sphere has radius 1), principal frame: it meets the sphere on the polhode.
-/// Translucent, in the polhode's colour.
+/// sphere has radius 1), principal frame: only its parts outside the sphere
+/// (what the opaque ball does not hide), whose edges are the polhodes, where
+/// it meets the sphere. Translucent, in its own colour (Meaning::energy_ellipsoid).
 SurfaceItem energy_ellipsoid(const Eigen::Vector3d& inertia, double L, double two_E);
 
 /// Whether the view of `in` draws the energy ellipsoid: asked for, and its

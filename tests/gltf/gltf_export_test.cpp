@@ -190,3 +190,24 @@ TEST(GltfExport, SceneCameraAndLight) {
   EXPECT_EQ(node.children, std::vector<int>{light});
   EXPECT_EQ(m.nodes.at(static_cast<std::size_t>(light)).extensions.at("KHR_lights_punctual").Get("light").Get<int>(), 0);
 }
+
+TEST(GltfExport, GeneratedShapesAreTheirSurfaces) {
+  // dzhanibekov's T-handle: handle 0.8 m along x, stem 0.4 m along y, 0.1 m bars.
+  const scene::Scene s = scene::load_scene(kScenes / "dzhanibekov.toml");
+  const fs::path out = fs::path(::testing::TempDir()) / "t.gltf";
+  gltf::export_gltf(s, out);
+  const tinygltf::Model m = load(out);
+  const tinygltf::Node& shape = m.nodes.at(static_cast<std::size_t>(node_named(m, "t_handle_shape")));
+  const tinygltf::Primitive& p = m.meshes.at(static_cast<std::size_t>(shape.mesh)).primitives.at(0);
+  const std::vector<float> v = floats(m, p.attributes.at("POSITION"));
+  // Volume enclosed (divergence theorem over the corner triples) and extent: a T, not its bounding box.
+  double volume = 0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e9), hi = -lo;
+  for (std::size_t i = 0; i + 8 < v.size(); i += 9) {
+    const Eigen::Vector3d a(v[i], v[i + 1], v[i + 2]), b(v[i + 3], v[i + 4], v[i + 5]), c(v[i + 6], v[i + 7], v[i + 8]);
+    volume += a.dot(b.cross(c)) / 6;
+    for (const Eigen::Vector3d* x : {&a, &b, &c}) lo = lo.cwiseMin(*x), hi = hi.cwiseMax(*x);
+  }
+  EXPECT_NEAR(volume, 0.8 * 0.1 * 0.1 + 0.4 * 0.1 * 0.1, 1e-6);
+  EXPECT_LE(((hi - lo) - Eigen::Vector3d(0.8, 0.5, 0.1)).norm(), 1e-6);
+}

@@ -1,7 +1,9 @@
 // Issue 22: text sizes in proportion to the frame, wrapping, keys that do not
 // overlap themselves, the colour table as documented, and the momentum-sphere
 // camera that keeps Π on the near side, turns smoothly and depends only on the past.
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -118,7 +120,8 @@ struct Flip {
 
 TEST(SphereCamera, FollowedPiStaysOnTheNearSideAndTheCameraTurnsSmoothly) {
   const Flip f;
-  const SphereCameraSettings s;
+  SphereCameraSettings s;
+  s.max_turn_deg = 180;  // unbounded: it follows Π round to the other side
   const std::vector<SpherePose> track = follow_track(f.t, f.pi, s);
   ASSERT_EQ(track.size(), f.pi.size());
   double flipped = 1;
@@ -144,6 +147,19 @@ TEST(SphereCamera, FollowedPiStaysOnTheNearSideAndTheCameraTurnsSmoothly) {
     hidden += hidden_by_ball(sphere_camera({}, fixed).position, {u.x(), u.y(), u.z()}, kSphereBall);
   }
   EXPECT_GT(hidden, 100);
+}
+
+// Bounded, the follow camera keeps its bearings: it turns at most 60° from
+// where it started, while Π goes round to the opposite pole (and shows through the ball).
+TEST(SphereCamera, FollowCameraTurnsAtMostItsBound) {
+  const Flip f;
+  const SphereCameraSettings s;
+  ASSERT_EQ(s.max_turn_deg, 60);
+  const std::vector<SpherePose> track = follow_track(f.t, f.pi, s);
+  double widest = 0;
+  for (const SpherePose& p : track) widest = std::max(widest, std::acos(std::min(1.0, p.dir.dot(track[0].dir))));
+  EXPECT_LE(widest, 60 * std::numbers::pi / 180 + 1e-9);
+  EXPECT_GT(widest, 55 * std::numbers::pi / 180);  // it did turn as far as it may
 }
 
 TEST(SphereCamera, PoseDependsOnlyOnThePast) {

@@ -20,7 +20,8 @@ constexpr double kFillMargin = 0.1;  // room around what a camera moved closer f
 
 class WorldPanel : public Panel {
  public:
-  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed) : ctx_(ctx), run_(run), keyed_(keyed) {}
+  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewCamera* own = nullptr)
+      : ctx_(ctx), run_(run), keyed_(keyed), own_(own && own->position ? own : nullptr) {}
   std::string name() const override { return "world"; }
   std::vector<viz::KeyEntry> key() const override { return keyed_ ? bodies_key(ctx_, std::nullopt) : std::vector<viz::KeyEntry>{}; }
   std::vector<std::string> overlay(long k) const override { return ctx_.world.overlay(run_, k); }
@@ -29,7 +30,7 @@ class WorldPanel : public Panel {
   void fit(glm::vec2 size) override {
     size_ = size;
     const double aspect = size.x / std::max(size.y, 1.0f);
-    camera_ = scene_camera(ctx_.scene, ctx_.runs, aspect);
+    camera_ = own_ ? view_camera(*own_) : scene_camera(ctx_.scene, ctx_.runs, aspect);
     // The cells of a [compare] grid share one camera, fitted to every run, so
     // the methods' bodies are drawn at one scale side by side.
     const bool grid = ctx_.scene.render.explain.views.empty() && ctx_.runs.size() > 1;
@@ -52,6 +53,7 @@ class WorldPanel : public Panel {
   // content. A classic single view keeps the scene's camera, backed off only
   // where something would leave the frame.
   double closest() const {
+    if (own_) return 1.0;  // the view's own camera is where its author put it (backed off only if something leaves)
     const bool laid_out = !ctx_.scene.render.explain.views.empty() || ctx_.runs.size() > 1;
     return laid_out || ctx_.scene.render.camera.automatic ? kClosest : 1.0;
   }
@@ -74,7 +76,18 @@ class WorldPanel : public Panel {
   const PanelContext& ctx_;
   std::size_t run_;
   bool keyed_;
+  const scene::ViewCamera* own_;  // the view's own camera (a world view's `camera` table), else the scene's
   glm::vec2 size_{1, 1};
+
+  viz::Camera view_camera(const scene::ViewCamera& c) const {
+    auto g = [](const std::array<double, 3>& a) { return glm::dvec3(a[0], a[1], a[2]); };
+    viz::Camera cam;
+    cam.position = g(*c.position);
+    cam.target = g(c.target.value_or(std::array<double, 3>{}));
+    cam.up = g(c.up.value_or(std::array<double, 3>{0, 0, 1}));
+    cam.fov_y_deg = c.fov_y_deg.value_or(ctx_.scene.render.camera.fov_y_deg);
+    return cam;
+  }
   viz::Camera camera_;
 };
 
@@ -85,13 +98,14 @@ std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std
   for (std::size_t i = 0; i < ctx.scene.bodies.size(); ++i) {
     if (only && i != *only) continue;
     const Eigen::Vector3f c = 0.75f * ctx.scene.bodies[i].color.cast<float>();
-    bodies.emplace_back(ctx.scene.bodies[i].name, viz::Color(c.x(), c.y(), c.z(), 1.0f));
+    bodies.emplace_back(ctx.scene.bodies[i].label.empty() ? ctx.scene.bodies[i].name : ctx.scene.bodies[i].label,
+                        viz::Color(c.x(), c.y(), c.z(), 1.0f));  // the display name
   }
   return viz::bodies_key(ctx.world.draw(), bodies);
 }
 
-std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t) {
-  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key);
+std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index) {
+  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &ctx.scene.render.explain.views[index].camera);
 }
 
 std::unique_ptr<Panel> make_run_panel(const PanelContext& ctx, std::size_t r) {
