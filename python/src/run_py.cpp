@@ -7,7 +7,6 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
-#include "core/format.hpp"
 #include "core/integrator.hpp"
 #include "core/propagator.hpp"
 #include "scene/sampled_run.hpp"
@@ -28,26 +27,17 @@ py::array_t<double> column(py::object self) {
   return view((t.*member).data(), t.size(), cols, cols ? cols * sizeof(double) : sizeof(double), self);
 }
 
-/// The scene's [simulation] with simulate()'s method and dt, checked as the scene reader checks them.
+/// The scene's [simulation] with simulate()'s method and dt, read by the scene
+/// loader as `tumble simulate --method --dt` are (the same checks and texts).
 scene::SimulationConfig run_config(const scene::Scene& s, const std::optional<std::string>& method,
                                    std::optional<double> dt) {
-  scene::SimulationConfig sim = s.simulation;
-  if (method && *method == "auto") {
-    sim.automatic = true;
-  } else if (method) {
-    const std::optional<Method> m = parse_method(*method);
-    if (!m) throw InputError("method: expected auto or " + method_list() + ", found \"" + *method + "\"");
-    sim.automatic = false;
-    sim.step.method = *m;
-    sim.tolerance.reset();  // as `simulate --method NAME`: the named method wins
+  std::vector<scene::Override> o;
+  if (method) {
+    o.push_back(arg_override("simulate", "method", "simulation.method", *method));
+    if (*method != "auto") o.push_back(arg_override("simulate", "method", "simulation.tolerance", {}));  // the named method wins
   }
-  if (dt) {
-    if (!std::isfinite(*dt) || *dt <= 0) throw InputError("dt: expected a finite number > 0 (s)");
-    if (*dt > sim.duration) throw InputError("dt: expected at most the duration (" + std::to_string(sim.duration) + " s)");
-    sim.step.dt = *dt;
-  }
-  if (sim.duration / sim.step.dt > kMaxRunSteps) throw InputError("dt: the run would take more than " + format_number(kMaxRunSteps, 3) + " steps");
-  return sim;
+  if (dt) o.push_back(arg_override("simulate", "dt", "simulation.dt", *dt));
+  return scene::override_settings(s, o, "tumble.simulate()").simulation;
 }
 
 }  // namespace
@@ -88,7 +78,7 @@ void add_run(py::module_& m) {
         std::vector<Trajectory> out;
         {
           py::gil_scoped_release nogil;
-          out = scene::sample_run(s, sim, t, check_signals);
+          out = scene::sample_run(s, sim, t, check_signals, warn);
         }
         std::vector<std::shared_ptr<Trajectory>> list;
         for (Trajectory& x : out) list.push_back(std::make_shared<Trajectory>(std::move(x)));
@@ -97,16 +87,18 @@ void add_run(py::module_& m) {
       py::arg("scene"), py::arg("method") = py::none(), py::arg("dt") = py::none(), py::arg("times") = py::none(),
       "Integrates every body (method and dt default to the scene's) and samples it at `times` (s; default "
       "k/fps up to the duration, as `tumble simulate`). Returns one Trajectory per body, equal to the CSV's rows. "
-      "Releases the GIL; Ctrl-C raises KeyboardInterrupt.");
+      "method and dt are checked by the scene loader as `--method` and `--dt` are (tumble.SceneError); a dt too "
+      "coarse for a body warns (tumble.TumbleWarning) as the command line does. Releases the GIL; Ctrl-C raises "
+      "KeyboardInterrupt.");
 
 #ifdef TUMBLE_HAVE_GLTF
   m.def(
       "export_gltf",
       [](const scene::Scene& s, const std::filesystem::path& path, std::optional<double> fps,
          std::optional<double> key_tolerance) {
-        if (fps && (!std::isfinite(*fps) || *fps <= 0)) throw InputError("fps: expected a finite number > 0");
-        gltf::KeyOptions keys;
-        keys.fps = fps.value_or(0);
+        gltf::KeyOptions keys;  // fps is the scene's output.fps, checked by the loader as --fps is
+        if (fps) keys.fps = scene::override_settings(s, {arg_override("export_gltf", "fps", "output.fps", *fps)},
+                                                     "tumble.export_gltf()").output.fps;
         keys.tolerance = key_tolerance.value_or(keys.tolerance);
         py::gil_scoped_release nogil;
         gltf::export_gltf(s, path, keys, "path", check_signals);

@@ -50,12 +50,17 @@ void check_sample_times(std::span<const double> times) {
   }
 }
 
+std::optional<std::string> BodyRun::warning() const {
+  return coarse_step_warning(body_->model, body_->initial, plan_.config);
+}
+
 std::vector<Trajectory> sample_run(const Scene& s, const SimulationConfig& sim, std::span<const double> times,
-                                   const std::function<void()>& poll) {
+                                   const std::function<void()>& poll, const std::function<void(const std::string&)>& warn) {
   check_sample_times(times);
   std::vector<Trajectory> out;
   for (const Body& b : s.bodies) {
     BodyRun run(sim, b);
+    if (const auto w = run.warning(); w && warn) warn(*w);
     Trajectory tr = run.header();
     for (double t : times) {
       append_sample(tr, t, b.model, run.at(t));

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,6 +47,8 @@ class BodyRun {
   /// A Trajectory with no samples: the body, method, step and auto's reason.
   Trajectory header() const;
   long steps() const { return p_.steps(); }
+  /// The command line's warning when dt is too coarse for the body's start (core::coarse_step_warning).
+  std::optional<std::string> warning() const;
 
  private:
   const Body* body_;
@@ -62,9 +65,11 @@ void check_sample_times(std::span<const double> times);
 /// Integrates every body of `s` with plan_method(sim, body) and samples it at
 /// `times` (s; a time at or before the last sample repeats it, as
 /// Propagator::advance_to does). `poll`, when set, is called after each sample
-/// of each body: it may throw to stop the run (Ctrl-C). Throws Diverged when a
+/// of each body: it may throw to stop the run (Ctrl-C); `warn`, when set, gets
+/// each body's BodyRun::warning before it is stepped. Throws Diverged when a
 /// body fails, InputError for bad times.
 std::vector<Trajectory> sample_run(const Scene& s, const SimulationConfig& sim, std::span<const double> times,
-                                   const std::function<void()>& poll = {});
+                                   const std::function<void()>& poll = {},
+                                   const std::function<void(const std::string&)>& warn = {});
 
 }  // namespace tumble::scene
