@@ -143,9 +143,17 @@ void add_simulation(py::module_& m) {
                                "[simulation] of a scene: method, dt (s), duration (s), fps, rtol, atol, tolerance. "
                                "Setting one is checked by the scene loader (tumble.SceneError, the file's words).");
   auto sim = [](const SimulationView& v) -> const scene::SimulationConfig& { return v.scene->simulation; };
-  key_property<SimulationView, std::string>(c, "method", "simulation.method", [sim](const SimulationView& v) {
-    return sim(v).automatic ? std::string("auto") : std::string(method_name(sim(v).step.method));
-  }, "auto or a method name (tumble.methods())");
+  c.def_property(
+      "method",
+      [sim](const SimulationView& v) {
+        return sim(v).automatic ? std::string("auto") : std::string(method_name(sim(v).step.method));
+      },
+      [](const SimulationView& v, const std::string& name) {
+        std::vector<scene::Override> o{{"scene.simulation.method", "simulation.method", name}};
+        if (name != "auto") o.push_back({"scene.simulation.method", "simulation.tolerance", {}});  // as --method NAME
+        scene::override_settings(*v.scene, o, "scene.simulation.method").apply_to(*v.scene);
+      },
+      "auto or a method name (tumble.methods()); a named method drops auto's tolerance, as --method does");
   key_property<SimulationView, double>(c, "dt", "simulation.dt", [sim](const SimulationView& v) { return sim(v).step.dt; }, "s");
   key_property<SimulationView, double>(c, "duration", "simulation.duration", [sim](const SimulationView& v) { return sim(v).duration; }, "s");
   key_property<SimulationView, double>(c, "fps", "simulation.fps", [sim](const SimulationView& v) { return sim(v).fps; }, "samples per second");

@@ -233,6 +233,13 @@ Settings override_settings(const Scene& s, const std::vector<Override>& override
   for (const Override& o : overrides) options.emplace_back(o.key, o.option);
   detail::Diagnostics diag(std::string(source_name), std::move(options), false);
   toml::table root = settings_table(s);
+  // A tolerance makes auto pick dt: the scene's dt goes, as a file could not hold both.
+  auto sets = [&](std::string_view key) {
+    return std::any_of(overrides.begin(), overrides.end(), [&](const Override& o) {
+      return o.key == key && !std::holds_alternative<std::monostate>(o.value);
+    });
+  };
+  if (sets("simulation.tolerance") && !sets("simulation.dt")) root["simulation"].as_table()->erase("dt");
   apply_overrides(root, overrides);
   Scene read;  // no bodies: only what the two tables fill
   read.render.output = s.render.output;  // keeps what [output] does not hold (the quality)
