@@ -72,54 +72,8 @@ std::vector<scene::Override> mesh_keys(const std::string& path, const std::strin
 
 }  // namespace
 
-void add_mass(py::module_& m) {
-  py::class_<Properties>(m, "MassProperties",
-                         "Mass (kg), centre of mass (m), inertia tensor about it (kg·m²) and principal moments "
-                         "(ascending) and axes (columns, right-handed), in the input's axes; for a mesh also "
-                         "the exact polyhedral values (exact_com, exact_inertia) and the mesh check.")
-      .def_property_readonly("mass", [](const Properties& p) { return p.mp.mass; })
-      .def_property_readonly("com", [](const Properties& p) { return vec3(p.mp.com); })
-      .def_property_readonly("inertia", [](const Properties& p) { return mat3(p.mp.inertia); })
-      .def_property_readonly("principal_moments", [](const Properties& p) { return vec3(p.mp.principal_moments); })
-      .def_property_readonly("principal_axes", [](const Properties& p) { return mat3(p.mp.principal_axes); })
-      .def_property_readonly("particles", [](const Properties& p) { return p.particles; })
-      .def_property_readonly("has_exact", [](const Properties& p) { return p.mesh && p.mesh->has_exact; })
-      .def_property_readonly("exact_com", [](const Properties& p) -> py::object {
-        if (!p.mesh || !p.mesh->has_exact) return py::none();
-        return vec3(p.mesh->exact_com);
-      })
-      .def_property_readonly("exact_inertia", [](const Properties& p) -> py::object {
-        if (!p.mesh || !p.mesh->has_exact) return py::none();
-        return mat3(p.mesh->exact_inertia);
-      })
-      .def_property_readonly("inertia_error", [](const Properties& p) -> py::object {
-        if (!p.mesh || !p.mesh->has_exact) return py::none();
-        return py::float_(p.mesh->inertia_error());
-      })
-      .def_property_readonly("mesh", [](const Properties& p) -> py::object {
-        if (!p.mesh) return py::none();
-        const scene::MeshSource& s = *p.mesh;
-        py::dict d;
-        d["file"] = s.file;
-        d["fill"] = s.fill;
-        d["units"] = s.units;
-        d["triangles"] = s.report.triangles;
-        d["vertices"] = s.report.vertices;
-        d["watertight"] = s.report.watertight();
-        d["volume"] = s.report.signed_volume;
-        d["area"] = s.report.area;
-        d["flipped"] = s.flipped;
-        d["inside_test"] = s.inside_test;
-        d["spacing"] = s.spacing;
-        return py::object(std::move(d));
-      })
-      .def("__repr__", [](const Properties& p) {
-        std::ostringstream o;
-        o << "MassProperties(mass=" << p.mp.mass << " kg, principal_moments=[" << p.mp.principal_moments.transpose()
-          << "] kg·m², particles=" << p.particles << ")";
-        return o.str();
-      });
-
+/// tumble.mass_properties and tumble.mesh_properties.
+static void add_mass_functions(py::module_& m) {
   m.def(
       "mass_properties",
       [](const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
@@ -170,6 +124,57 @@ void add_mass(py::module_& m) {
       "name the argument): units 'm', 'cm', 'mm' or 'in'; mass= (kg) or density= (kg/m³, kg/m² for fill='surface'), "
       "not both (neither: 1 kg, as in a scene); fill 'volume', 'surface' or 'vertices'; resolution = lattice "
       "points along the longest edge, or inertia_tolerance = the coarsest lattice within it of the exact tensor. Returns the particle cloud's values and, where known, the exact tensor.");
+}
+
+void add_mass(py::module_& m) {
+  py::class_<Properties>(m, "MassProperties",
+                         "Mass (kg), centre of mass (m), inertia tensor about it (kg·m²) and principal moments "
+                         "(ascending) and axes (columns, right-handed), in the input's axes; for a mesh also "
+                         "the exact polyhedral values (exact_com, exact_inertia) and the mesh check.")
+      .def_property_readonly("mass", [](const Properties& p) { return p.mp.mass; })
+      .def_property_readonly("com", [](const Properties& p) { return vec3(p.mp.com); })
+      .def_property_readonly("inertia", [](const Properties& p) { return mat3(p.mp.inertia); })
+      .def_property_readonly("principal_moments", [](const Properties& p) { return vec3(p.mp.principal_moments); })
+      .def_property_readonly("principal_axes", [](const Properties& p) { return mat3(p.mp.principal_axes); })
+      .def_property_readonly("particles", [](const Properties& p) { return p.particles; })
+      .def_property_readonly("has_exact", [](const Properties& p) { return p.mesh && p.mesh->has_exact; })
+      .def_property_readonly("exact_com", [](const Properties& p) -> py::object {
+        if (!p.mesh || !p.mesh->has_exact) return py::none();
+        return vec3(p.mesh->exact_com);
+      })
+      .def_property_readonly("exact_inertia", [](const Properties& p) -> py::object {
+        if (!p.mesh || !p.mesh->has_exact) return py::none();
+        return mat3(p.mesh->exact_inertia);
+      })
+      .def_property_readonly("inertia_error", [](const Properties& p) -> py::object {
+        if (!p.mesh || !p.mesh->has_exact) return py::none();
+        return py::float_(p.mesh->inertia_error());
+      })
+      .def_property_readonly("mesh", [](const Properties& p) -> py::object {
+        if (!p.mesh) return py::none();
+        const scene::MeshSource& s = *p.mesh;
+        py::dict d;
+        d["file"] = s.file;
+        d["fill"] = s.fill;
+        d["units"] = s.units;
+        d["triangles"] = s.report.triangles;
+        d["vertices"] = s.report.vertices;
+        d["watertight"] = s.report.watertight();
+        d["volume"] = s.report.signed_volume;
+        d["area"] = s.report.area;
+        d["flipped"] = s.flipped;
+        d["inside_test"] = s.inside_test;
+        d["spacing"] = s.spacing;
+        return py::object(std::move(d));
+      })
+      .def("__repr__", [](const Properties& p) {
+        std::ostringstream o;
+        o << "MassProperties(mass=" << p.mp.mass << " kg, principal_moments=[" << p.mp.principal_moments.transpose()
+          << "] kg·m², particles=" << p.particles << ")";
+        return o.str();
+      });
+
+  add_mass_functions(m);
 }
 
 }  // namespace tumble::py_bind

@@ -158,32 +158,8 @@ class PyListener : public run::Listener {
 
 }  // namespace
 
-void add_render(py::module_& m) {
-  m.def(
-      "render_frame",
-      [](const scene::Scene& s, std::optional<double> t, std::optional<long> frame, std::optional<int> width,
-         std::optional<int> height, const std::optional<std::string>& aa, const std::string& gl) {
-        const long k = frame_index(s, t, frame);
-        const scene::FrameSettings f = frame_settings(s, "render_frame", width, height, aa);
-        const render::GlBackend b = backend(gl);
-        std::vector<io::Image> images;
-        {
-          py::gil_scoped_release nogil;
-          const std::unique_ptr<render::GlContext> ctx = render::create_gl_context(b);
-          const run::SceneFrames frames(s, k);
-          check_signals();
-          images = frames.render(*ctx, {k}, f);
-        }
-        return image_array(std::move(images.at(0)));
-      },
-      py::arg("scene"), py::arg("t") = py::none(), py::kw_only(), py::arg("frame") = py::none(),
-      py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("aa") = py::none(), py::arg("gl") = "",
-      "Renders frame index `frame`, or the frame nearest to simulated time t (s, any time in [0, duration]: the "
-      "frame whose shown time is closest, k = round(t·fps) in a plain scene), headless: an (H, W, 3) uint8 array, "
-      "the pixels of `tumble render`'s PNG of that frame. width, height default to the scene's; aa: 'fxaa', "
-      "'none', 'msaa' (the scene's samples), 'msaa2', 'msaa4'; gl: 'osmesa' or 'egl' (default: env TUMBLE_GL, "
-      "else osmesa). Sizes and aa are checked by the scene loader as --width, --height, --aa are.");
-
+/// tumble.resources and tumble.render.
+static void add_render_folder(py::module_& m) {
   m.def(
       "resources",
       [] {
@@ -226,6 +202,35 @@ void add_render(py::module_& m) {
       "(KeyboardInterrupt; the folder says incomplete): the same call with resume=True on the same scene, edits "
       "and all, goes on. The folder's scene hash covers the Python edits, so a resume with other edits, or "
       "`tumble render --resume` on the unedited file, is refused rather than mixing frames.");
+}
+
+void add_render(py::module_& m) {
+  m.def(
+      "render_frame",
+      [](const scene::Scene& s, std::optional<double> t, std::optional<long> frame, std::optional<int> width,
+         std::optional<int> height, const std::optional<std::string>& aa, const std::string& gl) {
+        const long k = frame_index(s, t, frame);
+        const scene::FrameSettings f = frame_settings(s, "render_frame", width, height, aa);
+        const render::GlBackend b = backend(gl);
+        std::vector<io::Image> images;
+        {
+          py::gil_scoped_release nogil;
+          const std::unique_ptr<render::GlContext> ctx = render::create_gl_context(b);
+          const run::SceneFrames frames(s, k);
+          check_signals();
+          images = frames.render(*ctx, {k}, f);
+        }
+        return image_array(std::move(images.at(0)));
+      },
+      py::arg("scene"), py::arg("t") = py::none(), py::kw_only(), py::arg("frame") = py::none(),
+      py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("aa") = py::none(), py::arg("gl") = "",
+      "Renders frame index `frame`, or the frame nearest to simulated time t (s, any time in [0, duration]: the "
+      "frame whose shown time is closest, k = round(t·fps) in a plain scene), headless: an (H, W, 3) uint8 array, "
+      "the pixels of `tumble render`'s PNG of that frame. width, height default to the scene's; aa: 'fxaa', "
+      "'none', 'msaa' (the scene's samples), 'msaa2', 'msaa4'; gl: 'osmesa' or 'egl' (default: env TUMBLE_GL, "
+      "else osmesa). Sizes and aa are checked by the scene loader as --width, --height, --aa are.");
+
+  add_render_folder(m);
 }
 #else
 void add_render(py::module_&) {}

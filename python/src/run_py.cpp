@@ -42,31 +42,8 @@ scene::SimulationConfig run_config(const scene::Scene& s, const std::optional<st
 
 }  // namespace
 
-void add_run(py::module_& m) {
-  py::class_<Trajectory, std::shared_ptr<Trajectory>>(
-      m, "Trajectory",
-      "One body's samples in the CSV's units and frames (read-only numpy views): t (n,) s; c (n, 3) m; q (n, 4) "
-      "world ← cloud (w, x, y, z); v (n, 3) m/s; omega_world, omega_body (n, 3) rad/s; L (n, 3) kg·m²/s; energy "
-      "(n,) J.")
-      .def_readonly("body", &Trajectory::body)
-      .def_readonly("method", &Trajectory::method)
-      .def_readonly("step", &Trajectory::step)
-      .def_readonly("steps", &Trajectory::steps)
-      .def_readonly("auto_reason", &Trajectory::auto_reason)
-      .def_property_readonly("t", column<&Trajectory::t, 0>)
-      .def_property_readonly("c", column<&Trajectory::c, 3>)
-      .def_property_readonly("q", column<&Trajectory::q, 4>)
-      .def_property_readonly("v", column<&Trajectory::v, 3>)
-      .def_property_readonly("omega_world", column<&Trajectory::omega_world, 3>)
-      .def_property_readonly("omega_body", column<&Trajectory::omega_body, 3>)
-      .def_property_readonly("L", column<&Trajectory::L, 3>)
-      .def_property_readonly("energy", column<&Trajectory::energy, 0>)
-      .def("__len__", &Trajectory::size)
-      .def("__repr__", [](const Trajectory& t) {
-        return "<tumble.Trajectory '" + t.body + "': " + std::to_string(t.size()) + " samples, " + t.method + ", " +
-               t.step + ">";
-      });
-
+/// tumble.simulate and tumble.export_gltf.
+static void add_run_functions(py::module_& m) {
   m.def(
       "simulate",
       [](const scene::Scene& s, const std::optional<std::string>& method, std::optional<double> dt,
@@ -108,6 +85,34 @@ void add_run(py::module_& m) {
       "(default the scene's) at least and more where a body turns fast, so that a viewer's interpolation is within "
       "key_tolerance (rad, default 0.001) of the simulation.");
 #endif
+}
+
+void add_run(py::module_& m) {
+  py::class_<Trajectory, std::shared_ptr<Trajectory>>(
+      m, "Trajectory",
+      "One body's samples in the CSV's units and frames (read-only numpy views): t (n,) s; c (n, 3) m; q (n, 4) "
+      "world ← cloud (w, x, y, z); v (n, 3) m/s; omega_world, omega_body (n, 3) rad/s; L (n, 3) kg·m²/s; energy "
+      "(n,) J.")
+      .def_readonly("body", &Trajectory::body)
+      .def_readonly("method", &Trajectory::method)
+      .def_readonly("step", &Trajectory::step)
+      .def_readonly("steps", &Trajectory::steps)
+      .def_readonly("auto_reason", &Trajectory::auto_reason)
+      .def_property_readonly("t", column<&Trajectory::t, 0>)
+      .def_property_readonly("c", column<&Trajectory::c, 3>)
+      .def_property_readonly("q", column<&Trajectory::q, 4>)
+      .def_property_readonly("v", column<&Trajectory::v, 3>)
+      .def_property_readonly("omega_world", column<&Trajectory::omega_world, 3>)
+      .def_property_readonly("omega_body", column<&Trajectory::omega_body, 3>)
+      .def_property_readonly("L", column<&Trajectory::L, 3>)
+      .def_property_readonly("energy", column<&Trajectory::energy, 0>)
+      .def("__len__", &Trajectory::size)
+      .def("__repr__", [](const Trajectory& t) {
+        return "<tumble.Trajectory '" + t.body + "': " + std::to_string(t.size()) + " samples, " + t.method + ", " +
+               t.step + ">";
+      });
+
+  add_run_functions(m);
 }
 
 }  // namespace tumble::py_bind

@@ -33,31 +33,8 @@ void ic_vec3(py::class_<Body>& c, const char* name, const char* doc) {
       doc);
 }
 
-void add_body(py::module_& m) {
-  py::class_<Body> c(m, "Body", "One body of a scene (a view into the Scene, which keeps it alive).");
-  c.def_readonly("name", &Body::name)
-      .def_property_readonly("mass", [](const Body& b) { return b.mass_properties.mass; }, "kg")
-      .def_property_readonly("com", [](const Body& b) { return vec3(b.mass_properties.com); }, "cloud axes, m")
-      .def_property_readonly("inertia", [](const Body& b) { return mat3(b.mass_properties.inertia); },
-                             "about the centre of mass, cloud axes, kg·m²")
-      .def_property_readonly("principal_moments", [](const Body& b) { return vec3(b.mass_properties.principal_moments); },
-                             "ascending, kg·m²")
-      .def_property_readonly("principal_axes", [](const Body& b) { return mat3(b.mass_properties.principal_axes); },
-                             "columns, cloud axes")
-      .def_property_readonly(
-          "points",
-          [](py::object self) {
-            const Body& b = self.cast<const Body&>();
-            return view(b.cloud.empty() ? nullptr : b.cloud[0].position.data(), b.cloud.size(), 3, sizeof(Particle), self);
-          },
-          "particle positions, cloud axes, m: (N, 3), a read-only view")
-      .def_property_readonly(
-          "masses",
-          [](py::object self) {
-            const Body& b = self.cast<const Body&>();
-            return view(b.cloud.empty() ? nullptr : &b.cloud[0].mass, b.cloud.size(), 0, sizeof(Particle), self);
-          },
-          "particle masses, kg: (N,), a read-only view");
+/// A body's initial state (position, velocity, ω, orientation) and colour, as editable properties.
+void add_body_state(py::class_<Body>& c) {
   ic_vec3<&InitialConditions::position>(c, "position", "initial centre of mass, world, m");
   ic_vec3<&InitialConditions::velocity>(c, "velocity", "initial velocity, world, m/s");
   // ω as the scene file gives it: a value and the frame it is in.
@@ -107,6 +84,34 @@ void add_body(py::module_& m) {
       .def("__repr__", [](const Body& b) {
         return "<tumble.Body '" + b.name + "': " + std::to_string(b.cloud.size()) + " particles>";
       });
+}
+
+void add_body(py::module_& m) {
+  py::class_<Body> c(m, "Body", "One body of a scene (a view into the Scene, which keeps it alive).");
+  c.def_readonly("name", &Body::name)
+      .def_property_readonly("mass", [](const Body& b) { return b.mass_properties.mass; }, "kg")
+      .def_property_readonly("com", [](const Body& b) { return vec3(b.mass_properties.com); }, "cloud axes, m")
+      .def_property_readonly("inertia", [](const Body& b) { return mat3(b.mass_properties.inertia); },
+                             "about the centre of mass, cloud axes, kg·m²")
+      .def_property_readonly("principal_moments", [](const Body& b) { return vec3(b.mass_properties.principal_moments); },
+                             "ascending, kg·m²")
+      .def_property_readonly("principal_axes", [](const Body& b) { return mat3(b.mass_properties.principal_axes); },
+                             "columns, cloud axes")
+      .def_property_readonly(
+          "points",
+          [](py::object self) {
+            const Body& b = self.cast<const Body&>();
+            return view(b.cloud.empty() ? nullptr : b.cloud[0].position.data(), b.cloud.size(), 3, sizeof(Particle), self);
+          },
+          "particle positions, cloud axes, m: (N, 3), a read-only view")
+      .def_property_readonly(
+          "masses",
+          [](py::object self) {
+            const Body& b = self.cast<const Body&>();
+            return view(b.cloud.empty() ? nullptr : &b.cloud[0].mass, b.cloud.size(), 0, sizeof(Particle), self);
+          },
+          "particle masses, kg: (N,), a read-only view");
+  add_body_state(c);
 }
 
 /// scene.simulation and scene.output: views of a scene's settings, whose
@@ -201,12 +206,28 @@ std::shared_ptr<Scene> loaded(Scene&& s) {
 
 }  // namespace
 
+/// A scene's settings views and copies.
+static void add_scene_settings(py::class_<Scene, std::shared_ptr<Scene>>& c) {
+  c.def_property_readonly(
+          "simulation", [](const std::shared_ptr<Scene>& s) { return SimulationView{s}; }, "[simulation] (a view: setting edits the scene)")
+      .def_property_readonly(
+          "output", [](const std::shared_ptr<Scene>& s) { return OutputView{s}; }, "[output] (a view: setting edits the scene)")
+      .def("copy", [](const Scene& s) { return std::make_shared<Scene>(s); }, "An independent copy (to edit)")
+      .def("__copy__", [](const Scene& s) { return std::make_shared<Scene>(s); })
+      .def("__deepcopy__", [](const Scene& s, const py::dict&) { return std::make_shared<Scene>(s); }, py::arg("memo"),
+           "copy.deepcopy(scene): an independent copy, as scene.copy()")
+      .def("__repr__", [](const Scene& s) {
+        return "<tumble.Scene '" + s.name + "': " + std::to_string(s.bodies.size()) + " bodies, " +
+               std::to_string(s.simulation.duration) + " s>";
+      });
+}
+
 void add_scene(py::module_& m) {
   add_body(m);
   add_simulation(m);
   add_output(m);
-  py::class_<Scene, std::shared_ptr<Scene>>(m, "Scene", "A scene file read and validated by tumble's scene reader.")
-      .def_static(
+  py::class_<Scene, std::shared_ptr<Scene>> c(m, "Scene", "A scene file read and validated by tumble's scene reader.");
+  c.def_static(
           "load",
           [](const std::filesystem::path& path) {
             Scene s;
@@ -250,19 +271,8 @@ void add_scene(py::module_& m) {
               if (b.name == name) return py::cast(&b, py::return_value_policy::reference_internal, self);
             throw py::key_error("no body named '" + name + "'");
           },
-          py::arg("name"))
-      .def_property_readonly(
-          "simulation", [](const std::shared_ptr<Scene>& s) { return SimulationView{s}; }, "[simulation] (a view: setting edits the scene)")
-      .def_property_readonly(
-          "output", [](const std::shared_ptr<Scene>& s) { return OutputView{s}; }, "[output] (a view: setting edits the scene)")
-      .def("copy", [](const Scene& s) { return std::make_shared<Scene>(s); }, "An independent copy (to edit)")
-      .def("__copy__", [](const Scene& s) { return std::make_shared<Scene>(s); })
-      .def("__deepcopy__", [](const Scene& s, const py::dict&) { return std::make_shared<Scene>(s); }, py::arg("memo"),
-           "copy.deepcopy(scene): an independent copy, as scene.copy()")
-      .def("__repr__", [](const Scene& s) {
-        return "<tumble.Scene '" + s.name + "': " + std::to_string(s.bodies.size()) + " bodies, " +
-               std::to_string(s.simulation.duration) + " s>";
-      });
+          py::arg("name"));
+  add_scene_settings(c);
 }
 
 }  // namespace tumble::py_bind
