@@ -77,6 +77,7 @@ static void add_run_functions(py::module_& m) {
         if (fps) keys.fps = scene::override_settings(s, {arg_override("export_gltf", "fps", "output.fps", *fps)},
                                                      "tumble.export_gltf()").output.fps;
         keys.tolerance = key_tolerance.value_or(keys.tolerance);
+        keys.tolerance_name = "tumble.export_gltf(key_tolerance=...)";
         py::gil_scoped_release nogil;
         gltf::export_gltf(s, path, keys, "path", check_signals);
       },

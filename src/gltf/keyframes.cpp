@@ -86,7 +86,7 @@ double check_step(const RigidBodyModel& m, const Pose& p, double tolerance, doub
 
 [[noreturn]] void refuse(const scene::Body& b, const std::string& what, const KeyOptions& o) {
   throw InputError("body '" + b.name + "': " + what + " to follow its motion within " + format_number(o.tolerance, 3) +
-                   " rad between keys; raise --key-tolerance (the rotation error allowed between keys, rad), "
+                   " rad between keys; raise " + o.tolerance_name + " (the rotation error allowed between keys, rad), "
                    "or shorten the scene's duration");
 }
 
@@ -129,8 +129,8 @@ std::vector<double> keyframe_times(const scene::Scene& s, double fps) {
 
 std::vector<scene::Trajectory> key_tracks(const scene::Scene& s, const KeyOptions& o, const std::function<void()>& poll) {
   if (!(o.tolerance >= kMinKeyTolerance && o.tolerance <= kMaxKeyTolerance))
-    throw InputError("--key-tolerance: expected a number in [" + format_number(kMinKeyTolerance) + ", " +
-                     format_number(kMaxKeyTolerance) + "] rad, found " + format_number(o.tolerance));
+    throw InputError(o.tolerance_name + ": error: expected a number in [" + format_number(kMinKeyTolerance, 3) + ", " +
+                     format_number(kMaxKeyTolerance, 3) + "] rad, found " + format_number(o.tolerance, 6));
   const std::vector<double> base = keyframe_times(s, o.fps);
   std::vector<scene::Trajectory> out;
   for (const scene::Body& b : s.bodies) out.push_back(body_keys(s, b, base, o, poll));

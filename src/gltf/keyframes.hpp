@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "scene/sampled_run.hpp"
@@ -25,6 +26,7 @@ struct KeyOptions {
   double fps = 0;                      ///< keys per second at least; 0: the scene's output fps
   double tolerance = kKeyTolerance;    ///< rad; the centre of mass within tolerance × the body's radius
   std::size_t max_keys = kMaxKeysPerBody;
+  std::string tolerance_name = "--key-tolerance";  ///< how messages name the tolerance (a Python argument)
 };
 
 /// The times every export keys: k/fps up to the scene's duration (the last is
