@@ -132,7 +132,7 @@ viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& 
   return c;
 }
 
-viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<glm::dvec3>>& centres, double aspect) {
   const scene::CameraConfig& c = s.render.camera;
   viz::Camera camera;
   if (c.across != 0 && !s.bodies.empty()) {
@@ -140,33 +140,40 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& r
     const scene::Body* b = s.find_body(c.follow);
     if (!b) b = &s.bodies.front();
     double reach = 0;
-    for (const scene::Run& r : runs)
-      for (const auto& states : r.frames)
-        for (std::size_t i = 0; i < states.size() && i < s.bodies.size(); ++i)
-          if (states[i].c.allFinite() && states[i].c.norm() < 1e6)
-            reach = std::max(reach, (states[i].c - c.target).norm() + 3 * viz::box_radius(s.bodies[i].model));
+    for (std::size_t i = 0; i < centres.size() && i < s.bodies.size(); ++i)
+      for (const glm::dvec3& p : centres[i])
+        if (std::isfinite(p.x + p.y + p.z) && glm::length(p) < 1e6)
+          reach = std::max(reach, glm::length(p - to_glm(c.target)) + 3 * viz::box_radius(s.bodies[i].model));
     const double half = 0.5 * c.fov_y_deg * M_PI / 180 * std::min(1.0, aspect);
     return across_camera(c.target, b->initial.L, c.across, c.azimuth_deg, c.elevation_deg,
                          std::max(reach, 1e-3) / std::sin(half), c.fov_y_deg);
   }
   if (c.automatic) {
     // Frame every body over the whole run (all runs: a failing method may drift).
-    std::vector<glm::dvec3> centres;
+    std::vector<glm::dvec3> points;
     std::vector<double> radii;
-    for (const scene::Run& r : runs)
-      for (const auto& states : r.frames)
-        for (size_t i = 0; i < states.size(); ++i) {
-          if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
-          centres.push_back(to_glm(states[i].c));
-          radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
-        }
-    return viz::auto_camera(centres, radii, c.fov_y_deg, aspect);
+    for (size_t i = 0; i < centres.size() && i < s.bodies.size(); ++i)
+      for (const glm::dvec3& p : centres[i]) {
+        if (!std::isfinite(p.x + p.y + p.z) || glm::length(p) > 1e6) continue;
+        points.push_back(p);
+        radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
+      }
+    return viz::auto_camera(points, radii, c.fov_y_deg, aspect);
   }
   camera.position = to_glm(c.position);
   camera.target = to_glm(c.target);
   camera.up = to_glm(c.up);
   camera.fov_y_deg = c.fov_y_deg;
   return camera;
+}
+
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
+  std::vector<std::vector<glm::dvec3>> centres(s.bodies.size());
+  if (s.render.camera.automatic || s.render.camera.across != 0)
+    for (const scene::Run& r : runs)
+      for (const auto& states : r.frames)
+        for (size_t i = 0; i < states.size() && i < centres.size(); ++i) centres[i].push_back(to_glm(states[i].c));
+  return scene_camera(s, centres, aspect);
 }
 
 viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& runs) {

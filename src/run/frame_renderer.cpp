@@ -14,7 +14,9 @@ SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
     throw InputError("frame " + std::to_string(last_needed) + " is past the end of the scene (frames 0:" +
                      std::to_string(count_ - 1) + ")");
   // Laid-out views (a plot's value axis) also depend on the whole run.
-  const long frames = s.render.camera.automatic || !s.render.explain.views.empty() ? count_ : last_needed + 1;
+  const long frames = s.render.camera.automatic || s.render.camera.across != 0 || !s.render.explain.views.empty()
+                          ? count_
+                          : last_needed + 1;
   runs_ = scene::simulate_runs(s, frames, fps_);
 }
 
