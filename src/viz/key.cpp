@@ -49,8 +49,8 @@ std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pa
   const std::vector<Color> axes{kAxisColors[0], kAxisColors[1], kAxisColors[2]};
   if (d.axes) out.push_back({Swatch::line, axes, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"});
   if (d.axes && d.trail_seconds > 0) out.push_back({Swatch::line, axes, "trails of their tips"});
-  if (d.angular_momentum) out.push_back(key_entry(Meaning::L, "L: angular momentum"));
-  if (d.omega) out.push_back(key_entry(Meaning::omega, "\u03c9: angular velocity"));
+  if (d.angular_momentum) out.push_back(key_entry(Meaning::L, "L: angular momentum (direction)"));
+  if (d.omega) out.push_back(key_entry(Meaning::omega, "\u03c9: angular velocity (direction)"));
   for (const auto& [name, color] : bodies) out.push_back({Swatch::block, {Color(glm::vec3(color), 1.0f)}, name});
   return out;
 }

@@ -35,8 +35,8 @@ struct SphereCameraSettings {
   double reach = 1.5;          ///< half the view's height, in |L| (the momentum sphere: its axis labels)
 };
 
-/// Half the momentum sphere view's height, |L|: its axes (1.5) and their labels fit.
-inline constexpr double kSphereReach = 1.95;
+/// Half the momentum sphere view's height, |L|: its axes (1.4) and their labels fit.
+inline constexpr double kSphereReach = 1.75;
 
 /// The momentum sphere's default camera, a fixed textbook view for a body
 /// whose Π starts at `pi0` (principal moments `inertia`, ascending): it looks

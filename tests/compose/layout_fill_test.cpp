@@ -162,4 +162,33 @@ TEST(LayoutFill, ComparisonCellsShareOneCamera) {
   }
 }
 
+TEST(LayoutFill, ComparisonCellsShowTheExactBodyFaintly) {
+  // Every method's cell but the exact one carries the exact solution's body, translucent.
+  const scene::Scene s = shipped("methods_compare.toml");
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  ASSERT_EQ(runs.size(), 4u);
+  const compose::FrameBuilder fb(s, runs, fps, 320, 240);
+  const viz::DrawList dl = fb.build(count / 2);
+  ASSERT_EQ(dl.views.size(), 4u);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const auto& sf = dl.views[r].surfaces;
+    const auto ghosts = std::count_if(sf.begin(), sf.end(), [](const viz::SurfaceItem& x) { return x.name == "ghost"; });
+    if (runs[r].label == "exact") {
+      EXPECT_EQ(ghosts, 0) << "the exact cell needs no ghost of itself";
+      continue;
+    }
+    EXPECT_GT(ghosts, 0) << runs[r].label;
+    for (const viz::SurfaceItem& x : sf)
+      if (x.name == "ghost") EXPECT_LT(x.color.a, 0.5f) << runs[r].label;
+  }
+  // Explicit Euler has left the exact motion by then: its body and the ghost differ.
+  const auto& euler = dl.views[0].surfaces;
+  ASSERT_EQ(runs[0].label, "euler");
+  const auto ghost = std::find_if(euler.begin(), euler.end(), [](const viz::SurfaceItem& x) { return x.name == "ghost"; });
+  ASSERT_NE(ghost, euler.end());
+  EXPECT_NE(ghost->model, euler.front().model);
+}
+
 }  // namespace
