@@ -107,7 +107,8 @@ TEST(SphereFigure, SaddlesMarkedAndTheFarSideShowsFaintly) {
   int faint = 0, front = 0;
   for (const PolylineItem& p : v.polylines) {
     if (p.name == "separatrix") ++front;
-    if (p.name.empty() && std::abs(p.color.a - 0.32f * 0.95f) < 1e-6f) {
+    const Color sep = color_of(Meaning::separatrix);
+    if (p.name.empty() && glm::vec3(p.color) == glm::vec3(sep) && std::abs(p.color.a - 0.32f * sep.a) < 1e-6f) {
       ++faint;
       for (const glm::dvec3& x : p.points)
         EXPECT_FALSE(hidden_by_ball(v.camera.position, x, kSphereBall));
