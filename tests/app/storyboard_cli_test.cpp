@@ -177,9 +177,9 @@ TEST_F(StoryboardCli, RenderWarnsOfWhatTheLayoutLeavesOut) {
   const std::string scene = "'" + (kSource / "tests/app/data/tiny_explained.toml").string() + "'";
   const Result r = run("render " + scene + " -o '" + (dir_ / "out").string() + "' --progress none");
   ASSERT_EQ(r.code, 0) << r.err;
-  // 160 × 96: a key's text would be 2 px high; the title card holds frames 0-2.
+  // 160 × 96: a key's text (about 3 % of the height) would be 3 px high; the title card holds frames 0-2.
   // (the world and body_frame views' keys repeat each other: one frame key for all)
-  const std::string warning = "tumble: warning: frame key left out: its text would be 2 px high";
+  const std::string warning = "tumble: warning: frame key left out: its text would be 3 px high";
   EXPECT_NE(r.err.find(warning), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("(frames 3-17)"), std::string::npos) << r.err;
   const Result info = run("info " + scene);

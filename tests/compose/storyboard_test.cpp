@@ -157,14 +157,14 @@ TEST(LayoutNotes, EachNoteOnceWithItsFramesAsStretches) {
   EXPECT_EQ(one.lines(), (std::vector<std::string>{"x (frame 7)"}));
 }
 
-// A key that cannot fit (its text under 8 px in a 300 px high frame) is a
+// A key that cannot fit (its text, about 3 % of the height, under 8 px in a 200 px high frame) is a
 // note of every frame, and check_layout (what `tumble info` prints) says so once.
 TEST(LayoutNotes, CheckLayoutSaysWhatEveryFrameLeavesOut) {
   const scene::Scene s = scene::load_scene_from_string(
       "[simulation]\nmethod = \"exact\"\nduration = 1\nfps = 10\n"
       "[[bodies]]\nname = \"b\"\nshape = { type = \"box\", size = [0.3, 0.1, 0.02], resolution = 4, mass = 1 }\n"
       "omega_body = [0.05, 5.0, 0.05]\n"
-      "[output]\nwidth = 400\nheight = 300\n"
+      "[output]\nwidth = 400\nheight = 200\n"
       "[[views]]\nkind = \"momentum_sphere\"\ntitle = \"sphere\"\n",
       "small.toml");
   const std::vector<std::string> lines = compose::check_layout(s).lines();
