@@ -9,15 +9,20 @@ namespace tumble::compose {
 
 namespace {
 
-bool fits(const Shot& s, double factor, double aspect, Margins margin) {
-  const CameraMatrices m = camera_matrices(backed_off(s.camera, factor), static_cast<float>(aspect));
+bool inside(const CameraMatrices& m, const std::vector<glm::dvec3>& points, Margins margin) {
   const double lim_x = 1.0 - margin.x, lim_y = 1.0 - margin.y;
-  for (const glm::dvec3& p : s.points) {
+  for (const glm::dvec3& p : points) {
     const glm::vec4 clip = m.proj * m.view * glm::vec4(glm::vec3(p), 1.0f);
     if (clip.w <= 0 || clip.z < -clip.w) return false;  // behind the camera or before its near plane
     if (std::abs(clip.x / clip.w) > lim_x || std::abs(clip.y / clip.w) > lim_y) return false;
   }
   return true;
+}
+
+bool fits(const Shot& s, double factor, double aspect, Margins margin, Margins tip_margin) {
+  const CameraMatrices m = camera_matrices(backed_off(s.camera, factor), static_cast<float>(aspect));
+  return inside(m, s.points, margin) &&
+         inside(m, s.tips, {std::max(margin.x, tip_margin.x), std::max(margin.y, tip_margin.y)});
 }
 
 }  // namespace
@@ -29,9 +34,9 @@ viz::Camera backed_off(viz::Camera c, double factor) {
   return c;
 }
 
-double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, double closest) {
+double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, double closest, Margins tip_margin) {
   const auto all = [&](double f) {
-    return std::all_of(shots.begin(), shots.end(), [&](const Shot& s) { return fits(s, f, aspect, margin); });
+    return std::all_of(shots.begin(), shots.end(), [&](const Shot& s) { return fits(s, f, aspect, margin, tip_margin); });
   };
   if (all(1.0)) {
     if (closest >= 1.0 || all(closest)) return std::min(1.0, closest);
@@ -51,14 +56,23 @@ double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, do
   return hi;
 }
 
-std::vector<glm::dvec3> solid_points(const viz::View& v) {
-  std::vector<glm::dvec3> out;
+Shot solid_shot(const viz::View& v) {
+  Shot s{v.camera, {}, {}};
   for (const viz::BoxItem& b : v.boxes)
-    for (const glm::dvec3& p : viz::box_corners(b)) out.push_back(p);
-  for (const viz::ArrowItem& a : v.arrows) out.insert(out.end(), {a.origin, a.origin + a.vector});
+    for (const glm::dvec3& p : viz::box_corners(b)) s.points.push_back(p);
+  for (const viz::ArrowItem& a : v.arrows) {
+    s.points.push_back(a.origin);
+    s.tips.push_back(a.origin + a.vector);
+  }
   for (const viz::PointItem& p : v.points)
-    if (!p.name.empty()) out.push_back(p.position);
-  return out;
+    if (!p.name.empty()) s.points.push_back(p.position);
+  return s;
+}
+
+std::vector<glm::dvec3> solid_points(const viz::View& v) {
+  Shot s = solid_shot(v);
+  s.points.insert(s.points.end(), s.tips.begin(), s.tips.end());
+  return s.points;
 }
 
 }  // namespace tumble::compose

@@ -10,10 +10,12 @@
 
 namespace tumble::compose {
 
-/// One frame's camera and the points it must show (world, m).
+/// One frame's camera and the points it must show (world, m): the bodies'
+/// and the arrows' tips, which carry names beyond them and so may need more room.
 struct Shot {
   viz::Camera camera;
   std::vector<glm::dvec3> points;
+  std::vector<glm::dvec3> tips = {};
 };
 
 /// Room kept clear at the content's edges: fractions of its half width (x) and half height (y).
@@ -28,13 +30,16 @@ struct Margins {
 /// that all its points project inside a content rectangle of `aspect`
 /// (width/height), `margin` in from its edges, in front of the near plane.
 /// Perspective cameras only. With `closest` = 1 (the default) cameras only
-/// back off: 1 when they fit.
-double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, double closest = 1.0);
+/// back off: 1 when they fit. Tips keep `tip_margin` (at least `margin`).
+double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, double closest = 1.0,
+               Margins tip_margin = 0.0);
 
 /// `c` moved `factor` times as far from its target, its far plane with it.
 viz::Camera backed_off(viz::Camera c, double factor);
 
 /// The points a view of bodies must show: each body's box corners and every arrow's tail and tip.
 std::vector<glm::dvec3> solid_points(const viz::View& v);
+/// The same as a shot: box corners, arrow tails and named points in `points`, arrow tips in `tips`.
+Shot solid_shot(const viz::View& v);
 
 }  // namespace tumble::compose

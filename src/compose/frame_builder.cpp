@@ -79,9 +79,15 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     needs.caption_side = FrameNeeds::CaptionSide::top;
   needs.badge = widest_status();
   plan_ = plan_frame(needs);
+  // A [compare] grid's cells differ by a pixel or two (rounding, overlay
+  // lines); fitted to one size, they share one camera and so one scale.
+  glm::vec2 common{1e9f, 1e9f};
+  for (const ViewPlan& v : plan_.views)
+    common = glm::min(common, glm::vec2(v.content.x1 - v.content.x0, v.content.y1 - v.content.y0));
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
-    panels_[i]->fit({std::max(1.0f, c.x1 - c.x0), std::max(1.0f, c.y1 - c.y0)});
+    const glm::vec2 size = views.empty() ? common : glm::vec2(c.x1 - c.x0, c.y1 - c.y0);
+    panels_[i]->fit(glm::max(size, glm::vec2(1.0f)));
   }
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "compose/frame_builder.hpp"
+#include "scene/frame_clock.hpp"
 #include "scene/frame_runs.hpp"
 #include "scene/scene.hpp"
 #include "viz/draw_list.hpp"
@@ -14,7 +15,11 @@ namespace {
 TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
   const tumble::scene::Scene s = tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/poinsot.toml");
   const double fps = s.render.output.fps;
-  const long k = 420;
+  // A frame after the world and body_frame views appear (t = 3.4 s): the
+  // scene's title card and holds decide which frame that is.
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k = 0;
+  while (k + 1 < clock.count() && clock.time(k) < 4.0) ++k;
   const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 320, 240);
   const tumble::viz::DrawList dl = fb.build(k);

@@ -100,11 +100,25 @@ TEST(LayoutFill, KeysOfTheirOwnStayBesideTheirViews) {
   const viz::KeyEntry axes{viz::Swatch::line, {viz::kAxisColors[0], viz::kAxisColors[1], viz::kAxisColors[2]}, "e1 e2 e3"};
   std::vector<viz::KeyEntry> world = {axes, viz::key_entry(viz::Meaning::L, "L")}, sphere = sphere_like_key();
   sphere.insert(sphere.begin(), axes);
-  const FramePlan p = compose::plan_frame(needs({view({0, 0, 0.5, 0.6}, world), view({0.5, 0, 0.5, 0.6}, sphere)}));
+  // Keys' text is ~3 % of the frame height: a frame twice as wide as 960x540
+  // leaves each half-width view room for its key beside the content.
+  FrameNeeds wide = needs({view({0, 0, 0.5, 0.6}, world), view({0.5, 0, 0.5, 0.6}, sphere)});
+  wide.width = 1920;
+  const FramePlan p = compose::plan_frame(wide);
   EXPECT_TRUE(p.frame_key.empty());
   EXPECT_EQ(p.views[0].key.size(), 2u);
   EXPECT_EQ(p.views[1].key.size(), 4u);
   EXPECT_TRUE(p.views[0].key_at && p.views[1].key_at);
+  // At 960x540 the sphere's key beside its 480 px view would leave the content
+  // under 62 % of its width: it goes to the frame key, every entry once.
+  const FramePlan narrow = compose::plan_frame(needs({view({0, 0, 0.5, 0.6}, world), view({0.5, 0, 0.5, 0.6}, sphere)}));
+  EXPECT_TRUE(narrow.views[1].key.empty());
+  EXPECT_FALSE(narrow.frame_key.empty());
+  for (const viz::KeyEntry& e : sphere)
+    EXPECT_EQ(std::count_if(narrow.frame_key.begin(), narrow.frame_key.end(),
+                            [&](const viz::KeyEntry& x) { return viz::same_entry(x, e); }),
+              1)
+        << e.text;
 }
 
 // The largest share of its content's half width or height the whole video's

@@ -43,10 +43,26 @@ std::vector<fs::path> explained_scenes() {
   return out;
 }
 
-// Per scene and size: every frame's layout.
+// Per scene and size: every frame's layout (none for a frame that repeats the one before).
 struct Layouts {
   std::vector<std::vector<LayoutItem>> frames;
 };
+
+// A frame that only repeats the one before: the title card, or a hold (the
+// same simulated time) with the same captions up. Every tenth is still laid
+// out, for what changes with video time alone (a badge, a caption's fade).
+// Holds are half of a lesson's frames: skipping them halves the test's time.
+bool repeats_the_last(const tumble::compose::FrameBuilder& fb, long k) {
+  if (k == 0 || k % 10 == 0) return false;
+  const tumble::scene::FrameClock& c = fb.clock();
+  if (c.on_title_card(k) && c.on_title_card(k - 1)) return true;
+  const auto shown = [&](long j) {
+    std::vector<std::size_t> out;
+    for (const auto& [i, alpha] : fb.captions_at(j)) out.push_back(i);
+    return out;
+  };
+  return c.in_hold(k) && c.in_hold(k - 1) && c.time(k) == c.time(k - 1) && shown(k) == shown(k - 1);
+}
 
 const std::map<std::string, std::map<int, Layouts>>& all_layouts() {
   static const auto layouts = [] {
@@ -59,7 +75,9 @@ const std::map<std::string, std::map<int, Layouts>>& all_layouts() {
       for (const Size& z : kSizes) {
         const tumble::compose::FrameBuilder fb(s, runs, fps, z.w, z.h);
         Layouts& l = out[p.stem().string()][z.h];
-        for (long k = 0; k < count; ++k) l.frames.push_back(tumble::compose::layout_items(fb.build(k), z.w, z.h));
+        for (long k = 0; k < count; ++k)
+          l.frames.push_back(repeats_the_last(fb, k) ? std::vector<LayoutItem>{}
+                                                     : tumble::compose::layout_items(fb.build(k), z.w, z.h));
       }
     }
     return out;

@@ -65,12 +65,12 @@ class BodyFramePanel : public Panel {
     const long n = static_cast<long>(run.frames.size());
     for (long i = 0; i < std::min(n, kFitSamples); ++i) {
       const viz::View v = content(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
-      shots.push_back({v.camera, solid_points(v)});
+      shots.push_back(solid_shot(v));
     }
-    // Arrows carry their names past their tips: a name's height of room beyond them.
-    const double tip = 1.4 * viz::text_px(viz::TextRole::label, ctx_.frame_h);
-    const Margins m{std::max(kMargin, tip / (0.5 * std::max(size.x, 1.0f))), std::max(kMargin, tip / (0.5 * std::max(size.y, 1.0f)))};
-    camera_ = backed_off(camera_, backoff(shots, aspect, m, vc_.camera.distance ? 1.0 : 0.2));
+    // Arrows carry their names past (or, short of room, beside) their tips: a name's width across, half a line up and down.
+    const double tip = viz::text_px(viz::TextRole::label, ctx_.frame_h);
+    const Margins m{1.4 * tip / (0.5 * std::max(size.x, 1.0f)), 0.6 * tip / (0.5 * std::max(size.y, 1.0f))};
+    camera_ = backed_off(camera_, backoff(shots, aspect, kMargin, vc_.camera.distance ? 1.0 : 0.2, m));
   }
 
   viz::View content(long k) const override {

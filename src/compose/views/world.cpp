@@ -52,10 +52,10 @@ class WorldPanel : public Panel {
       for (long i = 0; i < std::min(n, kFitSamples); ++i) {
         const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
         const viz::View v = ctx_.world.view(r, k, camera_, int(size.x), int(size.y));
-        shots.push_back({v.camera, solid_points(v)});
+        shots.push_back(solid_shot(v));
       }
     }
-    camera_ = backed_off(camera_, backoff(shots, aspect, margins(size), closest()));
+    camera_ = backed_off(camera_, backoff(shots, aspect, margins(size), closest(), tip_margins(size)));
   }
 
   // A camera set for the whole frame (the scene's) frames its view of a
@@ -73,12 +73,17 @@ class WorldPanel : public Panel {
   // (labels sit beside their bodies: above or below, or at their sides).
   Margins margins(glm::vec2 size) const {
     const double m = closest() < 1 ? kFillMargin : kMargin;
-    // Arrows carry their names past their tips: a name's height (and width) of room beyond them.
-    const double tip = 1.4 * viz::text_px(viz::TextRole::label, ctx_.frame_h);
-    Margins out{std::max(m, tip / (0.5 * std::max(size.x, 1.0f))), std::max(m, tip / (0.5 * std::max(size.y, 1.0f)))};
-    if (!ctx_.scene.render.explain.labels) return out;
+    if (!ctx_.scene.render.explain.labels) return m;
     const double line = 1.2 * 1.1 * ctx_.world.font_px();
-    return {out.x, std::max(out.y, line / (0.5 * std::max(size.y, 1.0f)))};
+    return {m, std::max(m, line / (0.5 * std::max(size.y, 1.0f)))};
+  }
+  // Arrows carry their names past their tips: room for a name beside the
+  // tips alone (the bodies keep the plain margin, so they are not shrunk for
+  // it). A name with no room along its arrow turns beside the tip
+  // (viz::label_arrow_tips): a name's width across, half a line up and down.
+  Margins tip_margins(glm::vec2 size) const {
+    const double px = viz::text_px(viz::TextRole::label, ctx_.frame_h);
+    return {1.4 * px / (0.5 * std::max(size.x, 1.0f)), 0.6 * px / (0.5 * std::max(size.y, 1.0f))};
   }
 
   viz::View content(long k) const override {
