@@ -78,7 +78,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   // The axes are named at their ends: no entry for them.
   std::vector<KeyEntry> out;
   if (in.momentum.norm() <= 0) return out;
-  out.push_back(key_entry(Meaning::momentum_point, "\u03a0 = L in body axes"));
+  out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L written in body axes"));
   out.push_back(key_entry(Meaning::polhode, "polhode: \u03a0's path"));
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
