@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 RENDER_PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libboost-dev                     # core: linear algebra, elliptic functions
   libtomlplusplus-dev libcli11-dev               # scenes, command line
   libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev  # headless GL (OSMesa / EGL), camera maths

@@ -14,8 +14,8 @@ namespace tumble::compose {
 
 namespace {
 
-constexpr double kMargin = 0.04;
-constexpr long kFitSamples = 120;
+constexpr double kPoinsotMargin = 0.04;
+constexpr long kPoinsotFitSamples = 120;
 
 class PoinsotPanel : public Panel {
  public:
@@ -31,14 +31,14 @@ class PoinsotPanel : public Panel {
     if (ctx_.runs.empty() || ctx_.runs[0].frames.empty()) return;
     const long n = static_cast<long>(ctx_.runs[0].frames.size());
     std::vector<Shot> shots;
-    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
-      const viz::View v = build(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
+    for (long i = 0; i < std::min(n, kPoinsotFitSamples); ++i) {
+      const viz::View v = build(n <= kPoinsotFitSamples ? i : i * (n - 1) / (kPoinsotFitSamples - 1));
       Shot s{v.camera, solid_points(v)};
       for (const viz::PolylineItem& l : v.polylines)
         if (!l.name.empty()) s.points.insert(s.points.end(), l.points.begin(), l.points.end());
       shots.push_back(std::move(s));
     }
-    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kMargin);
+    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kPoinsotMargin);
   }
 
   viz::View content(long k) const override {

@@ -20,7 +20,7 @@
 // Arguments (any order): `4`, `max` (the worst error at t = 1, 2, ..., 10 s,
 // which no lucky cancellation at 10 s hides, instead of the error at 10 s) and
 // `csv` (one row per case instead of the summary).
-// Built and run by scripts/splitting_order_study.sh.
+// Run by scripts/splitting_order_study.sh (the target tumble_splitting_order_study).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
