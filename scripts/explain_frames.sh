@@ -1,6 +1,7 @@
 #!/bin/sh
-# Regenerates the README's frames (docs/demo_frame.png, docs/explained_*.png,
-# docs/poinsot_*.png, docs/tennis_racket_flip.png): the demo and a few frames
+# Regenerates the documentation's frames (docs/demo_frame.png, docs/explained_*.png,
+# docs/poinsot_*.png, docs/tennis_racket_flip.png, docs/readme_scene.png): the demo, the
+# README's scene (its toml block) and a few frames
 # of the explanatory scenes rendered at 960x540 (`tumble info` lists what each frame shows); at
 # 640x360 the keys' text is ~6.5 px and thin stems (l, i, I) drop out.
 set -eu
@@ -24,3 +25,11 @@ for spec in "dzhanibekov 120 demo_frame" "dzhanibekov_explained 40 explained_sta
   cp "$png" "docs/$3.png.tmp"
   mv "docs/$3.png.tmp" "docs/$3.png"
 done
+# The README's scene, as its toml block says, at frame 54 (t = 1.8 s, the first flip).
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+python3 -c 'import re, sys; sys.stdout.write(re.search(r"```toml\n(.*?)```", open("README.md").read(), re.S).group(1))' >"$tmp/flip.toml"
+"$tumble" render "$tmp/flip.toml" --frames 54:54 --width 960 --height 540 --video none --progress none --force \
+  -o "$out/flip" >/dev/null
+cp "$out/flip/frame_000054.png" docs/readme_scene.png.tmp
+mv docs/readme_scene.png.tmp docs/readme_scene.png
