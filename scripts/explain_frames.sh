@@ -1,7 +1,8 @@
 #!/bin/sh
 # Regenerates the documentation's frames (docs/demo_frame.png, docs/explained_*.png,
-# docs/poinsot_*.png, docs/tennis_racket_flip.png, docs/readme_scene.png): the demo, the
-# README's scene (its toml block) and a few frames
+# docs/poinsot_*.png, docs/tennis_racket_flip.png, docs/methods_compare_frame.png,
+# docs/readme_scene.png: the README's scene, from its toml block) and the lessons'
+# storyboards (docs/storyboard_<scene>.png): the demo and a few frames
 # of the explanatory scenes rendered at 960x540 (`tumble info` lists what each frame shows); at
 # 640x360 the keys' text is ~6.5 px and thin stems (l, i, I) drop out.
 set -eu
@@ -12,18 +13,26 @@ if [ ! -x "$tumble" ]; then
   echo "explain_frames: $tumble not found; build first: cmake --build --preset release --target tumble" >&2
   exit 1
 fi
-# scene frame docs-name: frame 40 = the title card; 273 = the first flip
-# (t = 1.80 s, in the 1/8-speed segment); 495 = t = 4 s; tennis_racket 188 =
-# the middle racket's first flip (t = 0.98 s); dzhanibekov 120 = t = 4 s, the demo.
-for spec in "dzhanibekov 120 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 273 explained_flip" \
-            "dzhanibekov_explained 495 explained_after" "poinsot 180 poinsot_3s" \
-            "tennis_racket 188 tennis_racket_flip"; do
+# scene frame docs-name: frame 40 = the title card; 480 = the hold at the
+# first flip (t = 1.80 s); 900 = t = 4.0 s; poinsot 450 = t = 3 s;
+# tennis_racket 300 = the hold at the middle racket's first flip (t = 0.57 s);
+# dzhanibekov 120 = t = 4 s, the demo; methods_compare 450 = t = 6 s, explicit
+# Euler already off.
+for spec in "dzhanibekov 120 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 480 explained_flip" \
+            "dzhanibekov_explained 900 explained_after" "poinsot 450 poinsot_3s" \
+            "tennis_racket 300 tennis_racket_flip" "methods_compare 450 methods_compare_frame"; do
   set -- $spec
   "$tumble" render "scenes/$1.toml" --frames "$2:$2" --width 960 --height 540 --video none --progress none \
     --force -o "$out/$1" >/dev/null
   png=$(printf '%s/%s/frame_%06d.png' "$out" "$1" "$2")
   cp "$png" "docs/$3.png.tmp"
   mv "docs/$3.png.tmp" "docs/$3.png"
+done
+# The storyboards: 8 frames spread over each lesson and one at every event, drawn
+# at 960x540 and shown 400 px wide (tumble storyboard).
+for scene in dzhanibekov_explained tennis_racket poinsot methods_compare dzhanibekov; do
+  "$tumble" storyboard "scenes/$scene.toml" --width 960 --height 540 -n 8 --tile-width 400 --progress none \
+    -o "docs/storyboard_$scene.png" >/dev/null
 done
 # The README's scene, as its toml block says, at frame 54 (t = 1.8 s, the first flip).
 tmp=$(mktemp -d)

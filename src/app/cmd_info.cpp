@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_info.hpp"
+#include "compose/layout_notes.hpp"
 #include "core/format.hpp"
 #include "io/json.hpp"
 #include "scene/events.hpp"
@@ -78,9 +79,12 @@ std::string frames_text(const scene::Scene& s) {
   char line[200];
   for (const scene::ClockSpan& sp : scene::clock_spans(c)) {
     const double v0 = static_cast<double>(sp.first) / c.fps(), v1 = static_cast<double>(sp.last) / c.fps();
-    if (sp.rate == 0)
+    if (sp.rate == 0 && c.on_title_card(sp.first))
       std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  title card, t = 0 s\n", sp.first, sp.last,
                     v0, v1);
+    else if (sp.rate == 0)
+      std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  hold, t = %.4f s\n", sp.first, sp.last, v0,
+                    v1, c.time(sp.first));
     else
       std::snprintf(line, sizeof line, "  %6ld-%-6ld video %7.3f-%-7.3f s  t = %.4f-%.4f s  %s\n", sp.first, sp.last,
                     v0, v1, c.time(sp.first), c.time(sp.last), (sp.rate == 1 ? "real time" : scene::speed_text(sp.rate)).c_str());
@@ -89,7 +93,7 @@ std::string frames_text(const scene::Scene& s) {
   return o.str();
 }
 
-std::string to_json(const scene::Scene& s) {
+io::Json to_json(const scene::Scene& s) {
   io::Json bodies = io::Json::array();
   for (const scene::Body& b : s.bodies) {
     const BodyInfo i = world_info(b);
@@ -113,7 +117,7 @@ std::string to_json(const scene::Scene& s) {
   io::Json times = io::Json::array();
   for (long k = 0; k < clock.count(); ++k) times.push_back(clock.time(k));
   io::Json frames{{"count", clock.count()}, {"fps", clock.fps()}, {"hold", clock.hold()}, {"times", std::move(times)}};
-  return io::json_text(io::Json{{"bodies", std::move(bodies)}, {"frames", std::move(frames)}});
+  return io::Json{{"bodies", std::move(bodies)}, {"frames", std::move(frames)}};
 }
 
 std::string to_text(const scene::Scene& s) {
@@ -160,9 +164,25 @@ std::string to_text(const scene::Scene& s) {
   return o.str();
 }
 
+// What the layout leaves out of which frames at the scene's size (as `tumble render` would warn).
+std::string layout_text(const std::vector<std::string>& notes, const scene::Scene& s) {
+  std::string o = "\nlayout at " + std::to_string(s.render.output.width) + "x" +
+                  std::to_string(s.render.output.height) + " (every frame, as `tumble render` composes it)\n";
+  if (notes.empty()) return o + "  nothing left out\n";
+  for (const std::string& n : notes) o += "  " + n + "\n";
+  return o;
+}
+
 int run_info(const InfoOptions& o) {
   const scene::Scene s = load_scene_verbose(o.scene);
-  std::cout << (o.json ? to_json(s) : to_text(s));
+  const std::vector<std::string> notes = compose::check_layout(s).lines();
+  if (o.json) {
+    io::Json j = to_json(s);
+    j["layout"] = {{"width", s.render.output.width}, {"height", s.render.output.height}, {"notes", notes}};
+    std::cout << io::json_text(j);
+  } else {
+    std::cout << to_text(s) << layout_text(notes, s);
+  }
   return kOk;
 }
 

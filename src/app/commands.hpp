@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -57,14 +58,37 @@ void add_bench_command(CLI::App& app, Action& action);
 int run_bench_tool(int argc, char** argv);
 void add_methods_command(CLI::App& app, Action& action);
 void add_export_command(CLI::App& app, Action& action);
+void add_storyboard_command(CLI::App& app, Action& action);
 
 /// The integration methods as a markdown table (`tumble methods --markdown`,
 /// docs/methods.md), one row per row of core's method table: name, order, description.
 std::string methods_markdown();
 
+/// The options that are scene keys ([output] width, height, fps, aa, msaa),
+/// shared by `render` and `storyboard`: they go into the scene before it is
+/// validated, so the loader's checks cover them too.
+struct FrameOverrides {
+  std::optional<int> width, height, msaa;
+  std::optional<double> fps;
+  std::string aa;
+};
+std::vector<scene::Override> frame_overrides(const FrameOverrides& o);
+/// `quality`: the command has --quality too (the help says --aa and --msaa override it).
+void add_frame_override_options(CLI::App* cmd, FrameOverrides& o, bool quality);
+
 /// The GL backend of `--gl` (or, when empty, of env TUMBLE_GL): an InputError
 /// naming the option for an unknown name, so it fails before any work.
 render::GlBackend parse_backend_option(const std::string& gl);
+
+/// `--gl` and `--gpu` as render and storyboard take them: the backend (--gpu
+/// implies egl; with --gl osmesa an InputError) and the EGL device (--gpu,
+/// else env TUMBLE_EGL_DEVICE for egl, else automatic), checked before any work.
+struct GlChoice {
+  render::GlBackend backend;
+  std::optional<int> gpu;
+};
+GlChoice choose_gl(const std::string& gl, std::optional<int> gpu);
+void add_gl_options(CLI::App* cmd, std::string& gl, std::optional<int>& gpu);
 
 /// Runs `action`, mapping exceptions to messages on stderr and exit codes.
 int run_action(const Action& action);

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   tumble::app::add_assemble_command(app, action);
   tumble::app::add_compare_command(app, action);
   tumble::app::add_golden_command(app, action);
+  tumble::app::add_storyboard_command(app, action);
 #endif
   tumble::app::add_bench_command(app, action);
   tumble::app::add_methods_command(app, action);

@@ -9,13 +9,13 @@ namespace tumble::compose {
 
 namespace {
 
-bool fits(const Shot& s, double factor, double aspect, double margin) {
+bool fits(const Shot& s, double factor, double aspect, Margins margin) {
   const CameraMatrices m = camera_matrices(backed_off(s.camera, factor), static_cast<float>(aspect));
-  const double lim = 1.0 - margin;
+  const double lim_x = 1.0 - margin.x, lim_y = 1.0 - margin.y;
   for (const glm::dvec3& p : s.points) {
     const glm::vec4 clip = m.proj * m.view * glm::vec4(glm::vec3(p), 1.0f);
-    if (clip.w <= 0) return false;
-    if (std::abs(clip.x / clip.w) > lim || std::abs(clip.y / clip.w) > lim) return false;
+    if (clip.w <= 0 || clip.z < -clip.w) return false;  // behind the camera or before its near plane
+    if (std::abs(clip.x / clip.w) > lim_x || std::abs(clip.y / clip.w) > lim_y) return false;
   }
   return true;
 }
@@ -29,11 +29,19 @@ viz::Camera backed_off(viz::Camera c, double factor) {
   return c;
 }
 
-double backoff(const std::vector<Shot>& shots, double aspect, double margin) {
+double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, double closest) {
   const auto all = [&](double f) {
     return std::all_of(shots.begin(), shots.end(), [&](const Shot& s) { return fits(s, f, aspect, margin); });
   };
-  if (all(1.0)) return 1.0;
+  if (all(1.0)) {
+    if (closest >= 1.0 || all(closest)) return std::min(1.0, closest);
+    double lo = closest, hi = 1.0;  // lo does not fit, hi does
+    for (int i = 0; i < 30; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (all(mid) ? hi : lo) = mid;
+    }
+    return hi;
+  }
   double lo = 1.0, hi = 2.0;
   while (!all(hi) && hi < 64) lo = hi, hi *= 2;
   for (int i = 0; i < 30; ++i) {

@@ -15,6 +15,7 @@ namespace {
 
 constexpr viz::Color kInk{0.12f, 0.13f, 0.16f, 1.0f};
 constexpr viz::Color kDiverged{0.75f, 0.1f, 0.1f, 1.0f};
+constexpr const char* kPaused = "paused";  // the badge while a [[holds]] stop lasts
 
 int grid_columns(std::size_t runs) {
   const int n = std::max<int>(1, static_cast<int>(runs));
@@ -30,7 +31,7 @@ std::string widest_speed(const scene::FrameClock& clock, int frame_h) {
     const double rate = clock.rate(k);
     if (rate == last || rate == 1) continue;
     last = rate;
-    const std::string t = scene::speed_text(rate);
+    const std::string t = clock.in_hold(k) ? kPaused : scene::speed_text(rate);
     if (viz::text_width(t, size) > viz::text_width(widest, size)) widest = t;
   }
   return widest;
@@ -72,21 +73,24 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     ViewNeeds v;
     if (!views.empty()) v.viewport = views[i].viewport;
+    v.kind = panels_[i]->name();
     v.title = titles_[i];
     v.overlay_lines = panels_[i]->overlay_lines();
-    v.key = panels_[i]->key();
+    if (views.empty() || views[i].key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
     v.edge_to_edge = !views.empty() && views[i].kind == scene::ViewKind::plot;
     needs.views.push_back(std::move(v));
   }
   for (const scene::Caption& c : s.render.explain.captions) needs.captions.push_back(c.text);
+  // One caption strip; the scene reader makes every caption agree on where it goes.
+  const auto& captions = s.render.explain.captions;
+  if (!captions.empty() && captions.front().position == scene::CaptionPosition::top)
+    needs.caption_side = FrameNeeds::CaptionSide::top;
   needs.badge = widest_speed(world_.clock(), height);
   plan_ = plan_frame(needs);
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
     panels_[i]->fit({std::max(1.0f, c.x1 - c.x0), std::max(1.0f, c.y1 - c.y0)});
   }
-  keys_.reserve(needs.views.size());
-  for (ViewNeeds& v : needs.views) keys_.push_back(std::move(v.key));
 }
 
 std::string FrameBuilder::legend() const {
@@ -98,12 +102,14 @@ std::string FrameBuilder::legend() const {
   return legend;
 }
 
-viz::View FrameBuilder::view_at(std::size_t i, long k) const {
+viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>& notes) const {
   const ViewPlan& p = plan_.views[i];
   viz::View v = panels_[i]->content(k);
   const viz::Box& c = p.content;
   // Labels settle inside the content rectangle, clear of its other text; then move with it into the view.
-  viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0);
+  for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0))
+    notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
+                    "the view's other text, bodies, arrows and curves");
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);
   v.viewport = p.viewport;
@@ -114,33 +120,50 @@ viz::View FrameBuilder::view_at(std::size_t i, long k) const {
     v.texts.push_back({lines[j], {p.title_at.x > 0 ? p.title_at.x : c.x0, p.overlay_y + static_cast<float>(j) * p.overlay_px},
                        p.overlay_px, diverged ? kDiverged : kInk, diverged ? "diverged" : "overlay"});
   }
-  if (p.key_at) viz::add_key(v, keys_[i], *p.key_at, p.key_px);
+  if (p.key_at) viz::add_key(v, p.key, *p.key_at, p.key_px);
   return v;
+}
+
+std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) const {
+  const scene::FrameClock& clock = world_.clock();
+  const double tau = static_cast<double>(k) / clock.fps();  // video time
+  std::vector<std::pair<std::size_t, float>> out;
+  const auto& captions = scene_.render.explain.captions;
+  for (std::size_t i = 0; i < captions.size(); ++i) {
+    // Up from the first frame showing `start` to the last showing `end` (through a hold there).
+    const float a = viz::fade_alpha(tau, clock.video_time(captions[i].start), clock.video_time_last(captions[i].end));
+    if (a > 0) out.emplace_back(i, a);
+  }
+  return out;
 }
 
 void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
   const scene::FrameClock& clock = world_.clock();
-  const double tau = static_cast<double>(k) / clock.fps();  // video time
   const double rate = clock.rate(k);
   const glm::vec2 shift{0, plan_.caption_shift};
-  for (const scene::Caption& c : scene_.render.explain.captions) {
-    const float a = viz::fade_alpha(tau, clock.video_time(c.start), clock.video_time(c.end));
-    if (a <= 0) continue;
-    for (viz::TextItem& t : viz::caption_items(c.text, a, width_, height_, plan_.badge_side)) {
+  for (const auto& [i, a] : captions_at(k)) {
+    for (viz::TextItem& t : viz::caption_items(scene_.render.explain.captions[i].text, a, width_, height_, plan_.badge_side)) {
       move_text(t, shift);
       dl.texts.push_back(std::move(t));
     }
   }
-  if (auto badge = viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_)) {
-    move_text(*badge, shift);
-    dl.texts.push_back(std::move(*badge));
+  const auto badge = clock.in_hold(k) ? viz::speed_badge(kPaused, false, width_, height_, true)
+                                      : viz::speed_badge(scene::speed_text(rate), rate < 1, width_, height_);
+  if (badge) {
+    viz::TextItem b = *badge;
+    move_text(b, shift);
+    dl.texts.push_back(std::move(b));
+  }
+  if (!plan_.frame_key.empty()) {
+    const viz::Box& b = plan_.frame_key_box;
+    viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * static_cast<float>(width_), b.y0 + 0.5f * plan_.frame_key_px,
+                     plan_.frame_key_px, static_cast<float>(width_) - plan_.frame_key_px);
   }
   if (plan_.legend.y1 > plan_.legend.y0) {
     const float pad = 0.5f * plan_.legend_px;
     dl.texts.push_back({viz::wrap_text(legend(), plan_.legend_px, static_cast<float>(width_) - 2 * pad),
                         {pad, plan_.legend.y0 + pad}, plan_.legend_px, kInk, "legend"});
   }
-  dl.notes = plan_.notes;
 }
 
 bool FrameBuilder::title_card(viz::DrawList& dl, long k) const {
@@ -159,7 +182,11 @@ viz::DrawList FrameBuilder::build(long k) const {
   const Eigen::Vector3d& bg = scene_.render.output.background;
   dl.background = {static_cast<float>(bg.x()), static_cast<float>(bg.y()), static_cast<float>(bg.z()), 1.0f};
   if (title_card(dl, k)) return dl;  // the animation waits
-  for (std::size_t i = 0; i < panels_.size(); ++i) dl.views.push_back(view_at(i, k));
+  dl.notes = plan_.notes;
+  const double t = world_.clock().time(k);
+  const auto& views = scene_.render.explain.views;
+  for (std::size_t i = 0; i < panels_.size(); ++i)
+    if (views.empty() || t >= views[i].appear) dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
   add_frame_text(dl, k);
   return dl;
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "compose/frame_layout.hpp"
@@ -30,9 +31,11 @@ class FrameBuilder {
   float font_px() const { return world_.font_px(); }
   /// The frame's layout (decided once, for every frame).
   const FramePlan& plan() const { return plan_; }
+  /// The captions frame k shows (index into the scene's captions) and their opacity, > 0.
+  std::vector<std::pair<std::size_t, float>> captions_at(long k) const;
 
  private:
-  viz::View view_at(std::size_t i, long k) const;
+  viz::View view_at(std::size_t i, long k, std::vector<std::string>& notes) const;
   void add_frame_text(viz::DrawList& dl, long k) const;
   bool title_card(viz::DrawList& dl, long k) const;
   std::string legend() const;
@@ -44,7 +47,6 @@ class FrameBuilder {
   PanelContext context_;
   std::vector<std::unique_ptr<Panel>> panels_;
   std::vector<std::string> titles_;
-  std::vector<std::vector<viz::KeyEntry>> keys_;  // per view, drawn in its key strip
   FramePlan plan_;
 };
 

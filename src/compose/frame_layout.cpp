@@ -20,9 +20,7 @@ std::string px(float v) {
   return s;
 }
 
-std::string view_name(std::size_t i, const ViewNeeds& v) {
-  return "view " + std::to_string(i) + (v.title.empty() ? "" : " ('" + v.title + "')");
-}
+std::string view_name(std::size_t i, const ViewNeeds& v) { return compose::view_name(i, v.kind, v.title); }
 
 // The caption strip: as tall as the longest caption wraps (viz::caption_items
 // places each inside it), the speed badge at its right.
@@ -56,7 +54,7 @@ void plan_legend(const FrameNeeds& n, FramePlan& p) {
   p.legend = {0, bottom - h, static_cast<float>(n.width), bottom};
 }
 
-// The views' area: the frame less the caption and legend strips.
+// The views' area: the frame less the caption, legend and frame-key strips.
 viz::Box views_area(const FrameNeeds& n, const FramePlan& p) {
   viz::Box a{0, 0, static_cast<float>(n.width), static_cast<float>(n.height)};
   if (p.captions.y1 > p.captions.y0) {
@@ -64,14 +62,79 @@ viz::Box views_area(const FrameNeeds& n, const FramePlan& p) {
     else a.y1 = p.captions.y0;
   }
   if (p.legend.y1 > p.legend.y0) a.y1 = std::min(a.y1, p.legend.y0);
+  if (p.frame_key_box.y1 > p.frame_key_box.y0) a.y1 = std::min(a.y1, p.frame_key_box.y0);
   return a;
+}
+
+bool has_entry(const std::vector<viz::KeyEntry>& key, const viz::KeyEntry& e) {
+  return std::any_of(key.begin(), key.end(), [&](const viz::KeyEntry& x) { return viz::same_entry(x, e); });
+}
+
+// When a view's key only repeats entries other views show too (three momentum
+// spheres side by side), the frame gets one key with every view's entries,
+// like a figure's legend, and the views none: a colour means one thing
+// throughout, and no view gives its width to a copy. Returns each view's own key.
+std::vector<std::vector<viz::KeyEntry>> split_keys(const FrameNeeds& n, FramePlan& p) {
+  std::vector<std::vector<viz::KeyEntry>> own;
+  for (const ViewNeeds& v : n.views) own.push_back(v.key);
+  const auto shown_elsewhere = [&](std::size_t i, const viz::KeyEntry& e) {
+    for (std::size_t j = 0; j < n.views.size(); ++j)
+      if (j != i && has_entry(n.views[j].key, e)) return true;
+    return false;
+  };
+  bool repeated = false;
+  for (std::size_t i = 0; i < n.views.size() && !repeated; ++i)
+    repeated = !n.views[i].key.empty() && std::all_of(n.views[i].key.begin(), n.views[i].key.end(),
+                                                      [&](const viz::KeyEntry& e) { return shown_elsewhere(i, e); });
+  if (!repeated) return own;
+  for (std::vector<viz::KeyEntry>& key : own) {
+    for (const viz::KeyEntry& e : key)
+      if (!has_entry(p.frame_key, e)) p.frame_key.push_back(e);
+    key.clear();
+  }
+  return own;
+}
+
+// The frame key's strip: its rows across the frame, above the legend and captions.
+void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
+  if (p.frame_key.empty()) return;
+  p.frame_key_px = viz::text_px(viz::TextRole::key, n.height);
+  if (p.frame_key_px < viz::kMinKeyPx) {
+    p.notes.push_back("frame key left out: its text would be " + px(p.frame_key_px) + " high, under the " +
+                      px(viz::kMinKeyPx) + " a key needs to be read");
+    p.frame_key.clear();
+    return;
+  }
+  const float pad = 0.5f * p.frame_key_px;
+  const glm::vec2 size = viz::key_rows(p.frame_key, p.frame_key_px, static_cast<float>(n.width) - 2 * pad).size;
+  float bottom = static_cast<float>(n.height);
+  if (p.captions.y1 > p.captions.y0 && p.captions.y0 > 0) bottom = p.captions.y0;
+  if (p.legend.y1 > p.legend.y0) bottom = std::min(bottom, p.legend.y0);
+  p.frame_key_box = {0, bottom - std::ceil(size.y + 2 * pad), static_cast<float>(n.width), bottom};
+}
+
+// The extent the declared viewports cover together, x0, y0, x1, y1 (the unit square when any view has none).
+std::array<double, 4> declared_extent(const FrameNeeds& n) {
+  std::array<double, 4> e{1, 1, 0, 0};
+  for (const ViewNeeds& v : n.views) {
+    if (!v.viewport) return {0, 0, 1, 1};
+    const auto& f = *v.viewport;
+    e = {std::min(e[0], f[0]), std::min(e[1], f[1]), std::max(e[2], f[0] + f[2]), std::max(e[3], f[1] + f[3])};
+  }
+  return e[2] > e[0] && e[3] > e[1] ? e : std::array<double, 4>{0, 0, 1, 1};
 }
 
 glm::dvec4 view_fractions(const FrameNeeds& n, const viz::Box& area, std::size_t i, int count) {
   const double W = n.width, H = n.height, aw = area.x1 - area.x0, ah = area.y1 - area.y0;
   std::array<double, 4> f;
   if (n.views[i].viewport) {
-    f = *n.views[i].viewport;
+    // Declared viewports are stretched together to fill the views' area: a
+    // band they leave free at its edges (once kept for the captions, which now
+    // have their own strip) would stay empty.
+    const std::array<double, 4> e = declared_extent(n);
+    const auto& d = *n.views[i].viewport;
+    const double sx = 1 / (e[2] - e[0]), sy = 1 / (e[3] - e[1]);
+    f = {(d[0] - e[0]) * sx, (d[1] - e[1]) * sy, d[2] * sx, d[3] * sy};
   } else {
     const int cols = std::max(1, std::min(n.columns, count)), rows = (count + cols - 1) / cols;
     const int c = static_cast<int>(i) % cols, r = static_cast<int>(i) / cols;
@@ -101,14 +164,15 @@ void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float p
   const float w = static_cast<float>(vp.width), h = static_cast<float>(vp.height);
   const float side = v.edge_to_edge ? 0.0f : pad;
   vp.content = {side, top, w - side, h - side};
-  if (v.key.empty()) return;
+  if (vp.key.empty()) return;
   vp.key_px = viz::text_px(viz::TextRole::key, frame_h);
   if (vp.key_px < viz::kMinKeyPx) {
-    notes.push_back(view_name(i, v) + ": key left out in every frame: its text would be " + px(vp.key_px) +
+    notes.push_back(view_name(i, v) + ": key left out: its text would be " + px(vp.key_px) +
                     " high, under the " + px(viz::kMinKeyPx) + " a key needs to be read");
+    vp.key.clear();
     return;
   }
-  const glm::vec2 ks = viz::key_size(v.key, vp.key_px);
+  const glm::vec2 ks = viz::key_size(vp.key, vp.key_px);
   const float beside_w = w - ks.x - 3 * pad, room_h = h - top - pad;
   if (ks.y <= room_h && beside_w >= kMinContentShare * w) {
     vp.key_at = glm::vec2(w - pad - ks.x, top);
@@ -121,7 +185,8 @@ void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float p
     vp.content.y1 = vp.key_at->y - pad;
     return;
   }
-  notes.push_back(view_name(i, v) + ": key left out in every frame: it is " + px(ks.x) + " × " + px(ks.y) +
+  vp.key.clear();
+  notes.push_back(view_name(i, v) + ": key left out: it is " + px(ks.x) + " × " + px(ks.y) +
                   "; beside the content it would leave " + px(std::max(0.0f, beside_w)) + " of the view's " + px(w) +
                   " width, below it " + px(std::max(0.0f, below_h)) + " of its " + px(h - top) +
                   " height (a key needs the content to keep " + std::to_string(int(kMinContentShare * 100)) + " %)");
@@ -129,15 +194,22 @@ void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float p
 
 }  // namespace
 
+std::string view_name(std::size_t i, const std::string& kind, const std::string& title) {
+  return "view " + std::to_string(i) + " (" + kind + (title.empty() ? "" : ", '" + title + "'") + ")";
+}
+
 FramePlan plan_frame(const FrameNeeds& n) {
   FramePlan p;
   plan_captions(n, p);
   plan_legend(n, p);
+  std::vector<std::vector<viz::KeyEntry>> keys = split_keys(n, p);
+  plan_frame_key(n, p);
   const viz::Box area = views_area(n, p);
   const int count = static_cast<int>(n.views.size());
   const float pad = 0.5f * viz::text_px(viz::TextRole::key, n.height);
   for (std::size_t i = 0; i < n.views.size(); ++i) {
     ViewPlan vp;
+    vp.key = std::move(keys[i]);
     vp.viewport = view_fractions(n, area, i, count);
     viz::View probe;
     probe.viewport = vp.viewport;

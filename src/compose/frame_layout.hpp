@@ -21,6 +21,7 @@ namespace tumble::compose {
 /// What the layout needs to know of one view.
 struct ViewNeeds {
   std::optional<std::array<double, 4>> viewport;  ///< x, y, w, h: fractions of the views' area; none: a grid cell
+  std::string kind;                                ///< its kind's name ("world", "plot", ...), for notes
   std::string title;
   int overlay_lines = 0;                           ///< lines under the title (the overlay)
   std::vector<viz::KeyEntry> key;                  ///< its key (none: no key strip)
@@ -49,6 +50,7 @@ struct ViewPlan {
   float title_px = 0;
   float overlay_y = 0, overlay_px = 0;      ///< the overlay lines' top, view px, and size
   viz::Box content;                         ///< view px
+  std::vector<viz::KeyEntry> key;           ///< what its key strip holds (none: the frame's key has it)
   std::optional<glm::vec2> key_at;          ///< the key backdrop's top-left, view px (none: not drawn)
   float key_px = 0;
 };
@@ -60,9 +62,17 @@ struct FramePlan {
   float badge_side = 0;     ///< px the captions keep free at each side for the speed badge
   viz::Box legend;          ///< frame px (zero height: none)
   float legend_px = 0;
+  /// One key for the whole frame, in rows across its own strip above the
+  /// captions, when views would repeat each other's entries (zero height: none).
+  std::vector<viz::KeyEntry> frame_key;
+  viz::Box frame_key_box;   ///< frame px
+  float frame_key_px = 0;
   std::vector<std::string> notes;  ///< what was left out, where and why
 };
 
 FramePlan plan_frame(const FrameNeeds& needs);
+
+/// How notes name view i: "view 1 (momentum_sphere, 'Π on the sphere')".
+std::string view_name(std::size_t i, const std::string& kind, const std::string& title);
 
 }  // namespace tumble::compose

@@ -162,7 +162,10 @@ std::vector<LayoutItem> layout_items(const viz::DrawList& dl, int frame_w, int f
   }
   add_texts(dl.texts, "frame", {0, 0, frame_w, frame_h}, order, out, order_of, occluders);
   for (const std::string& note : dl.notes) {
-    out.push_back({"frame", note.find("key") != std::string::npos ? "key" : "layout", "note", {}, false, note, 0, {}});
+    const char* what = note.find(": label '") != std::string::npos ? "label"
+                       : note.find("key") != std::string::npos   ? "key"
+                                                                 : "layout";
+    out.push_back({"frame", what, "note", {}, false, note, 0, {}});
     order_of.push_back(0);
   }
   // Whatever a later, opaque enough backdrop (or, for markers and curves, text) covers by half is hidden.

@@ -25,7 +25,7 @@ std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vecto
   std::vector<viz::BodySnapshot> out;
   for (size_t i = 0; i < s.bodies.size() && i < states.size(); ++i)
     out.push_back({&s.bodies[i].model, &s.bodies[i].cloud, states[i], rgba(s.bodies[i].color, 0.38f),
-                   looks ? &(*looks)[i] : nullptr});
+                   looks ? &(*looks)[i] : nullptr, s.bodies[i].label});
   return out;
 }
 
@@ -39,8 +39,9 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const
     glm::vec2 px;
     const auto box = viz::screen_box(v.camera, fw, fh, viz::box_corners(viz::body_box(b, draw)));
     if (!box || !viz::project_to_viewport(v.camera, width_px, height_px, above, px)) continue;  // none for what is out of view
-    const float x = viz::centred_x(b.model->name, font_px * 1.1f, px.x);
-    v.texts.push_back({b.model->name, {x, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
+    const std::string& shown = b.label.empty() ? b.model->name : b.label;  // the display name
+    const float x = viz::centred_x(shown, font_px * 1.1f, px.x);
+    v.texts.push_back({shown, {x, px.y - 1.2f * font_px}, font_px * 1.1f, {0.1f, 0.1f, 0.14f, 1.0f},
                        "label:" + b.model->name});
     v.texts.back().subject_px = {box->x0, box->y0, box->x1, box->y1};
   }
@@ -54,6 +55,12 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
     look.surfaces.push_back(viz::make_surface(m.surface));
     look.surface_colors.push_back(rgba(m.color, 1.0f));
   }
+  for (const scene::ShapeSource& sh : b.shapes) {
+    look.surfaces.push_back(viz::solid_surface(sh.shape));
+    look.surface_colors.push_back(rgba(sh.color, 1.0f));
+  }
+  if (!look.surfaces.empty())
+    look.surface_box = viz::principal_extent(look.surfaces, b.model.cloud_from_principal.toRotationMatrix(), b.model.com_cloud);
   if (!particles) return look;
   std::vector<viz::Color> colors;
   colors.reserve(b.cloud.size());
@@ -128,6 +135,31 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& r
   return camera;
 }
 
+viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& runs) {
+  // Fixed for the whole video: below the lowest any body comes, centred
+  // under where the bodies go, wide enough for all of it.
+  double zmin = 1e300, size = 0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  for (const scene::Run& r : runs)
+    for (const auto& states : r.frames)
+      for (std::size_t i = 0; i < states.size() && i < s.bodies.size(); ++i) {
+        if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
+        const double rad = viz::box_radius(s.bodies[i].model);
+        zmin = std::min(zmin, states[i].c.z() - rad);
+        lo = lo.cwiseMin(states[i].c), hi = hi.cwiseMax(states[i].c);
+        size = std::max(size, rad);
+      }
+  if (zmin > 1e299) return {{0, 0, 0}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}};
+  // About ten squares across where the bodies go: 1, 2 or 5 times a power of ten, m.
+  const double reach = 0.5 * (hi - lo).head<2>().norm() + 4 * size;
+  const double rough = reach / 5, decade = std::pow(10.0, std::floor(std::log10(std::max(rough, 1e-6))));
+  const double spacing = rough >= 5 * decade ? 5 * decade : rough >= 2 * decade ? 2 * decade : decade;
+  const int half = static_cast<int>(std::clamp(std::ceil(3 * reach / spacing), 8.0, 40.0));  // it fades out at its rim
+  const Eigen::Vector3d mid = 0.5 * (lo + hi);
+  return {{spacing * std::round(mid.x() / spacing), spacing * std::round(mid.y() / spacing), zmin}, spacing, half,
+          {0.5f, 0.52f, 0.58f, 0.5f}};
+}
+
 WorldViews::WorldViews(const scene::Scene& s, const std::vector<scene::Run>& runs, const scene::FrameClock& clock,
                        float font_px)
     : scene_(s), runs_(runs), clock_(clock), font_px_(font_px), draw_(s.render.draw) {
@@ -138,6 +170,7 @@ WorldViews::WorldViews(const scene::Scene& s, const std::vector<scene::Run>& run
     for (size_t r = 0; r < runs.size(); ++r)
       for (size_t j = 0; j < runs[r].path.size(); ++j)
         trails_[r].record(runs[r].path_t[j], snapshots(s, runs[r].path[j]));
+  grid_ = ground_grid(s, runs);
 }
 
 viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
@@ -156,11 +189,7 @@ viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int
     v.camera.target = c;
   }
   viz::add_bodies(v, snaps, draw_, only ? nullptr : &trails_[r], clock_.time(kk));
-  if (draw_.grid) {
-    double zmin = 1e300;
-    for (const auto& b : snaps) zmin = std::min(zmin, b.state.c.z() - viz::box_radius(*b.model));
-    v.grids.push_back({{v.camera.target.x, v.camera.target.y, zmin}, 0.5, 20, {0.5f, 0.52f, 0.58f, 0.5f}});
-  }
+  if (draw_.grid) v.grids.push_back(grid_);
   if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);
   return v;
 }

@@ -50,6 +50,10 @@ class WorldViews {
   viz::DrawOptions draw_;
   std::vector<viz::TrailRecorder> trails_;  // per run, fed with every frame from 0
   std::vector<viz::BodyLook> looks_;        // per body: surfaces, visible particles
+  viz::GridItem grid_{};                    // the ground, fixed for the whole video
 };
+
+/// The ground grid ([draw] grid): a fixed plane under the lowest point any body reaches in `runs`.
+viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& runs);
 
 }  // namespace tumble::compose

@@ -68,8 +68,7 @@ class Renderer::Impl {
   void draw_background(const glm::vec3& background);
   void draw_separators(const std::vector<PixelRect>& rects, const glm::vec3& color);
   void draw_meshes(const ViewBatches& batches, const CameraMatrices& cam, bool ghost_arrows);
-  void draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
-                 const PixelRect& rect);
+  void draw_text(const std::vector<viz::TextItem>& items, const PixelRect& rect);
   void set_viewport(const PixelRect& rect);
   void draw(const viz::DrawList& frame);
   void gl_fxaa_pass();
@@ -243,7 +242,7 @@ void Renderer::Impl::draw(const viz::DrawList& frame) {
   set_viewport(full);
   if (count == 0) draw_background(background);
   draw_separators(rects, background * 0.82f);
-  draw_text(frame.texts, {}, full);
+  draw_text(frame.texts, full);
   gl_.Disable(GL_SCISSOR_TEST);
   if (fxaa_ && paths_.gl_fxaa) gl_fxaa_pass();
 }
@@ -291,7 +290,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   draw_background(background);
   // The 3D passes see and are clipped to the content rectangle; the text the whole view.
   const PixelRect content = compose::content_rect(view, rect);
-  if (content.width <= 0 || content.height <= 0) return draw_text(view.texts, view.label, rect);
+  if (content.width <= 0 || content.height <= 0) return draw_text(view.texts, rect);
   set_viewport(content);
 
   const CameraMatrices cam = compose::camera_matrices(view.camera, content.aspect());
@@ -326,7 +325,7 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
 
   gl_.Disable(GL_DEPTH_TEST);
   set_viewport(rect);
-  draw_text(view.texts, view.label, rect);
+  draw_text(view.texts, rect);
 }
 
 void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrices& cam, bool ghost_arrows) {
@@ -382,13 +381,8 @@ void Renderer::Impl::draw_meshes(const ViewBatches& batches, const CameraMatrice
   gl_.DepthMask(GL_TRUE);
 }
 
-void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const std::string& label,
-                         const PixelRect& rect) {
+void Renderer::Impl::draw_text(const std::vector<viz::TextItem>& items, const PixelRect& rect) {
   std::vector<TextVertex> quads;
-  if (!label.empty()) {
-    const viz::LabelMetrics lm = viz::view_label_metrics(static_cast<float>(rect.height));
-    font_.layout(label, {lm.pad_px, lm.top_px}, lm.size_px, {0.13f, 0.14f, 0.18f, 0.95f}, quads);
-  }
   for (const viz::TextItem& t : items) {
     if (t.backdrop.a > 0) font_.rect(t.backdrop_px, t.backdrop, quads);
     const float size = compose::fitted_text_px(t, static_cast<float>(rect.width), viz::text_width(t.text, t.size_px));

@@ -47,9 +47,9 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  /// Renders all views (grid of `columns`, row-major, each view's label in
-  /// its top-left corner) plus the frame overlay texts. Makes the context
-  /// current on the calling thread.
+  /// Renders all views (grid of `columns`, row-major; each its 3D items in its
+  /// content rectangle, then its texts) plus the frame overlay texts. Makes
+  /// the context current on the calling thread.
   io::Image render(const viz::DrawList& frame);
   /// Same, into `out`, reusing its pixel storage (cheaper in a frame loop).
   void render(const viz::DrawList& frame, io::Image& out);

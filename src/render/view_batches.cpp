@@ -39,9 +39,10 @@ void add_box(const viz::BoxItem& b, ViewBatches& out) {
   const glm::dmat3 axes = b.rotation * glm::dmat3(glm::dvec3(b.half_extents.x, 0, 0),
                                                   glm::dvec3(0, b.half_extents.y, 0),
                                                   glm::dvec3(0, 0, b.half_extents.z));
-  out.boxes.push_back({glm::mat4(glm::dmat4(glm::dvec4(axes[0], 0), glm::dvec4(axes[1], 0),
-                                            glm::dvec4(axes[2], 0), glm::dvec4(b.center, 1))),
-                       b.face});
+  if (b.face.a > 0)  // an outline has no faces
+    out.boxes.push_back({glm::mat4(glm::dmat4(glm::dvec4(axes[0], 0), glm::dvec4(axes[1], 0),
+                                              glm::dvec4(axes[2], 0), glm::dvec4(b.center, 1))),
+                         b.face});
   // Corner k has sign bits (x, y, z) = bits 0, 1, 2; edges join corners that
   // differ in exactly one bit.
   auto corner = [&](int k) {

@@ -7,6 +7,7 @@
 #include "io/atomic_file.hpp"
 #include "compose/layout_report.hpp"
 #include "compose/frame_builder.hpp"
+#include "compose/layout_notes.hpp"
 #include "run/frame_range.hpp"
 
 namespace tumble::run {
@@ -18,10 +19,14 @@ LayoutSummary write_layout_report(const scene::Scene& s, const std::string& fram
   const std::vector<scene::Run> runs = scene::simulate_runs(s, count, out.fps);
   const compose::FrameBuilder builder(s, runs, out.fps, out.width, out.height);
   std::ostringstream text;
-  for (long k = first; k <= last; ++k)
-    compose::write_layout(text, k, compose::layout_items(builder.build(k), out.width, out.height));
+  compose::LayoutNotes notes;
+  for (long k = first; k <= last; ++k) {
+    const viz::DrawList dl = builder.build(k);
+    notes.add(k, dl.notes);
+    compose::write_layout(text, k, compose::layout_items(dl, out.width, out.height));
+  }
   io::atomic_write_file(path, text.str());
-  return {first, last, count, out.width, out.height};
+  return {first, last, count, out.width, out.height, notes.lines()};
 }
 
 }  // namespace tumble::run

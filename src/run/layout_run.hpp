@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -13,6 +14,7 @@ namespace tumble::run {
 struct LayoutSummary {
   long first = 0, last = 0, count = 0;
   int width = 0, height = 0;
+  std::vector<std::string> notes;  ///< what was left out, of which frames, and why (compose::LayoutNotes)
 };
 
 /// Simulates `s` and writes the layout report (JSON Lines: frame, view, name,

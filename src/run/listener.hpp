@@ -37,3 +37,14 @@ struct Outcome {
 std::string quote_arg(const std::string& a);
 
 }  // namespace tumble::run
+
+namespace tumble::compose {
+class LayoutNotes;
+}
+
+namespace tumble::run {
+
+/// The layout's notes (what was left out of which frames, and why), each a "warning: " note.
+void warn_layout(const compose::LayoutNotes& notes, Listener& l);
+
+}  // namespace tumble::run

@@ -20,6 +20,7 @@
 #include "render/worker_threads.hpp"
 #include "run/manifest_parts.hpp"
 #include "compose/frame_builder.hpp"
+#include "compose/layout_notes.hpp"
 #include "run/frame_range.hpp"
 #include "run/render_output.hpp"
 #include "run/render_stream.hpp"
@@ -34,6 +35,10 @@ std::string quote_arg(const std::string& a) {
   std::string q = "'";
   for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+}
+
+void warn_layout(const compose::LayoutNotes& notes, Listener& l) {
+  for (const std::string& line : notes.lines()) l.note("warning: " + line);
 }
 
 namespace {
@@ -75,6 +80,7 @@ struct Job {
   Existing existing;
   Manifest man;
   std::unique_ptr<io::FolderLock> lock;  ///< held from open_folder to the end
+  compose::LayoutNotes notes;            ///< what the layout left out of the frames drawn
   fs::path man_path() const { return req.dir / own; }
   void save() const { io::atomic_write_file(man_path(), man.json()); }
   /// "tumble render SCENE -o DIR" + `tail`: how to run this again.
@@ -209,7 +215,9 @@ Drawn draw_frames(Job& j, const compose::FrameBuilder& builder, render::Renderer
       if (j.resume && kept(k)) {
         ++d.skipped;  // written whole by an earlier run (rename is atomic) and unchanged since
       } else {
-        if (renderer.render_overlapped(builder.build(k), k, raw)) submit();
+        const viz::DrawList dl = builder.build(k);
+        j.notes.add(k, dl.notes);
+        if (renderer.render_overlapped(dl, k, raw)) submit();
         ++d.drawn;
       }
       j.l.advance(k - j.first + 1);
@@ -225,6 +233,7 @@ Drawn draw_frames(Job& j, const compose::FrameBuilder& builder, render::Renderer
     throw io::IoError(e.what());
   }
   j.l.end();
+  warn_layout(j.notes, j.l);
   if (d.rejected > 0)
     j.l.note(std::to_string(d.rejected) + " frame(s) on disk failed their check (truncated, changed, a link, or not "
              "recorded in " + io::kFrameSumsName + ") and were drawn again");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <csignal>
 
+#include "compose/layout_notes.hpp"
 #include "io/atomic_file.hpp"
 #include "render/frame_encoder.hpp"
 #include "run/video_stream.hpp"
@@ -11,7 +12,8 @@
 namespace tumble::run {
 
 Streamed stream_frames(render::Renderer& renderer, const compose::FrameBuilder& builder, long count, VideoStream& stream,
-                       int jobs, const StopPoll& stop, const std::function<void(long)>& advance) {
+                       int jobs, const StopPoll& stop, const std::function<void(long)>& advance,
+                       compose::LayoutNotes* notes) {
   Streamed s;
   // The sink polls `stop` while ffmpeg's pipe is full: once a signal came,
   // every write returns at once, so the queue drains and the loop sees it.
@@ -25,7 +27,9 @@ Streamed stream_frames(render::Renderer& renderer, const compose::FrameBuilder& 
   };
   for (; s.frames < count; ++s.frames) {
     if ((s.signal = stop ? stop() : 0) != 0 || stream.broken()) break;
-    if (renderer.render_overlapped(builder.build(s.frames), s.frames, raw)) submit();
+    const viz::DrawList dl = builder.build(s.frames);
+    if (notes) notes->add(s.frames, dl.notes);
+    if (renderer.render_overlapped(dl, s.frames, raw)) submit();
     if (advance) advance(s.frames + 1);
   }
   if (renderer.finish_overlapped(raw)) submit();  // on a GPU: the last frame read back
@@ -51,9 +55,11 @@ Outcome stream_render(const StreamJob& j) {
     return {Outcome::failed, 0, {}};
   }
   l.begin(count);
-  const Streamed s =
-      stream_frames(j.renderer, j.builder, std::min(count, j.good), stream, j.jobs, stop, [&](long n) { l.advance(n); });
+  compose::LayoutNotes notes;
+  const Streamed s = stream_frames(j.renderer, j.builder, std::min(count, j.good), stream, j.jobs, stop,
+                                   [&](long n) { l.advance(n); }, &notes);
   l.end();
+  warn_layout(notes, l);
   const long k = s.frames;
   const VideoResult v = s.signal != 0 ? stream.abort(s.signal) : stream.finish(stop);
   if (!v.ok()) {

@@ -42,9 +42,11 @@ struct Streamed {
 /// Draws frames 0..count-1 into `stream` until `stop` answers or ffmpeg stops
 /// reading. The drawing thread only draws and reads back; `jobs` workers
 /// (render::FrameEncoder) finish the frames (FXAA) meanwhile, and the stream
-/// takes them strictly in order. `advance` is told each frame drawn.
+/// takes them strictly in order. `advance` is told each frame drawn, `notes`
+/// (when given) each frame's layout notes.
 Streamed stream_frames(render::Renderer& renderer, const compose::FrameBuilder& builder, long count, VideoStream& stream,
-                       int jobs, const StopPoll& stop, const std::function<void(long)>& advance = {});
+                       int jobs, const StopPoll& stop, const std::function<void(long)>& advance = {},
+                       compose::LayoutNotes* notes = nullptr);
 
 /// Draws frames 0..count-1 into the video: done, failed (ffmpeg missing or
 /// failed), diverged (the video holds the frames before) or interrupted.

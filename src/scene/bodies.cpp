@@ -34,9 +34,12 @@ int read_placed(TableReader& r, LoadContext& ctx, const Eigen::Quaterniond& q, c
                 const std::optional<Eigen::Vector3d>& color, Body& b) {
   ParticleCloud cloud;
   std::vector<MeshSource> meshes;
+  std::vector<ShapeSource> shapes;
   ctx.meshes = &meshes;
+  ctx.shapes = &shapes;
   const int sources = read_cloud_sources(r, ctx, Eigen::Vector3d::Zero(), cloud);
   ctx.meshes = nullptr;
+  ctx.shapes = nullptr;
   const Eigen::Matrix3d R = q.toRotationMatrix();
   const std::size_t begin = b.cloud.size();
   b.cloud.reserve(begin + cloud.size());
@@ -51,6 +54,12 @@ int read_placed(TableReader& r, LoadContext& ctx, const Eigen::Quaterniond& q, c
     if (color) m.color = *color;
     else m.color = Eigen::Vector3d::Constant(-1);  // the body's, set once it is read
     b.meshes.push_back(std::move(m));
+  }
+  for (ShapeSource& sh : shapes) {
+    sh.shape.rotation = R * sh.shape.rotation;
+    sh.shape.offset = R * sh.shape.offset + offset;
+    sh.color = color ? *color : Eigen::Vector3d::Constant(-1);  // the body's, set once it is read
+    b.shapes.push_back(sh);
   }
   return sources;
 }
@@ -132,6 +141,10 @@ void read_body_name(TableReader& r, std::size_t index, LoadContext& ctx, Body& b
     r.error("name", "duplicate body name \"" + b.name + "\"; names must be unique");
   }
   ctx.body_names.push_back(b.name);
+  // What people read: any text but line breaks, so "tennis racket" may name the body "racket".
+  b.label = r.string("display_name").value_or(b.name);
+  if (r.has("display_name") && (b.label.empty() || b.label.size() > 64 || b.label.find('\n') != std::string::npos))
+    r.error("display_name", "expected 1-64 characters on one line, found " + quote_token(b.label));
 }
 
 /// The body's particles: its own (particles, shape, cloud) and its [[bodies.parts]].
@@ -198,7 +211,7 @@ bool complete_body(const toml::table& t, const TableReader& r, LoadContext& ctx,
 
 void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene& scene) {
   const std::size_t errors_before = ctx.diag.error_count();
-  std::vector<std::string_view> keys = {"name",        "particles", "shape",      "cloud",       "parts",
+  std::vector<std::string_view> keys = {"name",        "display_name", "particles", "shape",      "cloud",       "parts",
                                         "position",    "orientation", "velocity", "omega_body", "omega_world",
                                         "forces"};
   for (const ForceKind& kind : force_kinds()) keys.push_back(kind.key);
@@ -214,6 +227,8 @@ void read_body(const toml::table& t, std::size_t index, LoadContext& ctx, Scene&
   b.color = r.vec3("color", Range::closed(0, 1)).value_or(Eigen::Vector3d(pal[0], pal[1], pal[2]));
   for (MeshSource& m : b.meshes)
     if (m.color.x() < 0) m.color = b.color;
+  for (ShapeSource& sh : b.shapes)
+    if (sh.color.x() < 0) sh.color = b.color;
 
   if (ctx.diag.error_count() != errors_before) return;  // the body is broken; keep collecting others
   if (complete_body(t, r, ctx, forces, b)) scene.bodies.push_back(std::move(b));

@@ -125,23 +125,26 @@ Eigen::Vector3i box_resolution(ShapeFields& f) {
   return n;
 }
 
-ParticleCloud box_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+ParticleCloud box_shape(ShapeFields& f, LoadContext& ctx, double mass, SolidShape& solid) {
   const Eigen::Vector3d size = f.require_vec("size");
+  solid = {SolidShape::Kind::box, size};
   const Eigen::Vector3i n = box_resolution(f);
   if (!f.ok || !reserve(ctx, f.s, "resolution", double(n.x()) * n.y() * n.z())) return {};
   return make_box(size, n, mass);
 }
 
-ParticleCloud ellipsoid_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+ParticleCloud ellipsoid_shape(ShapeFields& f, LoadContext& ctx, double mass, SolidShape& solid) {
   const Eigen::Vector3d semi = f.require_vec("semi_axes");
+  solid = {SolidShape::Kind::ellipsoid, semi};
   const int n = static_cast<int>(f.resolution(15, 2, 1000));
   if (!f.ok || !reserve(ctx, f.s, "resolution", 0.5236 * n * n * n)) return {};
   return make_ellipsoid(semi, n, mass);
 }
 
-ParticleCloud cylinder_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+ParticleCloud cylinder_shape(ShapeFields& f, LoadContext& ctx, double mass, SolidShape& solid) {
   const double radius = f.require("radius", Range::positive());
   const double length = f.require("length", Range::positive());
+  solid = {SolidShape::Kind::cylinder, {radius, radius, length}};
   const int n = static_cast<int>(f.resolution(15, 2, 10000));
   if (!f.ok) return {};
   const double nz = std::max(1.0, std::round(n * length / (2 * radius)));
@@ -157,10 +160,11 @@ ParticleCloud cylinder_shape(ShapeFields& f, LoadContext& ctx, double mass) {
   return make_cylinder(radius, length, n, mass);
 }
 
-ParticleCloud t_handle_shape(ShapeFields& f, LoadContext& ctx, double mass) {
+ParticleCloud t_handle_shape(ShapeFields& f, LoadContext& ctx, double mass, SolidShape& solid) {
   const double handle = f.require("handle_length", Range::positive());
   const double stem = f.require("stem_length", Range::positive());
   const double thick = f.require("thickness", Range::positive());
+  solid = {SolidShape::Kind::t_handle, {handle, stem, thick}};
   if (!f.s.has("resolution")) {
     f.s.error("resolution", "missing; a t_handle needs 'resolution' (particles per metre, an integer >= 1)");
     f.ok = false;
@@ -173,15 +177,15 @@ ParticleCloud t_handle_shape(ShapeFields& f, LoadContext& ctx, double mass) {
   return make_t_handle(handle, stem, thick, static_cast<int>(per_m), mass);
 }
 
-ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& ctx, bool& ok) {
+ParticleCloud make_shape(const std::string& type, TableReader& s, LoadContext& ctx, bool& ok, SolidShape& solid) {
   ShapeFields f{type, s, ok};
   const std::optional<double> mass_read = mass_of(s);
   if (!mass_read) ok = false;
   const double mass = mass_read.value_or(1.0);  // used only when ok
-  if (type == "box") return box_shape(f, ctx, mass);
-  if (type == "ellipsoid") return ellipsoid_shape(f, ctx, mass);
-  if (type == "cylinder") return cylinder_shape(f, ctx, mass);
-  return t_handle_shape(f, ctx, mass);
+  if (type == "box") return box_shape(f, ctx, mass, solid);
+  if (type == "ellipsoid") return ellipsoid_shape(f, ctx, mass, solid);
+  if (type == "cylinder") return cylinder_shape(f, ctx, mass, solid);
+  return t_handle_shape(f, ctx, mass, solid);
 }
 
 void read_shape(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset, ParticleCloud& out) {
@@ -209,8 +213,11 @@ void read_shape(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& offset,
   TableReader s(*t, path, ctx.diag, keys);
   bool ok = true;
   try {
-    const ParticleCloud c = make_shape(type, s, ctx, ok);
+    SolidShape solid;
+    const ParticleCloud c = make_shape(type, s, ctx, ok, solid);
     if (ok) append_cloud(out, c, offset);
+    solid.offset = offset;
+    if (ok && ctx.shapes) ctx.shapes->push_back({solid});
   } catch (const InputError& e) {  // generator checks we did not anticipate
     ctx.diag.error(t->source(), path, e.what());
   }

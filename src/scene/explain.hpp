@@ -15,6 +15,13 @@ struct SlowMotion {
   double time_scale = 0.25;   ///< simulated s per video s inside [start, end]
 };
 
+/// Reading time a caption needs at video speed, s a word (about 200 words a
+/// minute, read aloud with a pause for the picture).
+inline constexpr double kSecondsPerWord = 0.3;
+
+/// Where a caption sits: centred in a strip at the frame's bottom (default) or top.
+enum class CaptionPosition { bottom, top };
+
 /// Text shown while the simulated time is in [start, end], fading in and out.
 /// A scene may anchor start/end to flips (scene/events.hpp): they are resolved
 /// at load, and `start_text`/`end_text` keep what the file said.
@@ -23,6 +30,15 @@ struct Caption {
   std::string text;
   std::string start_text, end_text;  ///< as written ("flip 1 - 0.2", "1.5")
   std::size_t body = 0;              ///< the body whose flips anchor it
+  CaptionPosition position = CaptionPosition::bottom;
+};
+
+/// The animation stops for `hold` video s at simulated `at` (e.g. "flip 1"):
+/// its frames all show t = at (FrameClock).
+struct Hold {
+  double at = 0;              ///< simulated s
+  double hold = 2;            ///< video s
+  std::string at_text;        ///< as written
 };
 
 /// A title card on its own backdrop for the first `hold` s of video, while the
@@ -39,7 +55,10 @@ enum class ViewKind { world, body_frame, momentum_sphere, plot, poinsot };
 struct ViewCamera {
   std::optional<double> azimuth_deg, elevation_deg;  ///< degrees
   std::optional<double> distance;  ///< body_frame: body sizes; momentum_sphere: |L|; poinsot: largest semi-axes
-  std::optional<bool> follow;      ///< momentum_sphere: follow Π (default true); body_frame: turn with the body
+  std::optional<bool> follow;      ///< momentum_sphere: follow Π (default: a fixed textbook view); body_frame: turn with the body
+  /// world views only: as [camera] (m, world; degrees)
+  std::optional<std::array<double, 3>> position, target, up;
+  std::optional<double> fov_y_deg;
 };
 
 /// One `[[views]]` table.
@@ -51,6 +70,11 @@ struct ViewConfig {
   std::vector<std::string> series;  ///< plot: wbx wby wbz |w| energy_error axis1_L axis2_L axis3_L
   std::string title;                ///< drawn in the view's corner
   ViewCamera camera;
+  bool energy_ellipsoid = true;     ///< momentum_sphere: the energy ellipsoid (when it fits)
+  bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
+  std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range
+  double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
+  std::string appear_text;          ///< as written ("flip 1 - 0.5")
 };
 
 /// Names of the plot series, in the order of `plot_series_names()`.
@@ -61,6 +85,7 @@ struct ExplainConfig {
   double time_scale = 1;           ///< [output] time_scale: simulated s per video s
   std::vector<SlowMotion> slow_motion;
   std::vector<Caption> captions;
+  std::vector<Hold> holds;         ///< sorted by `at`
   TitleCard title;
   std::vector<ViewConfig> views;   ///< empty: the classic single world view (or [compare] grid)
   bool labels = false;             ///< [draw] labels: body names next to the bodies

@@ -62,11 +62,33 @@ void check_body(TableReader& r, const LoadContext& ctx, const std::string& name)
   r.error("body", msg);
 }
 
+void read_world_camera(TableReader& c, ViewConfig& v) {
+  auto triple = [&](std::string_view key) -> std::optional<std::array<double, 3>> {
+    const auto x = c.vec3(key);
+    if (!x) return std::nullopt;
+    return std::array<double, 3>{x->x(), x->y(), x->z()};
+  };
+  v.camera.position = triple("position");
+  v.camera.target = triple("target");
+  v.camera.up = triple("up");
+  v.camera.fov_y_deg = c.number("fov_y", Range::closed(1, 170));
+  if (!c.has("position")) c.error("position", "missing; a world view's camera needs position = [x, y, z] (m, world)");
+  const auto p = v.camera.position.value_or(std::array<double, 3>{});
+  const auto t = v.camera.target.value_or(std::array<double, 3>{});
+  if (v.camera.position && p == t) c.error("target", "expected a point other than the camera's position");
+  if (v.camera.up && *v.camera.up == std::array<double, 3>{}) c.error("up", "expected a non-zero direction");
+}
+
 void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   auto t = r.subtable("camera");
   if (!t) return;
-  if (v.kind == ViewKind::world || v.kind == ViewKind::plot) {
-    r.error("camera", "only body_frame, momentum_sphere and poinsot views take a camera (a world view uses [camera])");
+  if (v.kind == ViewKind::plot) {
+    r.error("camera", "a plot view has no camera");
+    return;
+  }
+  if (v.kind == ViewKind::world) {
+    TableReader c(*t, r.key_path("camera"), ctx.diag, {"position", "target", "up", "fov_y"});
+    read_world_camera(c, v);
     return;
   }
   TableReader c(*t, r.key_path("camera"), ctx.diag, {"azimuth", "elevation", "distance", "follow"});
@@ -76,10 +98,38 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   v.camera.follow = c.boolean("follow");
 }
 
+std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
+                                std::string* written = nullptr);
+
+// Keys only some kinds take: energy_ellipsoid (momentum_sphere), y_range (plot).
+void read_kind_options(TableReader& r, ViewConfig& v) {
+  if (r.has("energy_ellipsoid")) {
+    if (v.kind != ViewKind::momentum_sphere) r.error("energy_ellipsoid", "only a momentum_sphere view has an energy ellipsoid");
+    v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
+  }
+  if (const toml::node* n = r.node("y_range")) {
+    if (v.kind != ViewKind::plot) {
+      r.error("y_range", "only a plot view has a y_range");
+      return;
+    }
+    const toml::array* a = n->as_array();
+    std::optional<double> lo, hi;
+    if (a && a->size() == 2) {
+      lo = read_number(*a->get(0), r.key_path("y_range") + "[0]", Range::any(), r.diag());
+      hi = read_number(*a->get(1), r.key_path("y_range") + "[1]", Range::any(), r.diag());
+    } else {
+      r.error("y_range", "expected [low, high] in the series' units, found " + describe(*n));
+    }
+    if (lo && hi && !(*hi > *lo)) r.error("y_range", "expected low < high, found [" + format_number(*lo) + ", " + format_number(*hi) + "]");
+    else if (lo && hi) v.y_range = std::array<double, 2>{*lo, *hi};
+  }
+}
+
 void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("views", i), ctx.diag, {"kind", "viewport", "body", "series", "title", "camera"});
+    TableReader r(*list[i], indexed("views", i), ctx.diag,
+                  {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "appear", "key"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -106,7 +156,11 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     }
     if (v.kind == ViewKind::plot && v.series.empty()) v.series = {"w1", "w2", "w3"};
     read_view_camera(r, ctx, v);
+    read_kind_options(r, v);
+    v.key = r.boolean("key").value_or(true);
     if (v.kind != ViewKind::plot && r.has("series")) r.error("series", "only a plot view has series");
+    const std::size_t body = v.body.empty() || !s.find_body(v.body) ? 0 : static_cast<std::size_t>(s.find_body(v.body) - s.bodies.data());
+    v.appear = read_time(r, "appear", s, body, &v.appear_text).value_or(0);
     s.render.explain.views.push_back(std::move(v));
   }
   if (!s.render.explain.views.empty() && !s.render.compare_methods.empty())
@@ -125,7 +179,7 @@ std::size_t read_body_index(TableReader& r, const LoadContext& ctx, const Scene&
 // `key` as simulated seconds or an event of body `body` (scene/events.hpp),
 // clamped to [0, duration]; `written` gets the text as the file has it.
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
-                                std::string* written = nullptr) {
+                                std::string* written) {
   const toml::node* n = r.node(key);
   if (!n) return std::nullopt;
   const double duration = s.simulation.duration;
@@ -156,7 +210,7 @@ std::optional<double> read_time(TableReader& r, std::string_view key, const Scen
 void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("captions");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body"});
+    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body", "position"});
     Caption c;
     c.body = read_body_index(r, ctx, s);
     c.start = read_time(r, "start", s, c.body, &c.start_text).value_or(0);
@@ -170,6 +224,16 @@ void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
     } else {
       c.text = *text;
     }
+    if (auto pos = r.string("position")) {
+      if (*pos == "top") c.position = CaptionPosition::top;
+      else if (*pos != "bottom") r.error("position", "expected \"bottom\" or \"top\", found " + quote_token(*pos));
+    }
+    // The captions share one strip across the frame: they agree where it is.
+    const auto& before = s.render.explain.captions;
+    if (!before.empty() && before.front().position != c.position)
+      r.error("position", "every caption shares one strip: captions[0] puts it at the " +
+                              std::string(before.front().position == CaptionPosition::top ? "top" : "bottom") +
+                              "; give each caption the same position");
     s.render.explain.captions.push_back(std::move(c));
   }
 }
@@ -199,6 +263,23 @@ void read_slow_motion(TableReader& root, LoadContext& ctx, Scene& s) {
   std::sort(out.begin(), out.end(), [](const SlowMotion& x, const SlowMotion& y) { return x.start < y.start; });
 }
 
+void read_holds(TableReader& root, LoadContext& ctx, Scene& s) {
+  const auto list = root.tables("holds");
+  auto& out = s.render.explain.holds;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    TableReader r(*list[i], indexed("holds", i), ctx.diag, {"at", "hold", "body"});
+    Hold h;
+    const std::size_t body = read_body_index(r, ctx, s);
+    const auto at = read_time(r, "at", s, body, &h.at_text);
+    if (!at && !r.has("at")) r.error("at", std::string("missing; expected ") + kEventTimeForms);
+    h.hold = r.number("hold", Range::closed(0.1, 60)).value_or(h.hold);
+    if (!at) continue;
+    h.at = *at;
+    out.push_back(h);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Hold& x, const Hold& y) { return x.at < y.at; });
+}
+
 void read_title(TableReader& root, LoadContext& ctx, Scene& s) {
   auto t = root.subtable("title");
   if (!t) return;
@@ -218,9 +299,20 @@ void read_explain_config(TableReader& root, LoadContext& ctx, Scene& s) {
   read_views(root, ctx, s);
   read_captions(root, ctx, s);
   read_slow_motion(root, ctx, s);
+  read_holds(root, ctx, s);
   read_title(root, ctx, s);
   auto& e = s.render.explain;
-  if ((!e.slow_motion.empty() || e.title.hold > 0) && root.diag().ok() &&
+  if (!e.views.empty()) {
+    // The axis legend belongs to the classic single view; [[views]] have keys.
+    const toml::table* draw = root.subtable("draw");
+    const toml::node* legend = draw ? draw->get("legend") : nullptr;
+    if (legend && legend->value_or(false))
+      ctx.diag.error(legend->source(), "draw.legend",
+                     "a scene with [[views]] shows each view's key instead (draw.key); remove legend = true");
+    s.render.draw.legend = false;
+  }
+  if (root.diag().ok()) check_pacing(root, ctx, s);
+  if ((!e.slow_motion.empty() || e.title.hold > 0 || !e.holds.empty()) && root.diag().ok() &&
       frame_clock(s, s.render.output.fps).count() > static_cast<long>(kMaxFrames))
     root.error(e.slow_motion.empty() ? "title" : "slow_motion",
                "the slowed video exceeds the frame cap of " + std::to_string(static_cast<long>(kMaxFrames)));

@@ -15,9 +15,10 @@ namespace tumble::scene {
 
 class FrameClock {
  public:
-  /// `segments` must be sorted, disjoint, inside [0, duration] (the loader checks).
+  /// `segments` must be sorted, disjoint, inside [0, duration] (the loader
+  /// checks); `holds` sorted by simulated time (inside a segment or not).
   FrameClock(double duration, double fps, double time_scale = 1, std::vector<SlowMotion> segments = {},
-             double hold = 0);
+             double hold = 0, std::vector<Hold> holds = {});
 
   double fps() const { return fps_; }
   long count() const { return count_; }        ///< frames: 0 … ⌊τ(duration)·fps⌋
@@ -25,9 +26,13 @@ class FrameClock {
   double hold() const { return hold_; }        ///< video s of the title card before the animation
   /// Whether frame k is on the title card (before the animation starts).
   bool on_title_card(long k) const { return static_cast<double>(k) / fps_ < hold_ - 1e-9; }
-  /// Speed of frame k: simulated s per video s (the title card: 0).
+  /// Speed of frame k: simulated s per video s (the title card and a hold: 0).
   double rate(long k) const;
-  double video_time(double t) const;           ///< τ(t): video s at which simulated t is shown
+  /// Whether frame k is in a [[holds]] stop (the animation paused, after the title card).
+  bool in_hold(long k) const { return !on_title_card(k) && rate(k) == 0; }
+  double video_time(double t) const;           ///< τ(t): the first video s at which simulated t is shown
+  /// The last video s at which simulated t is shown: after a hold at t, else τ(t).
+  double video_time_last(double t) const;
   /// Frame showing simulated `t` exactly (within 1e-9 relative), or -1.
   long frame_at(double t) const;
 
@@ -38,6 +43,7 @@ class FrameClock {
   const Piece& piece_at_video(double tau) const;
   double fps_, time_scale_, hold_;
   std::vector<Piece> pieces_;  // sorted by t0; the first starts at 0
+  double tau_end_ = 0;         // video s at the end of the last piece
   long count_;
 };
 

@@ -19,6 +19,7 @@ struct LoadContext {
   std::size_t particles = 0;       ///< running total, capped at kMaxParticles
   std::vector<std::string> body_names;  ///< every name seen, for the uniqueness check
   std::vector<MeshSource>* meshes = nullptr;  ///< where mesh shapes of the current source go
+  std::vector<ShapeSource>* shapes = nullptr;  ///< where generated shapes of the current source go
 };
 
 /// Reserves `n` particles of the scene budget; false (with an error under `key`) past the cap.
@@ -42,5 +43,9 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene);
 /// Reads [[views]], [[captions]], [title], [[slow_motion]] into scene.render.explain
 /// (after read_render_config and read_bodies: it checks body names and times).
 void read_explain_config(TableReader& root, LoadContext& ctx, Scene& scene);
+
+/// Warnings (file:line:col) for captions up too briefly to be read at video
+/// speed (under kSecondsPerWord a word) and for captions shown at once in one place.
+void check_pacing(TableReader& root, LoadContext& ctx, const Scene& scene);
 
 }  // namespace tumble::scene::detail

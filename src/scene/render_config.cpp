@@ -70,7 +70,8 @@ void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
 
 void read_draw(TableReader& r, Scene& s) {
   DrawConfig& d = s.render.draw;
-  d.box = r.boolean("box").value_or(d.box);
+  if (r.has("box")) d.box = r.boolean("box");
+  d.surface = r.boolean("surface").value_or(d.surface);
   d.axes = r.boolean("axes").value_or(d.axes);
   d.particles = r.boolean("particles").value_or(d.particles);
   d.angular_momentum = r.boolean("L").value_or(d.angular_momentum);
@@ -136,7 +137,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   }
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
-                  {"box", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key"});
+                  {"box", "surface", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key"});
     read_draw(r, scene);
   }
   if (auto t = root.subtable("compare")) {

@@ -114,7 +114,7 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
   detail::LoadContext ctx{diag, base_dir, 0, {}};
   TableReader r(root, "", diag,
                 {"name", "simulation", "forces", "bodies", "output", "camera", "draw", "compare", "views", "captions",
-                  "title", "slow_motion"});
+                  "title", "slow_motion", "holds"});
   s.name = r.string("name").value_or("scene");
   // The name becomes the default output folder out/<name> and the video's file
   // name: keep it a plain file name, so a render never writes elsewhere.

@@ -21,6 +21,7 @@
 #include "core/propagator.hpp"
 #include "scene/explain.hpp"
 #include "scene/frame_settings.hpp"
+#include "core/solid_shape.hpp"
 #include "viz/draw_options.hpp"
 #include "core/triangle_mesh.hpp"
 
@@ -128,6 +129,13 @@ struct MeshSource {
   double inertia_error() const { return (cloud_inertia - exact_inertia).norm() / exact_inertia.norm(); }
 };
 
+/// One generated shape of a body (`shape = { type = "box", ... }`), drawn as
+/// its lit surface at the declared dimensions.
+struct ShapeSource {
+  SolidShape shape;                 ///< placed in the body's cloud axes
+  Eigen::Vector3d color{0.3, 0.5, 0.8};  ///< linear RGB (part colour, else the body's)
+};
+
 /// Particles [begin, end) of a body drawn in `color` (a part's colour).
 struct ColorSpan {
   std::size_t begin = 0, end = 0;
@@ -135,7 +143,8 @@ struct ColorSpan {
 };
 
 struct Body {
-  std::string name;
+  std::string name;                      ///< identifier (views, captions, CSV)
+  std::string label;                     ///< what labels and keys show: display_name, else name
   ParticleCloud cloud;                   ///< cloud axes, as written in the scene
   MassProperties mass_properties;        ///< in cloud axes
   RigidBodyModel model;                  ///< what Propagator integrates (keep the Scene alive)
@@ -143,6 +152,7 @@ struct Body {
   BodyState initial;                     ///< make_state(model, initial_conditions)
   Eigen::Vector3d color{0.3, 0.5, 0.8};  ///< linear RGB in [0, 1]
   std::vector<MeshSource> meshes;        ///< mesh shapes, drawn as surfaces
+  std::vector<ShapeSource> shapes;       ///< generated shapes, drawn as surfaces
   std::vector<ColorSpan> part_colors;    ///< parts with their own colour
 };
 

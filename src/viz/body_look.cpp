@@ -30,4 +30,16 @@ std::shared_ptr<const SurfaceMesh> make_surface(const TriangleMesh& mesh) {
   return s;
 }
 
+std::pair<Eigen::Vector3d, Eigen::Vector3d> principal_extent(const std::vector<std::shared_ptr<const SurfaceMesh>>& surfaces,
+                                                             const Eigen::Matrix3d& axes, const Eigen::Vector3d& com) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+  for (const auto& s : surfaces)
+    for (const glm::vec3& p : s->positions) {
+      const Eigen::Vector3d q = axes.transpose() * (Eigen::Vector3d(p.x, p.y, p.z) - com);
+      lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    }
+  if (!(hi.x() >= lo.x())) return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  return {0.5 * (lo + hi), 0.5 * (hi - lo)};
+}
+
 }  // namespace tumble::viz

@@ -10,12 +10,6 @@
 
 namespace tumble::viz {
 
-LabelMetrics view_label_metrics(float height_px) {
-  const float size = std::clamp(height_px * 0.055f, 11.0f, 26.0f);
-  const float pad = std::round(size * 0.6f);
-  return {size, pad, pad * 0.6f, pad * 0.6f + 1.25f * size};
-}
-
 float fade_alpha(double tau, double start, double end, double fade) {
   if (tau < start || tau > end) return 0.0f;
   const double f = std::min(fade, 0.25 * (end - start));
@@ -74,13 +68,14 @@ std::vector<TextItem> centred_lines(const std::string& text, float size, Color c
 
 }  // namespace
 
-std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px) {
+std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px,
+                                    bool at_top) {
   const float size = text_px(TextRole::caption, frame_h), fh = static_cast<float>(frame_h);
   const float fw = static_cast<float>(frame_w);
   // Centred, so lines no wider than this leave `side_px` (and the backdrop's pad) free at each side.
   const float max_w = side_px > 0 ? std::max(0.3f * fw, fw - 2 * (side_px + 0.7f * size)) : 0.9f * fw;
   const int lines = text_lines(wrap_text(text, size, max_w));
-  const float top = fh - static_cast<float>(lines) * size - 0.6f * size;
+  const float top = at_top ? 0.6f * size : fh - static_cast<float>(lines) * size - 0.6f * size;
   return centred_lines(text, size, color_of(Meaning::ink, alpha), {0.99f, 0.99f, 1.0f, 0.92f * alpha}, fw, top,
                        "caption", max_w);
 }
@@ -102,9 +97,9 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
   return out;
 }
 
-std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h) {
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is) {
   if (speed.empty()) return std::nullopt;
-  const std::string text = speed + (slow ? " slow motion" : " fast");
+  const std::string text = as_is ? speed : speed + (slow ? " slow motion" : " fast");
   const float size = std::max(12.0f, static_cast<float>(frame_h) / 36.0f);
   // Bottom-right; captions shown with it keep clear of it (caption_items' side_px).
   const float x = right_aligned_x(text, size, static_cast<float>(frame_w) - 0.8f * size);

@@ -11,14 +11,6 @@
 
 namespace tumble::viz {
 
-/// Where the renderer draws a view's title (View::label), top-left, in a
-/// viewport `height_px` high: text size, left pad and top (px), and the y just
-/// below it, where the view's own text may start.
-struct LabelMetrics {
-  float size_px, pad_px, top_px, bottom_px;
-};
-LabelMetrics view_label_metrics(float height_px);
-
 /// Opacity in [0, 1] at video time `tau` of text shown over [start, end]
 /// (video s): linear fades of `fade` s (at most a quarter of the span).
 float fade_alpha(double tau, double start, double end, double fade = 0.4);
@@ -41,7 +33,9 @@ class ViewportProjection {
 /// A caption centred near the bottom of a frame_w × frame_h frame, on a
 /// backdrop: one item per line ('\n' breaks and wrapping at 90 % of the width,
 /// or narrower to keep `side_px` free at each side, e.g. for the speed badge).
-std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px = 0);
+/// `top`: at the frame's top instead of its bottom.
+std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px = 0,
+                                    bool top = false);
 /// Its first line (with the backdrop of them all).
 TextItem caption_item(const std::string& text, float alpha, int frame_w, int frame_h);
 
@@ -54,7 +48,8 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 
 /// The speed badge in the frame's bottom-right corner, beside the caption, while the video does not
 /// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
-std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h);
+/// `as_is`: `speed` is the whole text ("paused"), without "slow motion" or "fast".
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is = false);
 
 
 }  // namespace tumble::viz

@@ -159,7 +159,6 @@ struct View {
   std::vector<PolylineItem> polylines;
   std::vector<GridItem> grids;
   std::vector<TextItem> texts;   ///< overlay, drawn last, in this viewport
-  std::string label;             ///< e.g. the method name in a comparison
   std::string name;              ///< in the layout report, e.g. "momentum_sphere" (empty: its index)
   /// x, y, width, height as fractions of the frame from its top-left corner;
   /// unset = the view's cell of the DrawList's grid.

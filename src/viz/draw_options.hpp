@@ -2,11 +2,16 @@
 // (scene::DrawConfig, `[draw]`) and the command line fill them by name.
 #pragma once
 
+#include <optional>
+
 namespace tumble::viz {
 
 /// What to draw (scene `[draw]`, overridable on the command line).
 struct DrawOptions {
-  bool box = true;
+  /// The principal box: unset = only for a body drawn without a surface
+  /// (translucent, as the seed drew it); true = also around surfaces, as an outline.
+  std::optional<bool> box;
+  bool surface = true;       ///< generated shapes and meshes as their lit surfaces
   bool axes = true;          ///< principal axes: red = smallest moment, green, blue = largest
   bool particles = false;
   bool angular_momentum = false;  ///< world L as an arrow

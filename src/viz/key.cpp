@@ -90,70 +90,72 @@ Box add_key(View& view, const std::vector<KeyEntry>& entries, glm::vec2 top_left
   return box;
 }
 
-Box add_key_top_right(View& view, const std::vector<KeyEntry>& entries, float width_px, float top_px, float size_px) {
-  const glm::vec2 size = key_size(entries, size_px);
-  const float margin = 0.5f * size_px;
-  return add_key(view, entries, {std::max(margin, width_px - size.x - margin), top_px + margin}, size_px);
+namespace {
+
+constexpr float kEntryGap = 1.6f;  // between entries in a row, in sizes
+
+float entry_width(const KeyEntry& e, float size_px) {
+  return swatch_width(e, size_px) + kGap * size_px + text_width(e.text, size_px);
 }
 
-void keep_clear(const View& view, float w, float h, std::vector<Box>& out, std::vector<Box>& texts) {
-  auto add_points = [&](const std::vector<glm::dvec3>& pts) {
-    if (const auto b = screen_box(view.camera, w, h, pts, 1.0f)) out.push_back(*b);
-  };
-  for (const BoxItem& b : view.boxes) add_points(box_corners(b));
-  const glm::dvec3 up = glm::normalize(view.camera.up);
-  const glm::dvec3 right = glm::normalize(glm::cross(view.camera.target - view.camera.position, up));
-  for (const PointItem& p : view.points)
-    if (!p.name.empty() || p.radius >= 0.5) {  // named, or the momentum sphere's ball
-      const double r = 1.04 * p.radius;        // a perspective silhouette is a little wider
-      add_points({p.position + r * up, p.position - r * up, p.position + r * right, p.position - r * right});
+// The swatches and text of one entry from pen x, line top y.
+void add_entry(std::vector<TextItem>& texts, const KeyEntry& e, float x, float y, float size_px) {
+  const float step = swatch_step(e.swatch, size_px);
+  for (std::size_t c = 0; c < e.colors.size(); ++c) {
+    TextItem swatch{swatch_glyphs(e.swatch), {x + step * static_cast<float>(c), y}, size_px, e.colors[c], "key_swatch"};
+    swatch.key = true;
+    texts.push_back(std::move(swatch));
+  }
+  TextItem text{e.text, {x + swatch_width(e, size_px) + kGap * size_px, y}, size_px, color_of(Meaning::ink), "key"};
+  text.key = true;
+  texts.push_back(std::move(text));
+}
+
+}  // namespace
+
+KeyRows key_rows(const std::vector<KeyEntry>& entries, float size_px, float max_width_px) {
+  KeyRows k;
+  const float room = max_width_px - 2 * kPad * size_px;
+  float row_w = 0, widest = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const float w = entry_width(entries[i], size_px);
+    if (k.rows.empty() || (row_w + kEntryGap * size_px + w > room && !k.rows.back().empty())) {
+      k.rows.emplace_back();
+      row_w = -kEntryGap * size_px;
     }
-  for (const SurfaceItem& s : view.surfaces) {
-    if (s.name.empty() || !s.mesh) continue;
-    std::vector<glm::dvec3> pts;
-    for (std::size_t i = 0; i < s.mesh->positions.size(); i += 3)
-      pts.push_back(glm::dvec3(s.model * glm::dvec4(glm::dvec3(s.mesh->positions[i]), 1.0)));
-    add_points(pts);
+    row_w += kEntryGap * size_px + w;
+    widest = std::max(widest, row_w);
+    k.rows.back().push_back(i);
   }
-  for (const PolylineItem& l : view.polylines)
-    if (l.name == "polhode" || l.name == "herpolhode" || l.name == "momentum_path") add_points(l.points);
-  for (const TextItem& t : view.texts)
-    if (!t.key && !is_label(t)) texts.push_back(text_box(t));
+  const float n = static_cast<float>(k.rows.size());
+  if (!k.rows.empty()) k.size = {widest + 2 * kPad * size_px, ((n - 1) * kLine + 1 + 2 * kPad) * size_px};
+  return k;
 }
 
-std::optional<KeySpot> find_key_spot(glm::vec2 size, float w, float h, float top, float m, const std::vector<Box>& fixed,
-                                     const std::vector<Box>& moving, float shift_room) {
-  const float right = w - size.x - m, bottom = h - size.y - m;
-  if (right < m || bottom < top + m) return std::nullopt;
-  const glm::vec2 corners[] = {{right, bottom}, {m, bottom}, {right, top + m}, {m, top + m}};
-  for (const glm::vec2& c : corners) {
-    const Box b{c.x, c.y, c.x + size.x, c.y + size.y};
-    // Content moves away from the key (right of a key on the left) by half the
-    // key at most, and no further than its room on the other side.
-    float room = std::max(0.0f, shift_room);
-    for (const Box& o : moving) room = std::min(room, c.x < 0.5f * w ? w - m - o.x1 : o.x0 - m);
-    const float shift = (c.x < 0.5f * w ? 1.0f : -1.0f) * std::clamp(0.5f * size.x, 0.0f, std::max(0.0f, room));
-    const auto hit = [&](const Box& o, float dx) { return b.overlaps({o.x0 + dx, o.y0, o.x1 + dx, o.y1}); };
-    if (std::any_of(fixed.begin(), fixed.end(), [&](const Box& o) { return hit(o, 0); })) continue;
-    if (std::any_of(moving.begin(), moving.end(), [&](const Box& o) { return hit(o, shift); })) continue;
-    return KeySpot{c, shift};
+Box add_key_row(std::vector<TextItem>& texts, const std::vector<KeyEntry>& entries, float centre_x, float top,
+                float size_px, float max_width_px) {
+  const KeyRows k = key_rows(entries, size_px, max_width_px);
+  const Box box{centre_x - 0.5f * k.size.x, top, centre_x + 0.5f * k.size.x, top + k.size.y};
+  if (k.rows.empty()) return box;
+  const std::size_t first = texts.size();
+  for (std::size_t r = 0; r < k.rows.size(); ++r) {
+    float w = -kEntryGap * size_px;
+    for (std::size_t i : k.rows[r]) w += kEntryGap * size_px + entry_width(entries[i], size_px);
+    float x = centre_x - 0.5f * w;
+    const float y = top + (kPad + kLine * static_cast<float>(r)) * size_px;
+    for (std::size_t i : k.rows[r]) {
+      add_entry(texts, entries[i], x, y, size_px);
+      x += entry_width(entries[i], size_px) + kEntryGap * size_px;
+    }
   }
-  return std::nullopt;
+  // The whole key's backdrop, drawn before its first glyph.
+  texts[first].backdrop = {0.99f, 0.99f, 1.0f, 0.85f};
+  texts[first].backdrop_px = {box.x0, box.y0, box.x1, box.y1};
+  return box;
 }
 
-void shift_content(View& view, float shift_px, float height_px) {
-  const glm::dvec3 eye = view.camera.position - view.camera.target;
-  const double world_per_px = 2 * std::tan(glm::radians(view.camera.fov_y_deg) / 2) * glm::length(eye) / height_px;
-  const glm::dvec3 right = glm::normalize(glm::cross(view_up(view.camera), glm::normalize(eye)));
-  const glm::dvec3 d = static_cast<double>(shift_px) * world_per_px * right;
-  view.camera.target -= d;
-  view.camera.position -= d;
-}
-
-void merge_entries(std::vector<KeyEntry>& a, const std::vector<KeyEntry>& b) {
-  for (const KeyEntry& e : b)
-    if (std::none_of(a.begin(), a.end(), [&](const KeyEntry& x) { return x.text == e.text && x.colors == e.colors; }))
-      a.push_back(e);
+bool same_entry(const KeyEntry& a, const KeyEntry& b) {
+  return a.swatch == b.swatch && a.colors == b.colors && a.text == b.text;
 }
 
 }  // namespace tumble::viz

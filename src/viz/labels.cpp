@@ -1,6 +1,7 @@
 // Where labels go, decided GL-free from a view's draw list: a body's name
 // beside its body, clear of the view's text, the bodies, their arrows and Π.
 #include <algorithm>
+#include <cmath>
 
 #include "viz/captions.hpp"
 #include "viz/text_layout.hpp"
@@ -83,22 +84,26 @@ std::vector<glm::vec2> around(const glm::vec4& s, glm::vec2 size, float gap) {
   return out;
 }
 
-// Any other label near its place: up or down by up to two lines, then beside it.
+// Any other label near its place: up or down by up to two lines, then beside
+// it; then, as a last resort, a little further (an axis' end must keep its name).
 std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
   std::vector<glm::vec2> out;
   for (float dx : {0.0f, 0.7f, -0.7f})
     for (float dy : {0.0f, 1.1f, -1.1f, 2.2f, -2.2f}) out.push_back(at + glm::vec2(dx * size.x, dy * line));
+  for (float dx : {0.0f, 1.4f, -1.4f, 0.7f, -0.7f, 2.1f, -2.1f})
+    for (float dy : {3.3f, -3.3f, 1.1f, -1.1f, 0.0f})
+      if (std::abs(dx) > 1.0f || std::abs(dy) > 3.0f) out.push_back(at + glm::vec2(dx * size.x, dy * line));
   return out;
 }
 
 }  // namespace
 
-void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
+std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());
   const bool labels = std::any_of(view.texts.begin(), view.texts.end(), is_label);
   const std::vector<Box> solid = labels ? solid_obstacles(view, width_px, height_px) : std::vector<Box>{};
-  std::vector<TextItem> kept;
+  std::vector<TextItem> kept, left_out;
   for (TextItem& t : view.texts) {
     if (!is_label(t)) {
       kept.push_back(std::move(t));
@@ -110,6 +115,7 @@ void settle_labels(View& view, float width_px, float height_px, const std::vecto
     const glm::vec2 size{at.x1 - at.x0, at.y1 - at.y0};
     const bool subject = has_subject(t);
     const Box own{t.subject_px.x, t.subject_px.y, t.subject_px.z, t.subject_px.w};
+    bool placed = false;
     for (const glm::vec2 p : subject ? around(t.subject_px, size, gap) : nearby(t.position_px, size, t.size_px)) {
       const Box b{p.x, p.y, p.x + size.x, p.y + size.y};
       if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
@@ -120,10 +126,13 @@ void settle_labels(View& view, float width_px, float height_px, const std::vecto
       t.position_px = p;
       taken.push_back(b);
       kept.push_back(std::move(t));
+      placed = true;
       break;
     }
+    if (!placed) left_out.push_back(std::move(t));
   }
   view.texts = std::move(kept);
+  return left_out;
 }
 
 }  // namespace tumble::viz

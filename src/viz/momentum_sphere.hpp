@@ -31,15 +31,9 @@ struct MomentumSphereInput {
   Eigen::Vector3d momentum = Eigen::Vector3d::Zero();  ///< Π now (principal frame), kg·m²/s
   std::vector<Eigen::Vector3d> history;     ///< past Π, oldest first
   double two_E = 0;                         ///< 2 × rotational energy, J
-  std::string title;
   SpherePose pose = {};                     ///< the camera's followed direction now (follow_track)
   SphereCameraSettings camera = {};
-  bool key = true;                          ///< the key of colours and meanings
   bool energy_ellipsoid = true;             ///< the translucent energy ellipsoid (it meets the sphere on the polhode), when it fits
-  /// Only what placing a key reads (viz::keep_clear): no level curves,
-  /// separatrix or energy ellipsoid, which it passes over.
-  bool outline_only = false;
-  std::optional<KeySpot> key_spot = {};     ///< where (compose::ExplainViews decides once per video); unset: bottom-left
   float width_px = 640, height_px = 360;    ///< the viewport
   /// > 0: the camera's field of view shows a ball of this radius (|L|) whole in the viewport.
   double fit_radius = 0;
@@ -48,10 +42,13 @@ struct MomentumSphereInput {
 
 /// The energy ellipsoid is drawn only if its largest semi-axis is within this many |L|.
 inline constexpr double kEnergyEllipsoidReach = 1.3;
+/// Its opacity: a veil over the sphere, in its own colour.
+inline constexpr float kEnergyEllipsoidAlpha = 0.28f;
 
 /// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the
-/// sphere has radius 1), principal frame: it meets the sphere on the polhode.
-/// Translucent, in the polhode's colour.
+/// sphere has radius 1), principal frame: only its parts outside the sphere
+/// (what the opaque ball does not hide), whose edges are the polhodes, where
+/// it meets the sphere. Translucent, in its own colour (Meaning::energy_ellipsoid).
 SurfaceItem energy_ellipsoid(const Eigen::Vector3d& inertia, double L, double two_E);
 
 /// Whether the view of `in` draws the energy ellipsoid: asked for, and its
@@ -61,9 +58,6 @@ bool draws_energy_ellipsoid(const MomentumSphereInput& in);
 /// The momentum sphere's key entries: what the view of `in` draws, no more
 /// (no energy ellipsoid where it is too large to draw).
 std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in);
-
-/// How far the sphere may move sideways in a width × height view and keep its margin, px.
-float sphere_shift_room(float width_px, float height_px);
 
 /// Radius of the opaque ball inside the sphere that hides the far side, in |L|.
 inline constexpr double kSphereBall = 0.985;

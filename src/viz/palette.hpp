@@ -26,6 +26,7 @@ enum class Meaning {
   other_levels,          ///< polhodes of other energies
   plane,                 ///< the invariable plane
   ellipsoid,             ///< Poinsot's inertia ellipsoid
+  energy_ellipsoid,      ///< the energy ellipsoid on the momentum sphere
   ink,                   ///< text, frames, playhead
   count
 };
@@ -51,6 +52,7 @@ inline const std::array<MeaningColor, static_cast<std::size_t>(Meaning::count)> 
     {Meaning::other_levels, "other_levels", "light grey", {0.55f, 0.56f, 0.60f, 1}},
     {Meaning::plane, "plane", "grey", {0.45f, 0.47f, 0.52f, 1}},
     {Meaning::ellipsoid, "ellipsoid", "slate", {0.38f, 0.44f, 0.62f, 1}},
+    {Meaning::energy_ellipsoid, "energy_ellipsoid", "yellow", {0.93f, 0.78f, 0.18f, 1}},
     {Meaning::ink, "ink", "near-black", {0.12f, 0.13f, 0.16f, 1}},
 }};
 

@@ -140,16 +140,6 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   add_inertia_ellipsoid(view, f);
   add_invariable_plane(view, f);
   add_motion(view, f, in);
-  const float top = add_view_title(view, in.title, in.width_px, in.frame_h);
-  // Bottom-right, over the plane's near edge: the ellipsoid stands in the middle.
-  if (!in.key) return;
-  const float size = text_px(TextRole::key, in.frame_h);
-  if (!in.key_spot) {
-    add_key_top_right(view, poinsot_key(), in.width_px, top, size);
-    return;
-  }
-  add_key(view, poinsot_key(), in.key_spot->top_left, size);
-  shift_content(view, in.key_spot->shift_px, in.height_px);
 }
 
 }  // namespace tumble::viz

@@ -38,13 +38,10 @@ struct PoinsotInput {
   Eigen::Vector3d L;                    ///< world, kg·m²/s
   std::vector<Eigen::Vector3d> omega_principal_history;  ///< ω in the principal frame, oldest first (polhode)
   std::vector<Eigen::Vector3d> omega_world_history;      ///< ω in the world, oldest first (herpolhode)
-  std::string title;
   /// Azimuth (in the plane, from its first basis vector), elevation (above the
   /// plane's far side) and distance (largest semi-axes) of the camera; follow is
   /// unused. By default 40° above the plane, so the herpolhode opens up.
   SphereCameraSettings camera = {16.4, 39.8, 4.69, false, 0, 0};
-  bool key = true;                          ///< the key of colours and meanings
-  std::optional<KeySpot> key_spot = {};     ///< where (compose::ExplainViews decides once per video); unset: bottom-right
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
 };
@@ -57,8 +54,8 @@ inline constexpr Color kPlaneColor{0.84f, 0.85f, 0.88f, 1.0f};
 inline constexpr double kHerpolhodeLift = 0.008;
 
 /// Fills `view` (camera included); ω-space scaled so the ellipsoid's largest semi-axis is 1.
-/// The ellipsoid is a shaded translucent surface resting on an opaque plane;
-/// the key (bottom-right) names the axes, L, ω, the curves and the plane.
+/// The ellipsoid is a shaded translucent surface resting on an opaque plane
+/// (its key, poinsot_key(), is the layout's to draw).
 /// ω's tip is the point named "contact_point".
 void build_poinsot(View& view, const PoinsotInput& in);
 

@@ -64,11 +64,27 @@ std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds) con
   return out;
 }
 
+namespace {
+
+bool has_surface(const BodySnapshot& b, const DrawOptions& opt) {
+  return opt.surface && b.look && !b.look->surfaces.empty();
+}
+
+}  // namespace
+
 BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt) {
   const RigidBodyModel& m = *b.model;
   const BodyState& s = b.state;
   Color edge = b.color * 0.45f;
   edge.a = 1.0f;
+  if (has_surface(b, opt) && b.look->surface_box) {
+    // Just outside the surfaces, so its edges do not fight with theirs for depth.
+    const auto& [centre, half] = *b.look->surface_box;
+    const double grow = 0.01 * std::max(half.maxCoeff(), 1e-6);
+    Color none = b.color;
+    none.a = 0.0f;
+    return {to_glm(s.c + s.q * centre), rotation_of(s.q), to_glm(half) + glm::dvec3(grow), none, edge};
+  }
   // Around the particle spheres when they are drawn, so its edges and faces are not buried in them.
   const double grow = opt.particles && b.cloud ? particle_radius(m) : 0.0;
   return {to_glm(s.c + s.q * m.box.center), rotation_of(s.q), to_glm(m.box.half_extents) + glm::dvec3(grow), b.color,
@@ -81,13 +97,13 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     const RigidBodyModel& m = *b.model;
     const BodyState& s = b.state;
     const double size = std::max(largest_half_extent(m), 1e-3);
-    if (opt.box) view.boxes.push_back(body_box(b, opt));
+    if (opt.box.value_or(!has_surface(b, opt))) view.boxes.push_back(body_box(b, opt));
     if (opt.axes)
       for (int i = 0; i < 3; ++i)
         view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i]});
     const Eigen::Quaterniond qc = cloud_orientation(m, s);
     const glm::dmat4 model = cloud_to_world(s.c - qc * m.com_cloud, qc);
-    if (b.look)
+    if (has_surface(b, opt))
       for (std::size_t i = 0; i < b.look->surfaces.size(); ++i)
         view.surfaces.push_back({b.look->surfaces[i], model, b.look->surface_colors[i]});
     if (opt.particles && b.look && b.look->particles) {

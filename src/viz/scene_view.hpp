@@ -2,6 +2,7 @@
 #pragma once
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct BodySnapshot {
   BodyState state;
   Color color{0.55f, 0.62f, 0.78f, 0.35f};  ///< box face colour (alpha = translucency)
   const BodyLook* look = nullptr;        ///< optional: surfaces, visible particles and their colours
+  std::string label;                     ///< what a label shows (the display name); empty: the model's name
 };
 
 // From the one colour table (viz/palette.hpp).
@@ -53,7 +55,8 @@ class TrailRecorder {
   std::deque<Sample> samples_;
 };
 
-/// The box drawn for body `b` (its principal-axis box, around its particles when they are drawn).
+/// The box drawn for body `b`: its principal-axis box around its surfaces
+/// (an outline: no faces), else around its particles when they are drawn.
 BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt);
 
 /// Adds the items of `bodies` to `view` (camera and label are the caller's).

@@ -52,6 +52,9 @@ std::vector<SpherePose> follow_track(const std::vector<double>& t, const std::ve
     // Never more than max_lag behind Π̂: keeps Π on the near side at any speed.
     const double lag = std::acos(std::clamp(p.dir.dot(target), -1.0, 1.0));
     if (lag > max_lag) p.dir = slerp(p.dir, target, 1 - max_lag / lag);
+    // Never more than max_turn from the start: the figure keeps its bearings (what goes behind shows through).
+    const double turn = std::acos(std::clamp(p.dir.dot(out.front().dir), -1.0, 1.0));
+    if (turn > s.max_turn_deg * kDeg) p.dir = slerp(out.front().dir, p.dir, s.max_turn_deg * kDeg / turn);
     // Up carried by the smallest rotation, then relaxed (1 s) towards +e3 as far as e3 ⊥ dir exists.
     const Eigen::Vector3d carried = Eigen::Quaterniond::FromTwoVectors(prev.dir, p.dir) * prev.up;
     const Eigen::Vector3d e3_perp = e3 - e3.dot(p.dir) * p.dir;
@@ -78,10 +81,30 @@ Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s) {
   c.position = {eye.x(), eye.y(), eye.z()};
   c.target = {0, 0, 0};
   c.up = {up.x(), up.y(), up.z()};
-  c.fov_y_deg = 2 * std::atan(1.5 / s.distance) / kDeg;  // the sphere and its axes (1.35) fill the height
+  c.fov_y_deg = 2 * std::atan(s.reach / s.distance) / kDeg;  // the sphere and its axes fill the height
   c.near_m = 0.1 * s.distance;
   c.far_m = 4 * s.distance;
   return c;
+}
+
+SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi0) {
+  const double L = pi0.norm();
+  const double two_E = L > 0 ? pi0.cwiseAbs2().cwiseQuotient(inertia).sum() : 0;
+  // The pole the polhode circles: e1 above the separatrix level L²/I2, e3 below.
+  const int pole = L > 0 && two_E > L * L / inertia[1] ? 0 : 2, other = 2 - pole;
+  auto sign = [](double x) { return x < 0 ? -1.0 : 1.0; };
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  d[pole] = 0.70 * sign(pi0[pole]);
+  d[1] = 0.45 * sign(pi0[1]);
+  d[other] = 0.55;
+  d.normalize();
+  SphereCameraSettings s;
+  s.follow = false;
+  s.azimuth_deg = std::atan2(d.y(), d.x()) / kDeg;
+  s.elevation_deg = std::asin(std::clamp(d.z(), -1.0, 1.0)) / kDeg;
+  s.distance = 14;
+  s.reach = kSphereReach;
+  return s;
 }
 
 double fov_for_ball(const Camera& c, double radius, double aspect) {

@@ -31,7 +31,20 @@ struct SphereCameraSettings {
   bool follow = true;          ///< false: fixed at azimuth/elevation in the principal frame, up = +e3
   double follow_s = 0.15;      ///< time constant of the filter, simulated s
   double max_lag_deg = 35;     ///< the followed direction stays this close to Π̂
+  double max_turn_deg = 60;    ///< ... and this close to where it started: the figure never turns round
+  double reach = 1.5;          ///< half the view's height, in |L| (the momentum sphere: its axis labels)
 };
+
+/// Half the momentum sphere view's height, |L|: its axes (1.5) and their labels fit.
+inline constexpr double kSphereReach = 1.85;
+
+/// The momentum sphere's default camera, a fixed textbook view for a body
+/// whose Π starts at `pi0` (principal moments `inertia`, ascending): it looks
+/// at the hemisphere of the pole its polhode circles (within 46° of it), with
+/// the saddle Π starts near in front (63° off the view) and every axis at 45°
+/// to 135° from it, so all six ends ±e_i stand out past the sphere; from far
+/// away (distance 14), nearly without perspective.
+SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi0);
 
 /// Poses at each sample (times `t`, s, ascending; Π in the principal frame).
 std::vector<SpherePose> follow_track(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pi,

@@ -14,10 +14,10 @@ namespace tumble::viz {
 
 namespace {
 
-// The chart's head: the title top-left, the series' key (names in their
-// colours) top-right, or below the title when they do not fit side by side.
+// The chart's head: the series' key (names in their colours) top-right, a
+// little below the view's top, or at its top when it fills the width; the
+// view's title is the layout's (compose::plan_frame), above the view.
 struct Head {
-  View title;           // the title's text
   float key_y = 0;      // top of the key row, px
   float key_px = 0;     // key text size
   float key_w = 0;      // key row width, px
@@ -30,13 +30,9 @@ Head head_layout(const StripChartInput& in, int width_px, float font_px) {
   const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h) : f;
   h.key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h) : f;
   for (const Series& s : in.series) h.key_w += text_width(s.name, h.key_px) + 1.2f * h.key_px;
-  const float title_bottom = in.frame_h > 0 ? add_view_title(h.title, in.title, w - h.key_w, in.frame_h)
-                                            : (in.title.empty() ? 0.0f : 1.5f * f);
-  const float title_w = h.title.texts.empty() ? 0.0f : text_width(h.title.texts[0].text, title_px);
-  const bool beside = h.key_w + title_w + 2 * title_px < w;
-  h.key_y = beside ? 0.35f * title_px : title_bottom;
-  // The plot starts below both, with room for the top value tick (half a tick above it).
-  h.top_px = std::max(title_bottom, h.key_y + 1.3f * h.key_px) + 0.7f * f;
+  h.key_y = h.key_w + 2 * title_px < w ? 0.35f * title_px : 0.0f;
+  // The plot starts below it, with room for the top value tick (half a tick above it).
+  h.top_px = h.key_y + 1.3f * h.key_px + 0.7f * f;
   return h;
 }
 
@@ -50,7 +46,7 @@ ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float
   x0_ = -aspect_ + 5.5 * font_px * px;
   x1_ = aspect_ - 1.2 * font_px * px;
   y0_ = -1 + 2.4 * font_px * px;
-  y1_ = 1 - (in.top_px > 0 ? in.top_px : head_layout(in, width_px, static_cast<float>(font_px)).top_px) * px;
+  y1_ = 1 - head_layout(in, width_px, static_cast<float>(font_px)).top_px * px;
 }
 
 glm::dvec3 ChartMap::at(double t, double v) const {
@@ -93,7 +89,7 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
   line({m.at(in.playhead, in.lo), m.at(in.playhead, in.hi)}, {0.2f, 0.2f, 0.25f, 0.8f}, 1.5f, "playhead");
 }
 
-// Ticks (value range on the left, time range below), the title, the series' key.
+// Ticks (value range on the left, time range below), the series' key.
 void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, const Head& head, float w, float f) {
   const Color ink = color_of(Meaning::ink);
   auto text = [&](const std::string& s, glm::vec2 p, Color c) {
@@ -111,8 +107,6 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   const std::string t1 = format_number(in.t1, 3) + " s";
   text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
   text(t1, {right_aligned_x(t1, f, bottom_right.x), bottom_left.y + 0.3f * f}, ink);
-  for (const TextItem& t : head.title.texts) view.texts.push_back(t);
-  if (in.frame_h == 0 && !in.title.empty()) text(in.title, {top_left.x, 0.3f * f}, ink);
   float x = w - head.key_w;
   for (const Series& s : in.series) {
     TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};

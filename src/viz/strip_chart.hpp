@@ -25,7 +25,6 @@ struct StripChartInput {
   double t0 = 0, t1 = 1;       ///< s, the time axis
   double lo = -1, hi = 1;      ///< value axis (the caller's unit)
   double playhead = 0;         ///< s
-  std::string title;
   /// Stretches (s) played at another speed: shaded over the plot's height, `label` ("×1/8") on top.
   struct Band {
     double start, end;
@@ -33,12 +32,10 @@ struct StripChartInput {
   };
   std::vector<Band> shaded;
   int frame_h = 0;             ///< frame height for the text roles' sizes (0: every text at font_px)
-  float top_px = 0;            ///< room above the plot for title and key, px (0: 2.6 font_px)
 };
 
 /// Fills `view` (camera included) for a viewport of `width_px` × `height_px`:
-/// title top-left, the series' key (name in its colour) top-right or below the
-/// title when they do not fit side by side; ticks at `font_px`.
+/// the series' key (name in its colour) top-right; ticks at `font_px`.
 void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px);
 
 /// Maps chart coordinates (t, value) to the world plane the chart is drawn in.

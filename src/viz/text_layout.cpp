@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <sstream>
 
 #include "viz/captions.hpp"
 #include "viz/font_metrics.hpp"
@@ -33,6 +32,12 @@ InkSpan line_ink(std::string_view line, float size_px) {
 }
 
 float line_width(std::string_view line, float size_px) { return line_ink(line, size_px).width(); }
+
+// Where the spaces before the word at `i` of `para` start.
+std::size_t line_gap_start(std::string_view para, std::size_t i) {
+  while (i > 0 && para[i - 1] == ' ') --i;
+  return i;
+}
 
 }  // namespace
 
@@ -82,16 +87,21 @@ std::string wrap_text(std::string_view text, float size_px, float max_width_px) 
   std::size_t start = 0;
   while (true) {
     const std::size_t end = text.find('\n', start);
-    std::istringstream words{std::string(text.substr(start, end - start))};
-    std::string word, line;
-    while (words >> word) {
-      const std::string longer = line.empty() ? word : line + " " + word;
+    const std::string_view para = text.substr(start, end == std::string_view::npos ? end : end - start);
+    std::string line;
+    // Words keep the spaces written between them ("red = I1   green = I2"); a break drops them.
+    for (std::size_t i = para.find_first_not_of(' '); i != std::string_view::npos;) {
+      const std::size_t word_end = std::min(para.find(' ', i), para.size());
+      const std::size_t gap = i - line_gap_start(para, i);
+      const std::string word(para.substr(i, word_end - i));
+      const std::string longer = line.empty() ? word : line + std::string(gap, ' ') + word;
       if (!line.empty() && line_width(longer, size_px) > max_width_px) {
         out += line + "\n";
         line = word;
       } else {
         line = longer;
       }
+      i = para.find_first_not_of(' ', word_end);
     }
     out += line;
     if (end == std::string_view::npos) break;
@@ -105,20 +115,6 @@ Box text_box(const TextItem& t) {
   const InkSpan ink = text_ink(t.text, t.size_px);
   const float h = static_cast<float>(text_lines(t.text)) * t.size_px;
   return {t.position_px.x + ink.x0, t.position_px.y, t.position_px.x + ink.x1, t.position_px.y + h};
-}
-
-}  // namespace tumble::viz
-
-namespace tumble::viz {
-
-float add_view_title(View& view, const std::string& title, float width_px, int frame_h) {
-  if (title.empty()) return 0;
-  const float size = text_px(TextRole::view_title, frame_h), pad = 0.5f * size;
-  TextItem t{wrap_text(title, size, width_px - 2 * pad), {pad, 0.35f * size}, size, color_of(Meaning::ink, 0.95f)};
-  t.name = "view_title";
-  const float bottom = text_box(t).y1 + 0.3f * size;
-  view.texts.push_back(std::move(t));
-  return bottom;
 }
 
 }  // namespace tumble::viz

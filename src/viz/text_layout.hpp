@@ -55,14 +55,6 @@ Box text_box(const TextItem& t);
 
 }  // namespace tumble::viz
 
-namespace tumble::viz {
-
-/// Adds `title` at the top-left of a view `width_px` wide, at the view-title
-/// size of a frame `frame_h` high, wrapped to the view's width. Returns the y
-/// (px) just below it, where the view's other text may start (0: no title).
-float add_view_title(View& view, const std::string& title, float width_px, int frame_h);
-
-}  // namespace tumble::viz
 
 namespace tumble::viz {
 
@@ -77,8 +69,8 @@ bool is_label(const TextItem& t);
 /// left out. Every label keeps clear of every body's box and arrow. A label
 /// with a subject (TextItem::subject_px, a body's box) is tried around it
 /// (above, below, right, left, then the corners, stepping out); others move
-/// up or down by up to two lines, then sideways.
-void settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
+/// up or down by up to two lines, then sideways. Returns the labels left out.
+std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
 
 /// The box `points` cover as `camera` sees them in a width × height view,
 /// grown by `pad_px` and clipped to the view; nullopt when none of it shows.

@@ -33,9 +33,9 @@ const GoldenScene kScenes[] = {
     {"stable_spin", "0.5,5,11"},   {"symmetric_top", "0.5,4,9"},    {"thrown_box", "0.2,0.9,1.6"},
     // The explanatory scenes' clocks have a title card and slow motion anchored
     // to flips: their goldens are frames (`tumble info` lists what each shows):
-    // the title card, the first flip, and after it.
-    {"dzhanibekov_explained", "40,273,495", "--frames"}, {"poinsot", "0.5,3,7"},
-    {"tennis_racket", "40,188,400", "--frames"},
+    // the title card, the hold at the first flip, and after it.
+    {"dzhanibekov_explained", "40,500,900", "--frames"}, {"poinsot", "0.5,3,7"},
+    {"tennis_racket", "40,300,480", "--frames"},
 };
 
 bool updating() {

@@ -28,7 +28,8 @@ viz::DrawList showcase() {
   const char* labels[4] = {"RK4", "Lie–Poisson (ω)", "implicit midpoint", "exact"};
   for (int i = 0; i < 4; ++i) {
     viz::View v;
-    v.label = labels[i];
+    // Each view's name in its top-left corner, as the frame layout puts a view's title.
+    v.texts.push_back({labels[i], {7, 4}, 13, {0.13f, 0.14f, 0.18f, 0.95f}, "view_title"});
     v.camera.position = {3.0, -4.5, 2.4};
     const double angle = 0.5 * i;
     const glm::dmat3 rot = glm::dmat3(glm::rotate(glm::dmat4(1), angle, glm::dvec3(0.3, 0.5, 1)));

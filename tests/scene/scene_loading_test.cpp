@@ -71,7 +71,8 @@ TEST(SceneKeys, DefaultsAndOverrides) {
   EXPECT_EQ(s.render.output.msaa, 4);
   EXPECT_EQ(s.render.output.aa, scene::Antialias::fxaa);
   EXPECT_TRUE(s.render.camera.automatic);
-  EXPECT_TRUE(s.render.draw.box);
+  EXPECT_FALSE(s.render.draw.box.has_value());  // the principal box: for bodies without a surface
+  EXPECT_TRUE(s.render.draw.surface);
   EXPECT_FALSE(s.render.draw.particles);
   EXPECT_TRUE(s.render.compare_methods.empty());
 }

@@ -119,7 +119,7 @@ TEST(Labels, BodyLabelSitsBesideItsBodyClearOfItsArrows) {
   label.name = "label:body";
   label.subject_px = {body->x0, body->y0, body->x1, body->y1};
   v.texts.push_back(label);
-  settle_labels(v, w, h);
+  EXPECT_TRUE(settle_labels(v, w, h).empty()) << "none left out";
   ASSERT_EQ(v.texts.size(), 1u) << "the label is left out";
   const Box b = text_box(v.texts[0]);
   EXPECT_FALSE(b.overlaps(*body)) << "on its body";
@@ -127,6 +127,26 @@ TEST(Labels, BodyLabelSitsBesideItsBodyClearOfItsArrows) {
   ASSERT_TRUE(project_to_viewport(v.camera, w, h, {0, 0, 0}, base) && project_to_viewport(v.camera, w, h, {0, 0, 1.2}, tip));
   EXPECT_FALSE(b.overlaps({base.x - 3, tip.y, base.x + 3, base.y})) << "on the L arrow";
   EXPECT_GT(b.y0, body->y1) << "below the body: above it, the arrow is in the way";
+}
+
+// A label with no place inside its view (a body filling a view too small for
+// its name) is left out and handed back, so the layout can say so.
+TEST(Labels, ALabelWithNoPlaceIsLeftOutAndHandedBack) {
+  View v;
+  v.camera.position = {0, -6, 0}, v.camera.target = {0, 0, 0}, v.camera.up = {0, 0, 1};
+  const float w = 60, h = 40, size = 16;
+  v.boxes.push_back({{0, 0, 0}, glm::dmat3(1.0), {3, 3, 3}, {0.7f, 0.6f, 0.5f, 0.38f}, {0.3f, 0.3f, 0.3f, 1}});
+  TextItem label{"a long body name", {0, 0}, size, color_of(Meaning::ink)};
+  label.name = "label:a long body name";
+  label.subject_px = {0, 0, w, h};
+  v.texts.push_back(label);
+  TextItem other{"kept", {0, 0}, size, color_of(Meaning::ink)};
+  v.texts.push_back(other);
+  const std::vector<TextItem> out = settle_labels(v, w, h);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].text, "a long body name");
+  ASSERT_EQ(v.texts.size(), 1u);
+  EXPECT_EQ(v.texts[0].text, "kept");
 }
 
 }  // namespace

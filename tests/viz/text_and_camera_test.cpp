@@ -1,7 +1,9 @@
 // Text sizes in proportion to the frame, wrapping, keys that do not
 // overlap themselves, the colour table as documented, and the momentum-sphere
 // camera that keeps Π on the near side, turns smoothly and depends only on the past.
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -38,6 +40,13 @@ TEST(TextLayout, WrapsAtTheWidthAndKeepsExplicitBreaks) {
   EXPECT_LE(text_width(w, 20), 250.0f);
   EXPECT_GE(text_lines(w), 3);
   EXPECT_NE(w.find("\nSecond line"), std::string::npos);
+  // Spaces written between words stay within a line (a legend's "   " between
+  // items); a break drops them, and none lead a line.
+  EXPECT_EQ(wrap_text("red = I1   green = I2", 20, 1000), "red = I1   green = I2");
+  const std::string legend = wrap_text("red = smallest moment   green = intermediate   blue = largest", 20, 300);
+  EXPECT_GE(text_lines(legend), 2);
+  EXPECT_EQ(legend.find("\n "), std::string::npos);
+  EXPECT_NE(legend.find("moment   green"), std::string::npos) << legend;
   // Widths follow DejaVu Sans drawn at the renderer's scale, where the size is
   // ascent − descent (2384 font units; an em is 2048): "H" advances 1540 units.
   EXPECT_NEAR(glyph_metrics(U'H').advance, 1540.0f / 2384.0f, 1e-4f);
@@ -53,7 +62,7 @@ TEST(Key, EntriesSitOnTheBackdropWithoutOverlapping) {
   const std::vector<KeyEntry> entries = {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e₁ e₂ e₃"},
                                          key_entry(Meaning::L, "L, fixed in space"),
                                          key_entry(Meaning::momentum_point, "Π")};
-  const Box box = add_key_top_right(v, entries, 480, 30, 13);
+  const Box box = add_key(v, entries, {20, 30}, 13);
   ASSERT_EQ(v.texts.size(), 3u + 3u + 2u);
   EXPECT_GT(v.texts[0].backdrop.a, 0.5f);
   for (std::size_t i = 0; i < v.texts.size(); ++i) {
@@ -65,8 +74,8 @@ TEST(Key, EntriesSitOnTheBackdropWithoutOverlapping) {
     EXPECT_LE(b.y1, box.y1);
     for (std::size_t j = i + 1; j < v.texts.size(); ++j) EXPECT_FALSE(b.overlaps(text_box(v.texts[j]))) << i << " " << j;
   }
-  EXPECT_LE(box.x1, 480.0f);
-  EXPECT_GE(box.y0, 30.0f);
+  EXPECT_FLOAT_EQ(box.x0, 20.0f);  // at the corner it was given
+  EXPECT_FLOAT_EQ(box.y0, 30.0f);
 }
 
 // docs/colours.md lists every meaning with the same RGB as viz::kPalette.
@@ -111,7 +120,8 @@ struct Flip {
 
 TEST(SphereCamera, FollowedPiStaysOnTheNearSideAndTheCameraTurnsSmoothly) {
   const Flip f;
-  const SphereCameraSettings s;
+  SphereCameraSettings s;
+  s.max_turn_deg = 180;  // unbounded: it follows Π round to the other side
   const std::vector<SpherePose> track = follow_track(f.t, f.pi, s);
   ASSERT_EQ(track.size(), f.pi.size());
   double flipped = 1;
@@ -139,6 +149,19 @@ TEST(SphereCamera, FollowedPiStaysOnTheNearSideAndTheCameraTurnsSmoothly) {
   EXPECT_GT(hidden, 100);
 }
 
+// Bounded, the follow camera keeps its bearings: it turns at most 60° from
+// where it started, while Π goes round to the opposite pole (and shows through the ball).
+TEST(SphereCamera, FollowCameraTurnsAtMostItsBound) {
+  const Flip f;
+  const SphereCameraSettings s;
+  ASSERT_EQ(s.max_turn_deg, 60);
+  const std::vector<SpherePose> track = follow_track(f.t, f.pi, s);
+  double widest = 0;
+  for (const SpherePose& p : track) widest = std::max(widest, std::acos(std::min(1.0, p.dir.dot(track[0].dir))));
+  EXPECT_LE(widest, 60 * std::numbers::pi / 180 + 1e-9);
+  EXPECT_GT(widest, 55 * std::numbers::pi / 180);  // it did turn as far as it may
+}
+
 TEST(SphereCamera, PoseDependsOnlyOnThePast) {
   const Flip f;
   const SphereCameraSettings s;
@@ -150,7 +173,7 @@ TEST(SphereCamera, PoseDependsOnlyOnThePast) {
 }
 
 TEST(MomentumSphere, AxesLabelledWhereTheyCanBeSeen) {
-  MomentumSphereInput in{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0, ""};
+  MomentumSphereInput in{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0.1, 1.9, 0.2), {}, 2.0};
   in.pose.dir = in.momentum.normalized();
   in.pose.up = Eigen::Vector3d(0, 0, 1);
   in.width_px = 960, in.height_px = 540, in.frame_h = 540;

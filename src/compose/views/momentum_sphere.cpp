@@ -14,8 +14,9 @@ namespace tumble::compose {
 
 namespace {
 
-// What the content must show whole: the axes (1.35 |L|), their labels (at 1.47) and a margin.
-constexpr double kFitRadius = 1.62;
+// What the content must show whole: the axes (1.5 |L|), their labels past them and a margin.
+constexpr double kFitRadius = 1.85;
+constexpr double kPiTailSeconds = 0.4;  // simulated s of Π's path drawn behind the dot: the whole path is the polhode
 
 viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::SphereCameraSettings s) {
   s.azimuth_deg = c.azimuth_deg.value_or(s.azimuth_deg);
@@ -25,11 +26,27 @@ viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::Spher
   return s;
 }
 
+// The view's camera: a lesson's default is the fixed textbook figure of the
+// body's start (viz::textbook_camera); azimuth/elevation fix another
+// direction; follow = true follows Π.
+viz::SphereCameraSettings view_camera(const scene::ViewCamera& c, const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi0) {
+  const bool textbook = !c.follow.value_or(false) && !c.azimuth_deg && !c.elevation_deg;
+  viz::SphereCameraSettings base;
+  if (textbook) base = viz::textbook_camera(inertia, pi0);
+  else base.follow = c.follow.value_or(false);
+  base.reach = viz::kSphereReach;
+  return sphere_settings(c, base);
+}
+
 class SpherePanel : public Panel {
  public:
   SpherePanel(const PanelContext& ctx, std::size_t index)
-      : ctx_(ctx), body_(view_body(ctx, index)),
-        settings_(sphere_settings(ctx.scene.render.explain.views[index].camera, viz::SphereCameraSettings{})) {
+      : ctx_(ctx), body_(view_body(ctx, index)), index_(index) {
+    const scene::ViewCamera& c = ctx.scene.render.explain.views[index].camera;
+    const Eigen::Vector3d pi0 = ctx.runs.empty() || ctx.runs[0].frames.empty()
+                                    ? Eigen::Vector3d::UnitY()
+                                    : Eigen::Vector3d(momentum_body(ctx.runs[0].frames[0][body_]));
+    settings_ = view_camera(c, ctx.scene.bodies[body_].model.inertia, pi0);
     if (ctx.runs.empty()) return;
     // Followed from t = 0 through every path sample: frame k alone gets the pose of a full run.
     std::vector<Eigen::Vector3d> pi;
@@ -50,7 +67,9 @@ class SpherePanel : public Panel {
     if (kk < 0) return v;
     viz::MomentumSphereInput in = input(kk);
     const scene::Run& run = ctx_.runs[0];
-    for (std::size_t j = 0; j < run.path_end(kk); ++j) in.history.push_back(momentum_body(run.path[j][body_]));
+    const double now = run.path_t[run.path_end(kk) - 1];
+    for (std::size_t j = 0; j < run.path_end(kk); ++j)
+      if (run.path_t[j] >= now - kPiTailSeconds) in.history.push_back(momentum_body(run.path[j][body_]));
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
     viz::build_momentum_sphere(v, in);
     return v;
@@ -66,15 +85,15 @@ class SpherePanel : public Panel {
       in.two_E = in.momentum.dot(m.inv_inertia.cwiseProduct(in.momentum));
     }
     in.camera = settings_;
-    in.key = false;  // the layout draws it, beside the content
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     in.fit_radius = kFitRadius;
+    in.energy_ellipsoid = ctx_.scene.render.explain.views[index_].energy_ellipsoid;
     return in;
   }
 
   const PanelContext& ctx_;
-  std::size_t body_;
+  std::size_t body_, index_;
   viz::SphereCameraSettings settings_;
   std::vector<viz::SpherePose> track_;  // the camera at each path sample
   glm::vec2 size_{1, 1};

@@ -65,6 +65,7 @@ class PlotPanel : public Panel {
     if (!(hi >= lo)) lo = -1, hi = 1;
     const double pad = 0.08 * std::max(hi - lo, 1e-12 + 1e-9 * std::abs(hi));
     lo_ = lo - pad, hi_ = hi + pad;
+    if (vc_.y_range) lo_ = (*vc_.y_range)[0], hi_ = (*vc_.y_range)[1];  // the scene's own value axis
   }
   std::string name() const override { return "plot"; }
   void fit(glm::vec2 size) override { size_ = size; }

@@ -3,6 +3,8 @@
 // until the construction, its arrows and both curves of the whole video stay
 // inside the content rectangle; its key beside it.
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "compose/camera_fit.hpp"
 #include "compose/panel.hpp"
@@ -16,6 +18,18 @@ namespace {
 
 constexpr double kPoinsotMargin = 0.04;
 constexpr long kPoinsotFitSamples = 120;
+constexpr double kPoinsotClosest = 0.5;
+
+// Points on the inertia ellipsoid's surface (its unit sphere under its model), for the camera fit.
+void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& out) {
+  constexpr int kLat = 8, kLon = 16;
+  for (int i = 0; i <= kLat; ++i)
+    for (int j = 0; j < kLon; ++j) {
+      const double th = std::numbers::pi * i / kLat, ph = 2 * std::numbers::pi * j / kLon;
+      const glm::dvec3 u(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+      out.push_back(glm::dvec3(sf.model * glm::dvec4(u, 1.0)));
+    }
+}
 
 class PoinsotPanel : public Panel {
  public:
@@ -36,9 +50,12 @@ class PoinsotPanel : public Panel {
       Shot s{v.camera, solid_points(v)};
       for (const viz::PolylineItem& l : v.polylines)
         if (!l.name.empty()) s.points.insert(s.points.end(), l.points.begin(), l.points.end());
+      for (const viz::SurfaceItem& sf : v.surfaces)
+        if (sf.name == "ellipsoid") add_ellipsoid_points(sf, s.points);
       shots.push_back(std::move(s));
     }
-    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kPoinsotMargin);
+    // Closer too: the construction, not the plane (cut at the content's edges), fills the content.
+    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kPoinsotMargin, kPoinsotClosest);
   }
 
   viz::View content(long k) const override {
@@ -67,7 +84,6 @@ class PoinsotPanel : public Panel {
     in.camera.azimuth_deg = c.azimuth_deg.value_or(in.camera.azimuth_deg);
     in.camera.elevation_deg = c.elevation_deg.value_or(in.camera.elevation_deg);
     in.camera.distance = c.distance.value_or(in.camera.distance);
-    in.key = false;  // the layout draws it, beside the content
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     viz::View v;

@@ -15,10 +15,13 @@ namespace {
 
 constexpr double kMargin = 0.04;  // of the content's half size, kept clear at each edge
 constexpr long kFitSamples = 240;  // frames looked at to fit the camera
+constexpr double kClosest = 0.1;   // a camera moves at most this much closer to fit
+constexpr double kFillMargin = 0.1;  // room around what a camera moved closer frames
 
 class WorldPanel : public Panel {
  public:
-  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed) : ctx_(ctx), run_(run), keyed_(keyed) {}
+  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewCamera* own = nullptr)
+      : ctx_(ctx), run_(run), keyed_(keyed), own_(own && own->position ? own : nullptr) {}
   std::string name() const override { return "world"; }
   std::vector<viz::KeyEntry> key() const override { return keyed_ ? bodies_key(ctx_, std::nullopt) : std::vector<viz::KeyEntry>{}; }
   std::vector<std::string> overlay(long k) const override { return ctx_.world.overlay(run_, k); }
@@ -27,15 +30,40 @@ class WorldPanel : public Panel {
   void fit(glm::vec2 size) override {
     size_ = size;
     const double aspect = size.x / std::max(size.y, 1.0f);
-    camera_ = scene_camera(ctx_.scene, ctx_.runs, aspect);
+    camera_ = own_ ? view_camera(*own_) : scene_camera(ctx_.scene, ctx_.runs, aspect);
+    // The cells of a [compare] grid share one camera, fitted to every run, so
+    // the methods' bodies are drawn at one scale side by side.
+    const bool grid = ctx_.scene.render.explain.views.empty() && ctx_.runs.size() > 1;
     std::vector<Shot> shots;
     const long n = ctx_.world.clock().count();
-    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
-      const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
-      const viz::View v = ctx_.world.view(run_, k, camera_, int(size.x), int(size.y));
-      shots.push_back({v.camera, solid_points(v)});
+    for (std::size_t r = 0; r < ctx_.runs.size(); ++r) {
+      if (!grid && r != run_) continue;
+      for (long i = 0; i < std::min(n, kFitSamples); ++i) {
+        const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
+        const viz::View v = ctx_.world.view(r, k, camera_, int(size.x), int(size.y));
+        shots.push_back({v.camera, solid_points(v)});
+      }
     }
-    camera_ = backed_off(camera_, backoff(shots, aspect, kMargin));
+    camera_ = backed_off(camera_, backoff(shots, aspect, margins(size), closest()));
+  }
+
+  // A camera set for the whole frame (the scene's) frames its view of a
+  // laid-out frame loosely, and so does an automatic one (bounding spheres):
+  // both move closer until the whole video's bodies and arrows fill the
+  // content. A classic single view keeps the scene's camera, backed off only
+  // where something would leave the frame.
+  double closest() const {
+    if (own_) return 1.0;  // the view's own camera is where its author put it (backed off only if something leaves)
+    const bool laid_out = !ctx_.scene.render.explain.views.empty() || ctx_.runs.size() > 1;
+    return laid_out || ctx_.scene.render.camera.automatic ? kClosest : 1.0;
+  }
+  // Room at the edges: the margin, and above and below a name label's line
+  // (labels sit beside their bodies: above or below, or at their sides).
+  Margins margins(glm::vec2 size) const {
+    const double m = closest() < 1 ? kFillMargin : kMargin;
+    if (!ctx_.scene.render.explain.labels) return m;
+    const double line = 1.2 * 1.1 * ctx_.world.font_px();
+    return {m, std::max(m, line / (0.5 * std::max(size.y, 1.0f)))};
   }
 
   viz::View content(long k) const override {
@@ -48,7 +76,18 @@ class WorldPanel : public Panel {
   const PanelContext& ctx_;
   std::size_t run_;
   bool keyed_;
+  const scene::ViewCamera* own_;  // the view's own camera (a world view's `camera` table), else the scene's
   glm::vec2 size_{1, 1};
+
+  viz::Camera view_camera(const scene::ViewCamera& c) const {
+    auto g = [](const std::array<double, 3>& a) { return glm::dvec3(a[0], a[1], a[2]); };
+    viz::Camera cam;
+    cam.position = g(*c.position);
+    cam.target = g(c.target.value_or(std::array<double, 3>{}));
+    cam.up = g(c.up.value_or(std::array<double, 3>{0, 0, 1}));
+    cam.fov_y_deg = c.fov_y_deg.value_or(ctx_.scene.render.camera.fov_y_deg);
+    return cam;
+  }
   viz::Camera camera_;
 };
 
@@ -59,13 +98,14 @@ std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std
   for (std::size_t i = 0; i < ctx.scene.bodies.size(); ++i) {
     if (only && i != *only) continue;
     const Eigen::Vector3f c = 0.75f * ctx.scene.bodies[i].color.cast<float>();
-    bodies.emplace_back(ctx.scene.bodies[i].name, viz::Color(c.x(), c.y(), c.z(), 1.0f));
+    bodies.emplace_back(ctx.scene.bodies[i].label.empty() ? ctx.scene.bodies[i].name : ctx.scene.bodies[i].label,
+                        viz::Color(c.x(), c.y(), c.z(), 1.0f));  // the display name
   }
   return viz::bodies_key(ctx.world.draw(), bodies);
 }
 
-std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t) {
-  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key);
+std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index) {
+  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &ctx.scene.render.explain.views[index].camera);
 }
 
 std::unique_ptr<Panel> make_run_panel(const PanelContext& ctx, std::size_t r) {

@@ -1,0 +1,199 @@
+#include "viz/sphere_figure.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "viz/captions.hpp"
+#include "viz/momentum_sphere.hpp"
+#include "viz/palette.hpp"
+#include "viz/scene_view.hpp"
+#include "viz/sphere_camera.hpp"
+#include "viz/text_layout.hpp"
+
+namespace tumble::viz {
+
+namespace {
+
+glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+void refine(const std::function<Eigen::Vector3d(double)>& at, double t0, const Eigen::Vector3d& p0, double t1,
+            const Eigen::Vector3d& p1, double tol, int depth, std::vector<double>& out) {
+  const double tm = 0.5 * (t0 + t1);
+  const Eigen::Vector3d pm = at(tm);
+  if (depth < 10 && ((pm - 0.5 * (p0 + p1)).norm() > tol || (p1 - p0).norm() > 30 * tol)) {
+    refine(at, t0, p0, tm, pm, tol, depth + 1, out);
+    refine(at, tm, pm, t1, p1, tol, depth + 1, out);
+    return;
+  }
+  out.push_back(t1);
+}
+
+// The faint look of what lies behind the ball: a third of the colour's opacity.
+Color faint(Color c) {
+  c.a *= 0.32f;
+  return c;
+}
+
+// Where the eye's ray towards p first meets the sphere of radius r (p itself when it misses).
+glm::dvec3 near_side(const glm::dvec3& eye, const glm::dvec3& p, double r) {
+  const glm::dvec3 d = p - eye;
+  const double a = glm::dot(d, d), b = 2 * glm::dot(eye, d), c = glm::dot(eye, eye) - r * r;
+  const double disc = b * b - 4 * a * c;
+  if (a <= 0 || disc < 0) return p;
+  return eye + ((-b - std::sqrt(disc)) / (2 * a)) * d;
+}
+
+}  // namespace
+
+std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>& at, const std::vector<double>& params,
+                                   double tolerance) {
+  std::vector<double> out;
+  if (params.empty()) return out;
+  out.push_back(params[0]);
+  Eigen::Vector3d prev = at(params[0]);
+  for (std::size_t i = 1; i < params.size(); ++i) {
+    const Eigen::Vector3d next = at(params[i]);
+    refine(at, params[i - 1], prev, params[i], next, tolerance, 0, out);
+    prev = next;
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(double)>& at,
+                                           const std::vector<double>& params, double tolerance) {
+  std::vector<Eigen::Vector3d> out;
+  for (double t : refined_params(at, params, tolerance)) out.push_back(at(t));
+  return out;
+}
+
+namespace {
+
+// Whether `box` lies on one of the six half-axes as `project` draws them (the
+// + arrows thickened by their heads' `head_px`).
+bool on_an_axis(const ViewportProjection& project, const Box& box, float head_px) {
+  glm::vec2 base, tip;
+  if (!project(glm::dvec3(0), base)) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int sign : {1, -1}) {
+      glm::dvec3 e(0);
+      e[i] = sign * kAxisReach;
+      if (!project(e, tip)) continue;
+      for (int s = 0; s <= 24; ++s) {
+        const glm::vec2 p = base + (tip - base) * (static_cast<float>(s) / 24);
+        const float r = s == 24 && sign > 0 ? head_px + 1 : 2.5f;
+        if (p.x + r > box.x0 && p.x - r < box.x1 && p.y + r > box.y0 && p.y - r < box.y1) return true;
+      }
+    }
+  return false;
+}
+
+}  // namespace
+
+void add_sphere_axes(View& view, float width_px, float height_px, float label_px) {
+  static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
+  static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
+  const ViewportProjection project(view.camera, width_px, height_px);
+  // The sphere's radius on screen (a perspective silhouette is a little wider than |L|).
+  glm::vec2 c0, c1;
+  const glm::dvec3 side = glm::normalize(glm::cross(view.camera.target - view.camera.position, view_up(view.camera)));
+  const float ball_px = project(glm::dvec3(0), c0) && project(1.06 * side, c1) ? glm::length(c1 - c0) : 0.0f;
+  float head_px = 0;
+  for (int i = 0; i < 3; ++i) {
+    glm::dvec3 e(0);
+    e[i] = kAxisReach;
+    view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
+    view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.75f), 2.0f, false});
+    glm::vec2 tip, head;
+    if (project(e, tip) && project(e + 0.029 * glm::normalize(view.camera.up), head))
+      head_px = std::max(head_px, glm::length(head - tip));
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int sign : {1, -1}) {
+      glm::dvec3 end(0);
+      end[i] = sign * kAxisReach;
+      glm::vec2 tip, base;
+      if (hidden_by_ball(view.camera.position, end, kSphereBall) || !project(end, tip) || !project(glm::dvec3(0), base))
+        continue;
+      TextItem t{sign > 0 ? kPlus[i] : kMinus[i], {0, 0}, label_px, kAxisColors[i]};
+      const InkSpan ink = text_ink(t.text, label_px);
+      const glm::vec2 along = tip - base;
+      const float len = glm::length(along);
+      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : glm::vec2(0, -1);
+      // An end in front of the ball: its label at the ball's rim, off the curves on it.
+      const glm::vec2 from = len < ball_px ? base + ball_px * d0 : tip;
+      const float past = sign > 0 ? head_px : 1.0f;
+      // Along the axis as drawn, else turned a little at a time until clear of the axes.
+      for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f}) {
+        const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
+        const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.25f * label_px;
+        const glm::vec2 centre = from + reach * d;
+        t.position_px = {centred_x(t.text, label_px, centre.x), centre.y - 0.5f * label_px};
+        if (!on_an_axis(project, text_box(t), head_px)) break;
+      }
+      // Pushed back inside the view where it would leave it (a narrow view, an axis along its edge).
+      const Box b = text_box(t);
+      t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - width_px);
+      t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - height_px);
+      t.name = std::string(sign > 0 ? "axis_label_e" : "axis_label_-e") + char('1' + i);
+      view.texts.push_back(std::move(t));
+    }
+}
+
+void add_saddles(View& view) {
+  const Color ring = color_of(Meaning::separatrix);
+  for (int sign : {1, -1}) {
+    // A dark dot in a sky-blue ring: where the two separatrix circles cross.
+    view.points.push_back({{0, sign * 1.0, 0}, 0.05, ring, sign > 0 ? "saddle_+e2" : "saddle_-e2"});
+    view.points.push_back({{0, sign * 1.02, 0}, 0.026, color_of(Meaning::ink), ""});
+  }
+}
+
+void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve, const Eigen::Vector3d& inertia,
+                          int count, Color color, double size) {
+  if (curve.size() < 3 || count <= 0) return;
+  std::vector<double> along{0};
+  for (std::size_t i = 1; i < curve.size(); ++i) along.push_back(along.back() + (curve[i] - curve[i - 1]).norm());
+  const double total = along.back();
+  if (total <= 0) return;
+  std::size_t j = 0;
+  for (int k = 0; k < count; ++k) {
+    const double s = total * (k + 0.5) / count;
+    while (j + 1 < along.size() && along[j + 1] < s) ++j;
+    const Eigen::Vector3d p = curve[j];
+    const Eigen::Vector3d v = p.cross(p.cwiseQuotient(inertia));  // dΠ/dt = Π × ω, up to |L|'s scale
+    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, g(p), 1.0)) continue;
+    const glm::dvec3 dir = g(v.normalized());
+    view.arrows.push_back({g(p) - 0.5 * size * dir, size * dir, 0.12 * size, color, ""});
+  }
+}
+
+void show_far_side(View& view, std::size_t first_polyline, double ball) {
+  const glm::dvec3 eye = view.camera.position;
+  const double front = 1.0 + 0.5 * (1.0 - ball);  // above the ball, below nothing on the sphere
+  std::vector<PolylineItem> out(view.polylines.begin(), view.polylines.begin() + static_cast<long>(first_polyline));
+  for (std::size_t i = first_polyline; i < view.polylines.size(); ++i) {
+    const PolylineItem& p = view.polylines[i];
+    // Runs of points on one side; a run's last point is the next run's first, so the line stays whole.
+    std::size_t start = 0;
+    while (start + 1 < p.points.size()) {
+      const bool hidden = hidden_by_ball(eye, p.points[start], ball);
+      std::size_t end = start + 1;
+      while (end + 1 < p.points.size() && hidden_by_ball(eye, p.points[end], ball) == hidden) ++end;
+      PolylineItem run{{}, hidden ? faint(p.color) : p.color, hidden ? 0.75f * p.width_px : p.width_px, p.fade,
+                       hidden ? "" : p.name};
+      for (std::size_t j = start; j <= end; ++j)
+        run.points.push_back(hidden ? near_side(eye, p.points[j], front) : p.points[j]);
+      out.push_back(std::move(run));
+      start = end;
+    }
+  }
+  view.polylines = std::move(out);
+  for (PointItem& pt : view.points)
+    if (!pt.name.empty() && hidden_by_ball(eye, pt.position, ball)) {
+      pt.position = near_side(eye, pt.position, front + pt.radius);
+      pt.color = faint(pt.color);
+      pt.radius *= 0.8;
+    }
+}
+
+}  // namespace tumble::viz

@@ -1,0 +1,51 @@
+// The momentum sphere drawn as a textbook figure: curves in closed form,
+// refined where they bend; ±e₁, ±e₂, ±e₃ labelled at every end that can be
+// seen; the saddles ±e₂ marked; arrows along the level curves giving the
+// direction of motion (dΠ/dt = Π × ω, ω = I⁻¹Π); and the far side of what a
+// viewer follows (separatrix, polhode, Π) shown faintly through the ball, as a
+// textbook draws a sphere's hidden half. GL-free.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "viz/draw_list.hpp"
+
+namespace tumble::viz {
+
+/// The curve `at` (parameter → point) through `params` (ascending), each
+/// interval halved until the curve's midpoint is within `tolerance` of the
+/// chord's and the chord within 30 `tolerance` long (at most 2¹⁰ pieces an interval).
+std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(double)>& at,
+                                           const std::vector<double>& params, double tolerance);
+
+/// The parameters refined_curve would draw `at` at.
+std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>& at, const std::vector<double>& params,
+                                   double tolerance);
+
+/// The axes' ends, |L| from the centre, and how far out their labels reach (about).
+inline constexpr double kAxisReach = 1.5, kAxisLabelReach = 1.65;
+
+/// Adds the axes through the sphere (+e_i arrows, −e_i lines) and a label at
+/// each end the ball does not hide and the view shows ("e₁" named
+/// axis_label_e1, "−e₁" named axis_label_-e1, ...): just past the end on
+/// screen, along the axis as drawn (at the ball's rim when the axis points at
+/// the camera), turned until it is clear of the six half-axes.
+void add_sphere_axes(View& view, float width_px, float height_px, float label_px);
+
+/// The saddles ±e₂ (points named saddle_+e2, saddle_-e2) on the unit sphere.
+void add_saddles(View& view);
+
+/// Small arrows along `curve` (units of |L|, closed) in the direction Π moves,
+/// `count` of them spread along its length; none where the ball hides them.
+void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve, const Eigen::Vector3d& inertia,
+                          int count, Color color, double size);
+
+/// The far-side parts of polylines [`first`, end) and of the named points of
+/// `view` (units of |L|): brought along the eye's rays to the ball's near side
+/// (same pixels) and drawn faint, so they show through it.
+void show_far_side(View& view, std::size_t first_polyline, double ball);
+
+}  // namespace tumble::viz

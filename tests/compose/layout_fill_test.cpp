@@ -1,0 +1,165 @@
+// How the layout serves a lesson's figure: declared viewports fill the views'
+// area (no empty band where captions once went), keys that views would repeat
+// become one frame key in rows of its own strip, world cameras come close
+// enough for the whole video's bodies to fill their content, and the cells of
+// a comparison grid share one camera. GL-free: plans and draw lists.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "compose/camera_fit.hpp"
+#include "compose/frame_builder.hpp"
+#include "compose/frame_layout.hpp"
+#include "compose/view_layout.hpp"
+#include "scene/frame_runs.hpp"
+#include "scene/scene.hpp"
+#include "viz/key.hpp"
+#include "viz/palette.hpp"
+#include "viz/text_layout.hpp"
+
+namespace {
+
+using namespace tumble;
+using compose::FrameNeeds;
+using compose::FramePlan;
+using compose::ViewNeeds;
+
+std::vector<viz::KeyEntry> sphere_like_key() {
+  return {viz::key_entry(viz::Meaning::momentum_point, "\u03a0: L in body axes"),
+          viz::key_entry(viz::Meaning::polhode, "polhode"), viz::key_entry(viz::Meaning::separatrix, "separatrix")};
+}
+
+ViewNeeds view(std::array<double, 4> viewport, std::vector<viz::KeyEntry> key = {}) {
+  ViewNeeds v;
+  v.viewport = viewport;
+  v.kind = "momentum_sphere";
+  v.title = "a view";
+  v.key = std::move(key);
+  return v;
+}
+
+FrameNeeds needs(std::vector<ViewNeeds> views) {
+  FrameNeeds n;
+  n.width = 960, n.height = 540;
+  n.views = std::move(views);
+  n.captions = {"a caption at the foot of the frame"};
+  return n;
+}
+
+TEST(LayoutFill, DeclaredViewportsFillTheViewsArea) {
+  // As dzhanibekov_explained declares them: 0.6 + 0.3 of the height, 0.1 once kept for captions.
+  const FramePlan p = compose::plan_frame(
+      needs({view({0, 0, 0.5, 0.6}), view({0.5, 0, 0.5, 0.6}), view({0, 0.6, 1, 0.3})}));
+  ASSERT_GT(p.captions.y1, p.captions.y0);
+  const compose::ViewPlan& plot = p.views[2];
+  EXPECT_NEAR(plot.y + plot.height, p.captions.y0, 1.0) << "the lowest view reaches the caption strip";
+  EXPECT_EQ(p.views[0].y, 0);
+  // Proportions kept: the top row is twice the bottom one.
+  EXPECT_NEAR(double(p.views[0].height) / plot.height, 2.0, 0.02);
+  EXPECT_NEAR(p.views[0].y + p.views[0].height, plot.y, 1);
+}
+
+TEST(LayoutFill, RepeatedKeysBecomeOneFrameKeyInItsOwnStrip) {
+  const std::vector<viz::KeyEntry> world = {viz::key_entry(viz::Meaning::L, "L, fixed in space")};
+  const FramePlan p = compose::plan_frame(needs({view({0, 0, 1, 0.5}, world), view({0, 0.5, 0.33, 0.5}, sphere_like_key()),
+                                                 view({0.33, 0.5, 0.34, 0.5}, sphere_like_key()),
+                                                 view({0.67, 0.5, 0.33, 0.5}, sphere_like_key())}));
+  for (const compose::ViewPlan& v : p.views) {
+    EXPECT_TRUE(v.key.empty());
+    EXPECT_FALSE(v.key_at);
+    EXPECT_FLOAT_EQ(v.content.x1, float(v.width) - 0.5f * viz::text_px(viz::TextRole::key, 540)) << "no key strip";
+  }
+  ASSERT_EQ(p.frame_key.size(), 4u);  // every entry once: L and the spheres' three
+  EXPECT_EQ(p.frame_key[0].text, "L, fixed in space");
+  // Its strip lies between the views and the captions.
+  EXPECT_GT(p.frame_key_box.y1, p.frame_key_box.y0);
+  EXPECT_LE(p.frame_key_box.y1, p.captions.y0);
+  for (const compose::ViewPlan& v : p.views) EXPECT_LE(float(v.y + v.height), p.frame_key_box.y0 + 1);
+  // Drawn in rows inside it, each entry's text once.
+  viz::DrawList dl;
+  const float px = p.frame_key_px;
+  const viz::Box b = viz::add_key_row(dl.texts, p.frame_key, 480, p.frame_key_box.y0 + 0.5f * px, px, 960 - px);
+  EXPECT_GE(b.y0, p.frame_key_box.y0);
+  EXPECT_LE(b.y1, p.frame_key_box.y1);
+  for (const viz::TextItem& t : dl.texts) {
+    const viz::Box tb = viz::text_box(t);
+    EXPECT_GE(tb.x0, b.x0);
+    EXPECT_LE(tb.x1, b.x1 + 0.5f);
+    for (const viz::TextItem& u : dl.texts) {
+      if (&u != &t) {
+        EXPECT_FALSE(tb.overlaps(viz::text_box(u))) << t.text << " / " << u.text;
+      }
+    }
+  }
+}
+
+TEST(LayoutFill, KeysOfTheirOwnStayBesideTheirViews) {
+  // dzhanibekov_explained's: the world's and the sphere's keys share only the axes' entry.
+  const viz::KeyEntry axes{viz::Swatch::line, {viz::kAxisColors[0], viz::kAxisColors[1], viz::kAxisColors[2]}, "e1 e2 e3"};
+  std::vector<viz::KeyEntry> world = {axes, viz::key_entry(viz::Meaning::L, "L")}, sphere = sphere_like_key();
+  sphere.insert(sphere.begin(), axes);
+  const FramePlan p = compose::plan_frame(needs({view({0, 0, 0.5, 0.6}, world), view({0.5, 0, 0.5, 0.6}, sphere)}));
+  EXPECT_TRUE(p.frame_key.empty());
+  EXPECT_EQ(p.views[0].key.size(), 2u);
+  EXPECT_EQ(p.views[1].key.size(), 4u);
+  EXPECT_TRUE(p.views[0].key_at && p.views[1].key_at);
+}
+
+// The largest share of its content's half width or height the whole video's
+// points reach in view `i` (1: the content's edge).
+double fill(const scene::Scene& s, std::size_t i, int w, int h) {
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  const compose::FrameBuilder fb(s, runs, fps, w, h);
+  double reach = 0;
+  for (long k = 0; k < count; k += 3) {
+    const viz::DrawList dl = fb.build(k);
+    if (dl.views.size() <= i) continue;
+    const viz::View& v = dl.views[i];
+    const compose::PixelRect content =
+        compose::content_rect(v, compose::view_rect(v, int(i), int(dl.views.size()), dl.columns, w, h));
+    const compose::CameraMatrices m = compose::camera_matrices(v.camera, content.aspect());
+    for (const glm::dvec3& p : compose::solid_points(v)) {
+      const glm::vec4 c = m.proj * m.view * glm::vec4(glm::vec3(p), 1.0f);
+      if (c.w > 0) reach = std::max({reach, double(std::abs(c.x / c.w)), double(std::abs(c.y / c.w))});
+    }
+  }
+  return reach;
+}
+
+scene::Scene shipped(const char* name) {
+  return scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / name);
+}
+
+TEST(LayoutFill, WorldViewsComeCloseEnoughForTheBodiesToFillTheirContent) {
+  // The scene's camera was set for a whole frame; in its view the T-handle fills the content.
+  EXPECT_GT(fill(shipped("dzhanibekov_explained.toml"), 0, 960, 540), 0.8);
+  EXPECT_LE(fill(shipped("dzhanibekov_explained.toml"), 0, 960, 540), 1.0);
+  // With name labels a label's line stays free above and below the bodies (here about a fifth of the half height).
+  EXPECT_GT(fill(shipped("tennis_racket.toml"), 0, 960, 540), 0.75);
+  // A comparison grid's automatic camera, every cell.
+  const scene::Scene mc = shipped("methods_compare.toml");
+  double widest = 0;
+  for (std::size_t i = 0; i < 4; ++i) widest = std::max(widest, fill(mc, i, 320, 240));
+  EXPECT_GT(widest, 0.8);
+  EXPECT_LE(widest, 1.0);
+}
+
+TEST(LayoutFill, ComparisonCellsShareOneCamera) {
+  const scene::Scene s = shipped("methods_compare.toml");
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  ASSERT_GT(runs.size(), 1u);
+  const compose::FrameBuilder fb(s, runs, fps, 320, 240);
+  const viz::DrawList dl = fb.build(count / 2);
+  for (const viz::View& v : dl.views) {
+    EXPECT_EQ(v.camera.position, dl.views[0].camera.position);
+    EXPECT_EQ(v.camera.target, dl.views[0].camera.target);
+  }
+}
+
+}  // namespace

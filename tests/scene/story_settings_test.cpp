@@ -1,0 +1,187 @@
+// The story tools of an explanatory video: the reading-time and overlap
+// warnings, holds at an event, views that appear at anchored times, display
+// names, caption positions, a plot's y-range, a world view's camera, the
+// energy ellipsoid switch, and the legend refused where [[views]] have keys;
+// each bad value an error at its file:line:col.
+#include <gtest/gtest.h>
+
+#include "scene/frame_clock.hpp"
+#include "scene/scene.hpp"
+#include "scene_error.hpp"
+
+namespace tumble::scene {
+namespace {
+
+// A T-handle that flips at about 1.45 s and 4.2 s (tumble info).
+const char* kBase = R"(name = "story"
+[simulation]
+method = "exact"
+duration = 6.0
+fps = 30
+[[bodies]]
+name = "t_handle"
+shape = { type = "t_handle", handle_length = 0.8, stem_length = 0.4, thickness = 0.1, resolution = 20, mass = 1.0 }
+omega_body = [0.02, 8.0, 0.02]
+[[views]]
+kind = "world"
+)";
+
+Scene load(const std::string& extra) { return load_scene_from_string(kBase + extra, "story.toml"); }
+std::string error_of(const std::string& extra) { return scene_error(kBase + extra, "story.toml"); }
+
+std::size_t count_with(const std::vector<std::string>& lines, const std::string& part) {
+  return static_cast<std::size_t>(std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
+    return l.find(part) != std::string::npos;
+  }));
+}
+
+TEST(ReadingTime, ACaptionTooShortToReadIsWarnedAtItsLine) {
+  // 15 words for 1 s of video: it needs 4.5 s at 0.3 s a word.
+  const Scene s = load(R"(
+[[captions]]
+start = 0.5
+end = 1.5
+text = "Spun about its middle axis the handle seems steady but it is not at all"
+)");
+  ASSERT_EQ(count_with(s.warnings, "captions[0].text"), 1u) << (s.warnings.empty() ? "" : s.warnings[0]);
+  const std::string& w = s.warnings[0];
+  EXPECT_EQ(w.rfind("story.toml:16:8: warning: captions[0].text: up for 1.00 s of video", 0), 0u) << w;
+  EXPECT_NE(w.find("15 words"), std::string::npos) << w;
+  EXPECT_NE(w.find("4.5 s"), std::string::npos) << w;
+}
+
+TEST(ReadingTime, SlowMotionAndHoldsGiveTheTimeAndSilenceIt) {
+  const std::string caption = R"(
+[[captions]]
+start = 0.5
+end = 1.5
+text = "Spun about its middle axis the handle seems steady but it is not at all"
+)";
+  EXPECT_EQ(count_with(load(caption + "[output]\ntime_scale = 0.2\n").warnings, "captions[0]"), 0u);  // 5 s of video
+  EXPECT_EQ(count_with(load(caption + "[[holds]]\nat = 1.0\nhold = 3.6\n").warnings, "captions[0]"), 0u);
+  EXPECT_EQ(count_with(load(caption + "[[holds]]\nat = 1.0\nhold = 3.0\n").warnings, "captions[0]"), 1u);  // 4.0 s < 4.5 s
+}
+
+TEST(ReadingTime, OverlappingCaptionsInOnePlaceAreWarned) {
+  const std::string two = R"(
+[[captions]]
+start = 0.0
+end = 3.0
+text = "One."
+[[captions]]
+start = 2.5
+end = 5.0
+text = "Two."
+)";
+  const Scene s = load(two);
+  ASSERT_EQ(count_with(s.warnings, "captions[1].start"), 1u);
+  EXPECT_NE(s.warnings[0].find("same time as captions[0]"), std::string::npos) << s.warnings[0];
+  // One caption strip: the captions agree on where it is.
+  EXPECT_NE(error_of(two + "position = \"top\"\n").find("story.toml:21:12: error: captions[1].position: every caption shares one strip"),
+            std::string::npos) << error_of(two + "position = \"top\"\n");
+}
+
+TEST(Holds, TheAnimationStopsAtTheEventForTheHold) {
+  const Scene s = load("[[holds]]\nat = \"flip 1\"\nhold = 2.0\n");
+  ASSERT_EQ(s.render.explain.holds.size(), 1u);
+  const double flip = s.render.explain.holds[0].at;
+  EXPECT_GT(flip, 1.0);
+  const FrameClock c = frame_clock(s, 30);
+  EXPECT_EQ(c.count(), 181 + 60);  // 6 s plus 2 s of video at 30 fps
+  const double tau0 = c.video_time(flip);
+  EXPECT_NEAR(tau0, flip, 1e-12);  // the run reaches the flip at its own speed, then stops
+  int held = 0;
+  for (long k = 0; k < c.count(); ++k) {
+    const double tau = static_cast<double>(k) / 30;
+    if (tau < tau0 - 1e-9) {
+      EXPECT_LT(c.time(k), flip) << k;
+    } else if (tau < tau0 + 2.0 - 1e-9) {
+      EXPECT_DOUBLE_EQ(c.time(k), flip) << k;
+      EXPECT_TRUE(c.in_hold(k)) << k;
+      ++held;
+    } else {
+      EXPECT_GT(c.time(k), flip) << k;
+      EXPECT_FALSE(c.in_hold(k)) << k;
+    }
+  }
+  EXPECT_EQ(held, 60);
+  EXPECT_NEAR(c.video_time_last(flip), flip + 2.0, 1e-12);  // a caption ending at the flip stays up through the hold
+  EXPECT_NEAR(c.video_time_last(1.0), 1.0, 1e-12);
+  EXPECT_NEAR(c.time(c.count() - 1), 6.0, 1e-9);
+}
+
+TEST(Holds, BadHoldsAreErrorsAtTheirPlace) {
+  EXPECT_NE(error_of("[[holds]]\nat = \"flip 9\"\n").find("story.toml:13:6: error: holds[0].at"), std::string::npos);
+  EXPECT_NE(error_of("[[holds]]\nat = 1.0\nhold = -1\n").find("holds[0].hold"), std::string::npos);
+  EXPECT_NE(error_of("[[holds]]\nhold = 2\n").find("holds[0].at: missing"), std::string::npos);
+  // Inside slow motion a hold stops the slowed animation as well.
+  const FrameClock c = frame_clock(load("[[slow_motion]]\nstart = 1\nend = 2\ntime_scale = 0.1\n[[holds]]\nat = 1.5\nhold = 1\n"), 10);
+  EXPECT_NEAR(c.video_time(1.5), 1 + 5, 1e-12);
+  EXPECT_NEAR(c.video_time(2.0), 1 + 10 + 1, 1e-12);
+  EXPECT_DOUBLE_EQ(c.time(65), 1.5);
+  EXPECT_EQ(c.count(), 161);  // 1 + 10 + 1 + 4 s of video at 10 fps
+}
+
+TEST(Reveal, AViewAppearsAtItsAnchoredTime) {
+  const Scene s = load("[[views]]\nkind = \"plot\"\nappear = \"flip 1 - 0.5\"\n");
+  ASSERT_EQ(s.render.explain.views.size(), 2u);
+  EXPECT_EQ(s.render.explain.views[0].appear, 0);
+  EXPECT_GT(s.render.explain.views[1].appear, 0.5);
+  EXPECT_EQ(s.render.explain.views[1].appear_text, "flip 1 - 0.5");
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nappear = \"later\"\n").find("story.toml:14:10: error: views[1].appear"),
+            std::string::npos);
+}
+
+TEST(StorySettings, DisplayNamesMayHaveSpacesIdentifiersMayNot) {
+  std::string text = kBase;
+  const std::string anchor = "name = \"t_handle\"\n";
+  text.insert(text.find(anchor) + anchor.size(), "display_name = \"the T-handle (wing nut)\"\n");
+  const Scene s = load_scene_from_string(text, "story.toml");
+  EXPECT_EQ(s.bodies[0].name, "t_handle");
+  EXPECT_EQ(s.bodies[0].label, "the T-handle (wing nut)");
+  EXPECT_EQ(load("").bodies[0].label, "t_handle");
+  text.replace(text.find("the T-handle"), 12, "two\\nlines");
+  EXPECT_NE(scene_error(text, "story.toml").find("story.toml:8:16: error: bodies[0].display_name"), std::string::npos)
+      << scene_error(text, "story.toml");
+}
+
+TEST(StorySettings, CaptionPositionPlotRangeWorldCameraEllipsoid) {
+  const Scene s = load(R"(camera = { position = [1, -2, 1], target = [0, 0, 0.1], fov_y = 30 }
+[[views]]
+kind = "plot"
+y_range = [-10, 10]
+[[views]]
+kind = "momentum_sphere"
+energy_ellipsoid = false
+key = false
+[[captions]]
+text = "Up here."
+position = "top"
+)");
+  const auto& v = s.render.explain.views;
+  ASSERT_EQ(v.size(), 3u);
+  ASSERT_TRUE(v[0].camera.position);
+  EXPECT_EQ((*v[0].camera.position)[1], -2);
+  EXPECT_EQ(*v[0].camera.fov_y_deg, 30);
+  ASSERT_TRUE(v[1].y_range);
+  EXPECT_EQ((*v[1].y_range)[0], -10);
+  EXPECT_FALSE(v[2].energy_ellipsoid);
+  EXPECT_FALSE(v[2].key);
+  EXPECT_TRUE(v[1].key);
+  EXPECT_EQ(s.render.explain.captions[0].position, CaptionPosition::top);
+}
+
+TEST(StorySettings, MisplacedOrBadValuesAreErrorsAtTheirPlace) {
+  EXPECT_NE(error_of("y_range = [1, 1]\n").find("only a plot view has a y_range"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ny_range = [2, 1]\n").find("story.toml:14:11: error: views[1].y_range: expected low < high"),
+            std::string::npos);
+  EXPECT_NE(error_of("energy_ellipsoid = false\n").find("only a momentum_sphere view"), std::string::npos);
+  EXPECT_NE(error_of("camera = { target = [0, 0, 0] }\n").find("views[0].camera.position: missing"), std::string::npos);
+  EXPECT_NE(error_of("[[captions]]\ntext = \"x\"\nposition = \"middle\"\n").find("story.toml:14:12: error: captions[0].position"),
+            std::string::npos);
+  EXPECT_NE(error_of("[draw]\nlegend = true\n").find("story.toml:13:10: error: draw.legend"), std::string::npos);
+  EXPECT_FALSE(load("").render.draw.legend);  // not drawn over the views' keys
+}
+
+}  // namespace
+}  // namespace tumble::scene

@@ -1,0 +1,136 @@
+// The momentum sphere as a textbook figure (GL-free): the level curves are
+// smooth where they pass the saddles, arrows point the way Π moves, each axis
+// is labelled at an end that can be seen from any camera, the saddles are
+// marked, and what lies behind the ball shows through it faintly.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "viz/momentum_sphere.hpp"
+#include "viz/sphere_camera.hpp"
+#include "viz/sphere_figure.hpp"
+
+namespace tumble::viz {
+namespace {
+
+const Eigen::Vector3d kI(0.0197, 0.0366, 0.0547);  // the T-handle's moments, kg·m²
+
+// Π just off the separatrix near +e₂ (ω = (0.02, 8, 0.02) rad/s).
+Eigen::Vector3d near_saddle() { return kI.cwiseProduct(Eigen::Vector3d(0.02, 8.0, 0.02)); }
+
+double two_E(const Eigen::Vector3d& pi) { return pi.cwiseAbs2().cwiseQuotient(kI).sum(); }
+
+TEST(SphereFigure, PolhodeNearTheSeparatrixIsSmoothNotJagged) {
+  const Eigen::Vector3d pi = near_saddle();
+  const double L = pi.norm();
+  const auto curves = polhodes(kI, L, two_E(pi), 192);
+  ASSERT_EQ(curves.size(), 2u);
+  for (const auto& c : curves) {
+    // On both surfaces, to round-off.
+    for (const Eigen::Vector3d& p : c) {
+      EXPECT_NEAR(p.norm() / L, 1, 1e-12);
+      EXPECT_NEAR(two_E(p) / two_E(pi), 1, 1e-9);
+    }
+    // No chord longer than 2 % of |L| (2.5 px on a 540p sphere): 192 even steps of the
+    // parameter made chords of up to 2.8 %, cutting across the bends near ±e₂.
+    double longest = 0;
+    for (std::size_t i = 1; i < c.size(); ++i) longest = std::max(longest, (c[i] - c[i - 1]).norm() / L);
+    EXPECT_LT(longest, 0.02);
+  }
+}
+
+TEST(SphereFigure, ArrowsPointTheWayPiMoves) {
+  const Eigen::Vector3d pi = near_saddle();
+  const double L = pi.norm();
+  View v;
+  v.camera = sphere_camera({}, textbook_camera(kI, pi));
+  std::vector<Eigen::Vector3d> unit;
+  const auto curves = polhodes(kI, L, two_E(pi), 96);
+  for (const Eigen::Vector3d& p : curves[0]) unit.push_back(p / L);
+  add_direction_arrows(v, unit, kI, 6, {1, 0, 1, 1}, 0.1);
+  ASSERT_GE(v.arrows.size(), 2u);
+  for (const ArrowItem& a : v.arrows) {
+    const glm::dvec3 mid = a.origin + 0.5 * a.vector;
+    const Eigen::Vector3d p(mid.x, mid.y, mid.z);
+    const Eigen::Vector3d dpi = p.cross(p.cwiseQuotient(kI));  // Euler: dΠ/dt = Π × ω
+    EXPECT_GT(dpi.normalized().dot(Eigen::Vector3d(a.vector.x, a.vector.y, a.vector.z).normalized()), 0.99);
+  }
+}
+
+TEST(SphereFigure, EveryAxisHasALabelledEndFromAnyDirection) {
+  int views = 0;
+  for (int az = 0; az < 360; az += 15)
+    for (int el = -80; el <= 80; el += 20) {
+      SphereCameraSettings s;
+      s.follow = false, s.azimuth_deg = az, s.elevation_deg = el, s.reach = kSphereReach;
+      View v;
+      v.camera = sphere_camera({}, s);
+      add_sphere_axes(v, 640, 360, 14);
+      for (int i = 1; i <= 3; ++i) {
+        const std::string plus = "axis_label_e" + std::to_string(i), minus = "axis_label_-e" + std::to_string(i);
+        int n = 0;
+        for (const TextItem& t : v.texts) n += t.name == plus || t.name == minus;
+        EXPECT_GE(n, 1) << "az " << az << " el " << el << ": e" << i << " has no label";
+      }
+      ++views;
+    }
+  EXPECT_GT(views, 100);
+}
+
+TEST(SphereFigure, TextbookCameraShowsAllSixEndsAndTheStartingSaddle) {
+  for (const Eigen::Vector3d& omega : {Eigen::Vector3d(0.02, 8, 0.02), Eigen::Vector3d(8, 0.3, 0.3),
+                                       Eigen::Vector3d(0.3, 0.3, 8), Eigen::Vector3d(-0.5, -8, 0.4)}) {
+    const Eigen::Vector3d pi = kI.cwiseProduct(omega);
+    View v;
+    v.camera = sphere_camera({}, textbook_camera(kI, pi));
+    add_sphere_axes(v, 640, 360, 14);
+    int labels = 0;
+    for (const TextItem& t : v.texts) labels += t.name.rfind("axis_label_", 0) == 0;
+    EXPECT_EQ(labels, 6) << omega.transpose();
+    // Π starts in front: on the near hemisphere, not hidden by the ball.
+    const Eigen::Vector3d u = pi.normalized();
+    EXPECT_FALSE(hidden_by_ball(v.camera.position, {u.x(), u.y(), u.z()}, kSphereBall)) << omega.transpose();
+  }
+}
+
+TEST(SphereFigure, SaddlesMarkedAndTheFarSideShowsFaintly) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  View v;
+  build_momentum_sphere(v, in);
+  int saddles = 0;
+  for (const PointItem& p : v.points) saddles += p.name == "saddle_+e2" || p.name == "saddle_-e2";
+  EXPECT_EQ(saddles, 2);
+  // The separatrix is drawn whole: its far half faint (a third of the opacity), brought in front of the ball.
+  int faint = 0, front = 0;
+  for (const PolylineItem& p : v.polylines) {
+    if (p.name == "separatrix") ++front;
+    if (p.name.empty() && std::abs(p.color.a - 0.32f * 0.95f) < 1e-6f) {
+      ++faint;
+      for (const glm::dvec3& x : p.points)
+        EXPECT_FALSE(hidden_by_ball(v.camera.position, x, kSphereBall));
+    }
+  }
+  EXPECT_GE(front, 2);
+  EXPECT_GE(faint, 2);
+}
+
+TEST(SphereFigure, EnergyEllipsoidHasItsOwnColourAndCanBeTurnedOff) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  View on;
+  build_momentum_sphere(on, in);
+  ASSERT_EQ(on.surfaces.size(), 1u);
+  EXPECT_EQ(glm::vec3(on.surfaces[0].color), glm::vec3(color_of(Meaning::energy_ellipsoid)));
+  EXPECT_NE(glm::vec3(on.surfaces[0].color), glm::vec3(color_of(Meaning::polhode)));
+  in.energy_ellipsoid = false;
+  View off;
+  build_momentum_sphere(off, in);
+  EXPECT_TRUE(off.surfaces.empty());
+  for (const KeyEntry& e : sphere_key(in)) EXPECT_EQ(e.text.find("energy ellipsoid"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tumble::viz
