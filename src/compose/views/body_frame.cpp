@@ -18,8 +18,6 @@ namespace {
 constexpr double kBodyMargin = 0.04;
 constexpr long kBodyFitSamples = 240;
 
-glm::dvec3 body_to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 // The camera at t = 0: aimed at the body from the view's azimuth and
 // elevation (default: the scene camera's direction), `distance` body radii away.
 viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, const scene::ViewCamera& c,
@@ -31,7 +29,7 @@ viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, con
   cam.fov_y_deg = s.render.camera.fov_y_deg;
   const double r = viz::box_radius(m);
   const double dist = c.distance.value_or(std::max(2.2, 1.15 / std::sin(glm::radians(cam.fov_y_deg) / 2))) * r;
-  cam.target = body_to_glm(s0.c);
+  cam.target = viz::to_glm(s0.c);
   cam.position = cam.target + dist * glm::dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
   cam.up = {0, 0, 1};
   cam.near_m = 0.05 * dist;
@@ -79,9 +77,9 @@ class BodyFramePanel : public Panel {
                                           ? Eigen::Quaterniond(cloud_orientation(m, sk) * cloud_orientation(m, s0).conjugate())
                                           : Eigen::Quaterniond::Identity();
       const glm::dvec3 off = cam.position - cam.target;
-      cam.target = body_to_glm(sk.c);
-      cam.position = cam.target + body_to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
-      cam.up = body_to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
+      cam.target = viz::to_glm(sk.c);
+      cam.position = cam.target + viz::to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
+      cam.up = viz::to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
     }
     viz::View v = ctx_.world.view(0, k, cam, int(size_.x), int(size_.y), body_);
     v.name = name();
