@@ -26,7 +26,9 @@ TEST_PACKAGES=(
   clang-14 clang libclang-rt-14-dev              # CI: libFuzzer targets (fuzz preset)
   python3-dev pybind11-dev python3-numpy         # the Python module (python/)
   python3-pytest python3-nbclient python3-ipykernel python3-matplotlib  # its tests, the notebook
+  jupyter-notebook                               # `jupyter notebook`, as docs/python.md says
   libtinygltf-dev                                # `tumble export --gltf`
+  chromium                                       # tests: three.js plays the glTF export (tools/gltf_viewer)
 )
 
 case "${1:-test}" in
@@ -57,8 +59,8 @@ if [ "${1:-test}" = test ]; then
     $SUDO apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nodejs npm
   fi
-  if [ ! -f tools/npm/node_modules/gltf-validator/package.json ]; then
-    echo "setup: npm install (tools/npm: gltf-validator)"
+  if [ ! -f tools/npm/node_modules/gltf-validator/package.json ] || [ ! -f tools/npm/node_modules/three/package.json ]; then
+    echo "setup: npm install (tools/npm: gltf-validator, three)"
     npm ci --prefix tools/npm --no-audit --no-fund --loglevel=error
   fi
 fi

@@ -5,7 +5,12 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <string>
+#include <string_view>
+
 #include <Eigen/Core>
+
+#include "scene/scene.hpp"
 
 namespace tumble::py_bind {
 
@@ -39,6 +44,17 @@ inline py::array_t<double> mat3(const Eigen::Matrix3d& m) {
 }
 /// A 3-vector from any Python sequence of 3 numbers (ValueError otherwise).
 Eigen::Vector3d to_vec3(const py::handle& h, const char* what);
+
+/// A Python argument as an override of scene key `key`, read by the scene
+/// loader as the command line's options are: its errors name it "tumble.call(arg=...)".
+inline scene::Override arg_override(std::string_view call, std::string_view arg, std::string key,
+                                    decltype(scene::Override::value) value) {
+  return {"tumble." + std::string(call) + "(" + std::string(arg) + "=...)", std::move(key), std::move(value)};
+}
+
+/// warnings.warn(text, tumble.TumbleWarning), taking the GIL; raises (throws
+/// py::error_already_set) where warnings are errors.
+void warn(const std::string& text);
 
 void add_errors(py::module_& m);
 void add_mass(py::module_& m);

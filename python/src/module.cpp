@@ -19,6 +19,7 @@ PyObject* g_scene_error = nullptr; // tumble.SceneError (also ValueError)
 PyObject* g_unreadable = nullptr;  // tumble.UnreadableFileError (also OSError)
 PyObject* g_diverged = nullptr;    // tumble.DivergedError (also ArithmeticError)
 PyObject* g_output = nullptr;      // tumble.OutputError (also OSError)
+PyObject* g_warning = nullptr;     // tumble.TumbleWarning (a UserWarning)
 
 PyObject* new_error(py::module_& m, const char* name, const char* doc, py::tuple bases) {
   const std::string full = std::string("tumble.") + name;
@@ -60,6 +61,11 @@ Eigen::Vector3d to_vec3(const py::handle& h, const char* what) {
   return x;
 }
 
+void warn(const std::string& text) {
+  py::gil_scoped_acquire gil;
+  if (PyErr_WarnEx(g_warning, text.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 void check_signals() {
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
@@ -77,6 +83,10 @@ void add_errors(py::module_& m) {
                          py::make_tuple(py::handle(g_error), py::handle(PyExc_ArithmeticError)));
   g_output = new_error(m, "OutputError", "A file could not be written.",
                        py::make_tuple(py::handle(g_error), py::handle(PyExc_OSError)));
+  g_warning = new_error(m, "TumbleWarning",
+                        "What the command line prints as 'tumble: warning: ...' (a dt too coarse for a body, a "
+                        "scene value adjusted), as a Python warning.",
+                        py::make_tuple(py::handle(PyExc_UserWarning)));
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

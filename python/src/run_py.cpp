@@ -7,7 +7,6 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
-#include "core/format.hpp"
 #include "core/integrator.hpp"
 #include "core/propagator.hpp"
 #include "scene/sampled_run.hpp"
@@ -28,29 +27,66 @@ py::array_t<double> column(py::object self) {
   return view((t.*member).data(), t.size(), cols, cols ? cols * sizeof(double) : sizeof(double), self);
 }
 
-/// The scene's [simulation] with simulate()'s method and dt, checked as the scene reader checks them.
+/// The scene's [simulation] with simulate()'s method and dt, read by the scene
+/// loader as `tumble simulate --method --dt` are (the same checks and texts).
 scene::SimulationConfig run_config(const scene::Scene& s, const std::optional<std::string>& method,
                                    std::optional<double> dt) {
-  scene::SimulationConfig sim = s.simulation;
-  if (method && *method == "auto") {
-    sim.automatic = true;
-  } else if (method) {
-    const std::optional<Method> m = parse_method(*method);
-    if (!m) throw InputError("method: expected auto or " + method_list() + ", found \"" + *method + "\"");
-    sim.automatic = false;
-    sim.step.method = *m;
-    sim.tolerance.reset();  // as `simulate --method NAME`: the named method wins
+  std::vector<scene::Override> o;
+  if (method) {
+    o.push_back(arg_override("simulate", "method", "simulation.method", *method));
+    if (*method != "auto") o.push_back(arg_override("simulate", "method", "simulation.tolerance", {}));  // the named method wins
   }
-  if (dt) {
-    if (!std::isfinite(*dt) || *dt <= 0) throw InputError("dt: expected a finite number > 0 (s)");
-    if (*dt > sim.duration) throw InputError("dt: expected at most the duration (" + std::to_string(sim.duration) + " s)");
-    sim.step.dt = *dt;
-  }
-  if (sim.duration / sim.step.dt > kMaxRunSteps) throw InputError("dt: the run would take more than " + format_number(kMaxRunSteps, 3) + " steps");
-  return sim;
+  if (dt) o.push_back(arg_override("simulate", "dt", "simulation.dt", *dt));
+  return scene::override_settings(s, o, "tumble.simulate()").simulation;
 }
 
 }  // namespace
+
+/// tumble.simulate and tumble.export_gltf.
+static void add_run_functions(py::module_& m) {
+  m.def(
+      "simulate",
+      [](const scene::Scene& s, const std::optional<std::string>& method, std::optional<double> dt,
+         const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& times) {
+        const scene::SimulationConfig sim = run_config(s, method, dt);
+        std::vector<double> t;
+        if (times) t.assign(times->data(), times->data() + times->size());
+        else t = scene::sample_times(sim.duration, sim.fps);
+        std::vector<Trajectory> out;
+        {
+          py::gil_scoped_release nogil;
+          out = scene::sample_run(s, sim, t, check_signals, warn);
+        }
+        std::vector<std::shared_ptr<Trajectory>> list;
+        for (Trajectory& x : out) list.push_back(std::make_shared<Trajectory>(std::move(x)));
+        return list;
+      },
+      py::arg("scene"), py::arg("method") = py::none(), py::arg("dt") = py::none(), py::arg("times") = py::none(),
+      "Integrates every body (method and dt default to the scene's) and samples it at `times` (s; default "
+      "k/fps up to the duration, as `tumble simulate`). Returns one Trajectory per body, equal to the CSV's rows. "
+      "method and dt are checked by the scene loader as `--method` and `--dt` are (tumble.SceneError); a dt too "
+      "coarse for a body warns (tumble.TumbleWarning) as the command line does. Releases the GIL; Ctrl-C raises "
+      "KeyboardInterrupt.");
+
+#ifdef TUMBLE_HAVE_GLTF
+  m.def(
+      "export_gltf",
+      [](const scene::Scene& s, const std::filesystem::path& path, std::optional<double> fps,
+         std::optional<double> key_tolerance) {
+        gltf::KeyOptions keys;  // fps is the scene's output.fps, checked by the loader as --fps is
+        if (fps) keys.fps = scene::override_settings(s, {arg_override("export_gltf", "fps", "output.fps", *fps)},
+                                                     "tumble.export_gltf()").output.fps;
+        keys.tolerance = key_tolerance.value_or(keys.tolerance);
+        keys.tolerance_name = "tumble.export_gltf(key_tolerance=...)";
+        py::gil_scoped_release nogil;
+        gltf::export_gltf(s, path, keys, "path", check_signals);
+      },
+      py::arg("scene"), py::arg("path"), py::arg("fps") = py::none(), py::kw_only(), py::arg("key_tolerance") = py::none(),
+      "Writes the simulated scene as glTF 2.0 (.glb or .gltf), as `tumble export --gltf`: y up, keys at fps "
+      "(default the scene's) at least and more where a body turns fast, so that a viewer's interpolation is within "
+      "key_tolerance (rad, default 0.001) of the simulation.");
+#endif
+}
 
 void add_run(py::module_& m) {
   py::class_<Trajectory, std::shared_ptr<Trajectory>>(
@@ -77,39 +113,7 @@ void add_run(py::module_& m) {
                t.step + ">";
       });
 
-  m.def(
-      "simulate",
-      [](const scene::Scene& s, const std::optional<std::string>& method, std::optional<double> dt,
-         const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& times) {
-        const scene::SimulationConfig sim = run_config(s, method, dt);
-        std::vector<double> t;
-        if (times) t.assign(times->data(), times->data() + times->size());
-        else t = scene::sample_times(sim.duration, sim.fps);
-        std::vector<Trajectory> out;
-        {
-          py::gil_scoped_release nogil;
-          out = scene::sample_run(s, sim, t, check_signals);
-        }
-        std::vector<std::shared_ptr<Trajectory>> list;
-        for (Trajectory& x : out) list.push_back(std::make_shared<Trajectory>(std::move(x)));
-        return list;
-      },
-      py::arg("scene"), py::arg("method") = py::none(), py::arg("dt") = py::none(), py::arg("times") = py::none(),
-      "Integrates every body (method and dt default to the scene's) and samples it at `times` (s; default "
-      "k/fps up to the duration, as `tumble simulate`). Returns one Trajectory per body, equal to the CSV's rows. "
-      "Releases the GIL; Ctrl-C raises KeyboardInterrupt.");
-
-#ifdef TUMBLE_HAVE_GLTF
-  m.def(
-      "export_gltf",
-      [](const scene::Scene& s, const std::filesystem::path& path, std::optional<double> fps) {
-        if (fps && (!std::isfinite(*fps) || *fps <= 0)) throw InputError("fps: expected a finite number > 0");
-        py::gil_scoped_release nogil;
-        gltf::export_gltf(s, path, fps.value_or(0), "path");
-      },
-      py::arg("scene"), py::arg("path"), py::arg("fps") = py::none(),
-      "Writes the simulated scene as glTF 2.0 (.glb or .gltf), as `tumble export --gltf`.");
-#endif
+  add_run_functions(m);
 }
 
 }  // namespace tumble::py_bind

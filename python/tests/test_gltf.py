@@ -8,6 +8,8 @@ import pathlib
 import shutil
 import subprocess
 
+import pytest
+
 import tumble
 from conftest import SCENES, SOURCE_DIR
 
@@ -51,3 +53,17 @@ def test_export_errors_name_the_option(tmp_path, cli):
     assert p.returncode == 2 and "--fps" in p.stderr
     p = cli("export", SCENES / "thrown_box.toml", "--gltf", tmp_path / "x.obj", check=False)
     assert p.returncode == 2 and "expected a file name ending in .glb or .gltf" in p.stderr
+
+
+def test_key_tolerance_option(tmp_path, cli):
+    """--fps is a minimum: keys are added where the body turns fast, fewer with a looser --key-tolerance."""
+    counts = {}
+    for tol in ("0.001", "0.05"):
+        p = cli("export", SCENES / "dzhanibekov.toml", "--gltf", tmp_path / f"k{tol}.glb", "--fps", "1",
+                "--key-tolerance", tol)
+        counts[tol] = int(p.stderr.split(" and ")[1].split()[0])  # "... 17 keyframes at 1 fps and N more ..."
+    assert counts["0.001"] > counts["0.05"] > 0
+    p = cli("export", SCENES / "dzhanibekov.toml", "--gltf", tmp_path / "x.glb", "--key-tolerance", "5", check=False)
+    assert p.returncode == 2 and p.stderr.startswith("--key-tolerance: error: expected a number in [1e-05, 0.5] rad, found 5")
+    with pytest.raises(tumble.SceneError, match=r"^tumble\.export_gltf\(key_tolerance=\.\.\.\): error: expected a number in \[1e-05, 0.5\] rad, found 5$"):
+        tumble.export_gltf(tumble.Scene.load(SCENES / "dzhanibekov.toml"), tmp_path / "y.glb", key_tolerance=5)

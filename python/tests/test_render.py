@@ -22,10 +22,10 @@ def test_render_frame_equals_cli_png(tmp_path, cli, scene, frame, aa):
     np.testing.assert_array_equal(tumble.render_frame(s, t=frame / s.output.fps, width=192, height=108, aa=aa), img)
 
 
-def test_render_frame_needs_a_frame_time():
-    s = tumble.Scene.load(SCENES / "dzhanibekov.toml")
-    with pytest.raises(tumble.SceneError, match="not a frame time"):
-        tumble.render_frame(s, t=0.01234, width=64, height=64)
+def test_render_frame_between_frames_is_the_nearest_frame():
+    s = tumble.Scene.load(SCENES / "dzhanibekov.toml")  # 30 fps
+    np.testing.assert_array_equal(tumble.render_frame(s, t=0.01234, width=64, height=64),
+                                  tumble.render_frame(s, frame=0, width=64, height=64))
 
 
 def test_render_writes_what_the_cli_writes(tmp_path, cli):

@@ -112,27 +112,35 @@ std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run
 
 }  // namespace
 
-viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<glm::dvec3>>& centres, double aspect) {
   const scene::CameraConfig& c = s.render.camera;
   viz::Camera camera;
   if (c.automatic) {
     // Frame every body over the whole run (all runs: a failing method may drift).
-    std::vector<glm::dvec3> centres;
+    std::vector<glm::dvec3> points;
     std::vector<double> radii;
-    for (const scene::Run& r : runs)
-      for (const auto& states : r.frames)
-        for (size_t i = 0; i < states.size(); ++i) {
-          if (!states[i].c.allFinite() || states[i].c.norm() > 1e6) continue;
-          centres.push_back(to_glm(states[i].c));
-          radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
-        }
-    return viz::auto_camera(centres, radii, c.fov_y_deg, aspect);
+    for (size_t i = 0; i < centres.size() && i < s.bodies.size(); ++i)
+      for (const glm::dvec3& p : centres[i]) {
+        if (!std::isfinite(p.x + p.y + p.z) || glm::length(p) > 1e6) continue;
+        points.push_back(p);
+        radii.push_back(viz::box_radius(s.bodies[i].model) * 1.15);
+      }
+    return viz::auto_camera(points, radii, c.fov_y_deg, aspect);
   }
   camera.position = to_glm(c.position);
   camera.target = to_glm(c.target);
   camera.up = to_glm(c.up);
   camera.fov_y_deg = c.fov_y_deg;
   return camera;
+}
+
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect) {
+  std::vector<std::vector<glm::dvec3>> centres(s.bodies.size());
+  if (s.render.camera.automatic)
+    for (const scene::Run& r : runs)
+      for (const auto& states : r.frames)
+        for (size_t i = 0; i < states.size() && i < centres.size(); ++i) centres[i].push_back(to_glm(states[i].c));
+  return scene_camera(s, centres, aspect);
 }
 
 viz::GridItem ground_grid(const scene::Scene& s, const std::vector<scene::Run>& runs) {

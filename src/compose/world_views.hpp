@@ -21,6 +21,9 @@ namespace tumble::compose {
 /// The scene's camera for a viewport of `aspect` (width/height): automatic
 /// (frames every body over all runs) or as configured.
 viz::Camera scene_camera(const scene::Scene& s, const std::vector<scene::Run>& runs, double aspect);
+/// The same from each body's centres of mass over the run (`centres[i]` for
+/// body i, world, m), for a caller that holds no runs (the glTF export).
+viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<glm::dvec3>>& centres, double aspect);
 
 class WorldViews {
  public:

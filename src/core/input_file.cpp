@@ -25,8 +25,16 @@ struct Fd {
 struct Input {
   dev_t dev;
   ino_t ino;
+  std::string path;  // absolute, to see later whether the file is still there
   std::string name;
 };
+
+/// Whether `i` still names a live file: a test process (or a long run) may
+/// remove an input, and the kernel then hands its inode number to a new file.
+bool still_there(const Input& i) {
+  struct stat st {};
+  return ::stat(i.path.c_str(), &st) == 0 && st.st_dev == i.dev && st.st_ino == i.ino;
+}
 
 std::mutex inputs_mutex;
 std::vector<Input>& inputs() {
@@ -90,7 +98,7 @@ std::optional<std::string> read_file_if_exists(const std::filesystem::path& path
   struct stat st {};
   const Fd f{open_regular(path, name, true, st)};
   if (f.fd < 0) return std::nullopt;
-  if (role == ReadRole::input) note_input(st.st_dev, st.st_ino, what + " " + path.string());
+  if (role == ReadRole::input) note_input(st.st_dev, st.st_ino, path, what + " " + path.string());
   return read_open_file(f.fd, max_bytes, name, static_cast<std::size_t>(st.st_size));
 }
 
@@ -99,21 +107,29 @@ std::string read_input_file(const std::filesystem::path& path, std::size_t max_b
   const std::string name = path.string() + ": " + what;
   struct stat st {};
   const Fd f{open_regular(path, name, false, st)};
-  if (role == ReadRole::input) note_input(st.st_dev, st.st_ino, what + " " + path.string());
+  if (role == ReadRole::input) note_input(st.st_dev, st.st_ino, path, what + " " + path.string());
   return read_open_file(f.fd, max_bytes, name, static_cast<std::size_t>(st.st_size));
 }
 
-void note_input(dev_t dev, ino_t ino, const std::string& what_and_path) {
+void note_input(dev_t dev, ino_t ino, const std::filesystem::path& path, const std::string& what_and_path) {
+  std::error_code ec;
+  std::filesystem::path abs = std::filesystem::absolute(path, ec);
+  if (ec) abs = path;
   const std::lock_guard<std::mutex> lock(inputs_mutex);
-  for (const Input& i : inputs())
-    if (i.dev == dev && i.ino == ino) return;
-  inputs().push_back({dev, ino, what_and_path});
+  std::vector<Input>& v = inputs();
+  v.erase(std::remove_if(v.begin(), v.end(), [&](const Input& i) { return i.dev == dev && i.ino == ino; }), v.end());
+  v.push_back({dev, ino, abs.string(), what_and_path});
 }
 
 std::optional<std::string> input_with_identity(dev_t dev, ino_t ino) {
   const std::lock_guard<std::mutex> lock(inputs_mutex);
-  for (const Input& i : inputs())
-    if (i.dev == dev && i.ino == ino) return i.name;
+  std::vector<Input>& v = inputs();
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    if (it->dev != dev || it->ino != ino) continue;
+    if (still_there(*it)) return it->name;
+    v.erase(it);  // removed since it was read: its inode number now belongs to another file
+    return std::nullopt;
+  }
   return std::nullopt;
 }
 

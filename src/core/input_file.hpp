@@ -45,9 +45,10 @@ std::optional<std::string> read_file_if_exists(const std::filesystem::path& path
 std::string file_kind(mode_t mode);
 
 /// Records an input read by other means (a streamed file): no output may replace it.
-void note_input(dev_t dev, ino_t ino, const std::string& what_and_path);
+void note_input(dev_t dev, ino_t ino, const std::filesystem::path& path, const std::string& what_and_path);
 
-/// "scene file scenes/a.toml" when (dev, ino) is an input of this run.
+/// "scene file scenes/a.toml" when (dev, ino) is an input of this run and that
+/// input is still at its path (a removed input's inode number may be reused).
 std::optional<std::string> input_with_identity(dev_t dev, ino_t ino);
 
 }  // namespace tumble

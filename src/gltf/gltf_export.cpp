@@ -1,180 +1,111 @@
 #include "gltf/gltf_export.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cstring>
-#include <limits>
+#include <cmath>
+#include <numbers>
 #include <sstream>
 
-#include <tiny_gltf.h>
-
+#include "compose/camera_fit.hpp"
+#include "compose/world_views.hpp"
 #include "core/error.hpp"
+#include "gltf/model_builder.hpp"
+#include "gltf/node_names.hpp"
 #include "io/atomic_file.hpp"
+#include "viz/body_look.hpp"
 #include "viz/scene_view.hpp"
 
 namespace tumble::gltf {
 
 namespace {
 
-/// Flat-shaded triangles: positions and normals per corner (3 floats each).
-struct Geometry {
-  std::vector<float> positions, normals;
-  std::vector<std::uint32_t> indices;
-};
+/// The light of tumble's renderer (render/renderer.cpp): fixed to the camera,
+/// from the upper left, towards the light in view space.
+const Eigen::Vector3d kLightFromCamera = Eigen::Vector3d(-0.35, 0.55, 0.75).normalized();
+/// Its KHR_lights_punctual intensity (lux): what three.js lights a matte body
+/// with as tumble does; Blender's importer reads it in its "Unitless" mode.
+constexpr double kLightLux = 3.0;
 
-/// Adds a triangle; one without area (a flat box's edge faces) is left out,
-/// as it has no normal (glTF requires unit normals).
-void add_triangle(Geometry& g, const std::array<Eigen::Vector3d, 3>& p) {
-  const Eigen::Vector3d cross = (p[1] - p[0]).cross(p[2] - p[0]);
-  if (!(cross.norm() > 0)) return;
-  const Eigen::Vector3f n = cross.normalized().cast<float>();
-  for (const Eigen::Vector3d& v : p) {
-    g.indices.push_back(static_cast<std::uint32_t>(g.positions.size() / 3));
-    for (int i = 0; i < 3; ++i) {
-      g.positions.push_back(static_cast<float>(v[i]));
-      g.normals.push_back(n[i]);
-    }
-  }
+/// How the world view fits the scene's camera (compose/views/world.cpp): an
+/// automatic camera moves up to 10× closer to fill the frame, 10 % clear at
+/// its edges; a camera the scene places only backs off, 4 % clear.
+constexpr double kAutoClosest = 0.1, kAutoMargin = 0.1, kFixedMargin = 0.04;
+constexpr int kFitSamples = 240;
+
+Eigen::Vector3d to_gltf(const Eigen::Vector3d& world) { return gltf_from_world() * world; }
+glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+/// A body's pose at time t as a viewer plays its keys (lerp, slerp), tumble's world.
+std::pair<Eigen::Vector3d, Eigen::Quaterniond> pose_at(const scene::Trajectory& tr, double t) {
+  std::size_t k = 0;
+  while (k + 2 < tr.size() && tr.t[k + 1] <= t) ++k;
+  if (tr.size() < 2) return {Eigen::Vector3d(tr.c[0], tr.c[1], tr.c[2]), Eigen::Quaterniond(tr.q[0], tr.q[1], tr.q[2], tr.q[3])};
+  const double u = std::clamp((t - tr.t[k]) / (tr.t[k + 1] - tr.t[k]), 0.0, 1.0);
+  const Eigen::Vector3d a(tr.c[3 * k], tr.c[3 * k + 1], tr.c[3 * k + 2]), b(tr.c[3 * k + 3], tr.c[3 * k + 4], tr.c[3 * k + 5]);
+  const Eigen::Quaterniond qa(tr.q[4 * k], tr.q[4 * k + 1], tr.q[4 * k + 2], tr.q[4 * k + 3]);
+  const Eigen::Quaterniond qb(tr.q[4 * k + 4], tr.q[4 * k + 5], tr.q[4 * k + 6], tr.q[4 * k + 7]);
+  return {(1 - u) * a + u * b, qa.slerp(u, qb)};
 }
 
-/// The box [lo, hi] (m), outward counter-clockwise faces.
-Geometry box_geometry(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-  Geometry g;
-  auto corner = [&](int bits) {
-    return Eigen::Vector3d(bits & 1 ? hi.x() : lo.x(), bits & 2 ? hi.y() : lo.y(), bits & 4 ? hi.z() : lo.z());
-  };
-  // Each face as four corners counter-clockwise seen from outside.
-  static constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  for (const auto& f : kFaces) {
-    add_triangle(g, {corner(f[0]), corner(f[1]), corner(f[2])});
-    add_triangle(g, {corner(f[0]), corner(f[2]), corner(f[3])});
-  }
-  return g;
-}
-
-void append_mesh(Geometry& g, const TriangleMesh& m) {
-  for (const auto& t : m.triangles) add_triangle(g, {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]});
-}
-
-/// A tinygltf::Model grown one buffer view at a time (one buffer, 4-byte aligned data).
-class Builder {
- public:
-  Builder() {
-    model_.asset.version = "2.0";
-    model_.asset.generator = "tumble " TUMBLE_VERSION;
-    model_.buffers.emplace_back();
-    model_.scenes.emplace_back();
-    model_.defaultScene = 0;
-  }
-  tinygltf::Model& model() { return model_; }
-
-  /// An accessor over `data` (`comps` floats per element), with min/max when asked.
-  int floats(const std::vector<float>& data, int type, int comps, int target, bool bounds) {
-    const int view = add_view(data.data(), data.size() * sizeof(float), target);
-    tinygltf::Accessor a;
-    a.bufferView = view;
-    a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    a.type = type;
-    a.count = data.size() / static_cast<std::size_t>(comps);
-    if (bounds) {
-      a.minValues.assign(comps, std::numeric_limits<double>::infinity());
-      a.maxValues.assign(comps, -std::numeric_limits<double>::infinity());
-      for (std::size_t i = 0; i < data.size(); ++i) {
-        const std::size_t c = i % static_cast<std::size_t>(comps);
-        a.minValues[c] = std::min<double>(a.minValues[c], data[i]);
-        a.maxValues[c] = std::max<double>(a.maxValues[c], data[i]);
+/// The scene's camera (compose::scene_camera) fitted as the world view fits
+/// it, to the bodies' principal boxes over the run, for a frame of `aspect`.
+viz::Camera fitted_camera(const scene::Scene& s, const std::vector<scene::Trajectory>& tracks, double aspect,
+                          std::size_t follow) {
+  std::vector<std::vector<glm::dvec3>> centres(tracks.size());
+  for (std::size_t i = 0; i < tracks.size(); ++i)
+    for (std::size_t k = 0; k < tracks[i].size(); ++k)
+      centres[i].emplace_back(tracks[i].c[3 * k], tracks[i].c[3 * k + 1], tracks[i].c[3 * k + 2]);
+  const viz::Camera cam = compose::scene_camera(s, centres, aspect);
+  std::vector<compose::Shot> shots;
+  for (int j = 0; j < kFitSamples && !tracks.empty(); ++j) {
+    const double t = s.simulation.duration * j / (kFitSamples - 1);
+    compose::Shot shot{cam, {}};
+    for (std::size_t i = 0; i < tracks.size(); ++i) {
+      const auto [c, q] = pose_at(tracks[i], t);
+      const RigidBodyModel& m = s.bodies[i].model;
+      for (int bits = 0; bits < 8; ++bits) {
+        const Eigen::Vector3d h = m.box.half_extents.cwiseProduct(Eigen::Vector3d(bits & 1 ? 1 : -1, bits & 2 ? 1 : -1, bits & 4 ? 1 : -1));
+        shot.points.push_back(to_glm(c + q * (m.cloud_from_principal * (m.box.center + h))));
+      }
+      if (i == follow) {  // the camera keeps its offset from the body it follows
+        shot.camera.position += to_glm(c) - cam.target;
+        shot.camera.target = to_glm(c);
       }
     }
-    model_.accessors.push_back(std::move(a));
-    return static_cast<int>(model_.accessors.size() - 1);
+    shots.push_back(std::move(shot));
   }
-
-  int material(const Eigen::Vector3d& rgb, const std::string& name) {
-    tinygltf::Material m;
-    m.name = name;
-    m.pbrMetallicRoughness.baseColorFactor = {rgb.x(), rgb.y(), rgb.z(), 1.0};
-    m.pbrMetallicRoughness.metallicFactor = 0.0;
-    m.pbrMetallicRoughness.roughnessFactor = 0.6;
-    model_.materials.push_back(std::move(m));
-    return static_cast<int>(model_.materials.size() - 1);
-  }
-
-  /// Adds `g` as one primitive of mesh `mesh` (created when -1); returns the mesh.
-  int primitive(int mesh, const std::string& name, const Geometry& g, int material) {
-    if (mesh < 0) {
-      model_.meshes.emplace_back().name = name;
-      mesh = static_cast<int>(model_.meshes.size() - 1);
-    }
-    tinygltf::Primitive p;
-    p.attributes["POSITION"] = floats(g.positions, TINYGLTF_TYPE_VEC3, 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    p.attributes["NORMAL"] = floats(g.normals, TINYGLTF_TYPE_VEC3, 3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
-    tinygltf::Accessor idx;
-    idx.bufferView = add_view(g.indices.data(), g.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    idx.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    idx.type = TINYGLTF_TYPE_SCALAR;
-    idx.count = g.indices.size();
-    model_.accessors.push_back(std::move(idx));
-    p.indices = static_cast<int>(model_.accessors.size() - 1);
-    p.material = material;
-    p.mode = TINYGLTF_MODE_TRIANGLES;
-    model_.meshes[static_cast<std::size_t>(mesh)].primitives.push_back(std::move(p));
-    return mesh;
-  }
-
-  /// A node (child of `parent`, or a root of the scene when -1).
-  int node(const std::string& name, int parent, int mesh = -1) {
-    tinygltf::Node n;
-    n.name = name;
-    n.mesh = mesh;
-    model_.nodes.push_back(std::move(n));
-    const int id = static_cast<int>(model_.nodes.size() - 1);
-    if (parent < 0) model_.scenes[0].nodes.push_back(id);
-    else model_.nodes[static_cast<std::size_t>(parent)].children.push_back(id);
-    return id;
-  }
-  tinygltf::Node& at(int node) { return model_.nodes[static_cast<std::size_t>(node)]; }
-
- private:
-  int add_view(const void* bytes, std::size_t size, int target) {
-    std::vector<unsigned char>& data = model_.buffers[0].data;
-    tinygltf::BufferView v;
-    v.buffer = 0;
-    v.byteOffset = data.size();
-    v.byteLength = size;
-    v.target = target;
-    data.resize(data.size() + size);
-    std::memcpy(data.data() + v.byteOffset, bytes, size);
-    model_.bufferViews.push_back(v);
-    return static_cast<int>(model_.bufferViews.size() - 1);
-  }
-  tinygltf::Model model_;
-};
-
-std::vector<double> rotation(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
-std::vector<double> vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+  const bool automatic = s.render.camera.automatic;
+  return compose::backed_off(cam, compose::backoff(shots, aspect, automatic ? kAutoMargin : kFixedMargin,
+                                                   automatic ? kAutoClosest : 1.0));
+}
 
 /// The body's node tree; returns the node the keyframes move.
-int add_body(Builder& b, const scene::Body& body) {
+int add_body(Builder& b, NodeNames& names, const scene::Body& body) {
   const RigidBodyModel& m = body.model;
-  const int root = b.node(body.name, -1);
+  const int root = b.node(names.add(body.name), -1);
   // Cloud axes about the centre of mass (the keyframes move the centre of mass).
-  const int shape = b.node(body.name + "/shape", root);
-  const int axes = b.node(body.name + "/principal_axes", root);
+  const int shape = b.node(names.add(body.name, "_shape"), root);
+  const int axes = b.node(names.add(body.name, "_principal_axes"), root);
   b.at(axes).rotation = rotation(m.cloud_from_principal);
+  // Its surfaces, as the renderer draws them: mesh files' and generated shapes' (a T-handle as a T).
   int mesh = -1;
+  auto add = [&](const Geometry& g, const Eigen::Vector3d& color, const std::string& what) {
+    if (!g.indices.empty()) mesh = b.primitive(mesh, b.at(root).name, g, b.material(color, b.at(root).name + what));
+  };
   for (std::size_t i = 0; i < body.meshes.size(); ++i) {
     Geometry g;
     append_mesh(g, body.meshes[i].surface);
-    if (g.indices.empty()) continue;
-    mesh = b.primitive(mesh, body.name, g, b.material(body.meshes[i].color, body.name + "/mesh" + std::to_string(i)));
+    add(g, body.meshes[i].color, "_mesh" + std::to_string(i));
   }
+  for (std::size_t i = 0; i < body.shapes.size(); ++i)
+    add(surface_geometry(*viz::solid_surface(body.shapes[i].shape)), body.shapes[i].color, "_solid" + std::to_string(i));
   if (mesh >= 0) {
     b.at(shape).mesh = mesh;
     b.at(shape).translation = vec(-m.com_cloud);
-  } else {  // the principal box, in the principal frame
+  } else {  // particles alone: the principal box, in the principal frame
     b.at(shape).rotation = rotation(m.cloud_from_principal);
-    b.at(shape).mesh = b.primitive(-1, body.name + "/box", box_geometry(m.box.center - m.box.half_extents, m.box.center + m.box.half_extents),
-                                   b.material(body.color, body.name));
+    b.at(shape).mesh = b.primitive(-1, b.at(root).name + "_box",
+                                   box_geometry(m.box.center - m.box.half_extents, m.box.center + m.box.half_extents),
+                                   b.material(body.color, b.at(root).name));
   }
   // The axes as the renderer draws them (viz::axis_tip), as square bars.
   const double size = std::max(m.box.half_extents.maxCoeff(), 1e-3), w = 0.03 * size;
@@ -182,66 +113,114 @@ int add_body(Builder& b, const scene::Body& body) {
     const glm::dvec3 tip = viz::axis_tip(m, BodyState{}, i);
     const Eigen::Vector3d hi = Eigen::Vector3d(tip.x, tip.y, tip.z) + Eigen::Vector3d::Constant(w);
     const viz::Color& c = viz::kAxisColors[i];
-    const std::string name = body.name + "/axis" + std::to_string(i + 1);
+    const std::string name = names.add(body.name, "_axis" + std::to_string(i + 1));
     b.node(name, axes, b.primitive(-1, name, box_geometry(Eigen::Vector3d::Constant(-w), hi),
                                    b.material(Eigen::Vector3d(c.r, c.g, c.b), name)));
   }
   return root;
 }
 
-/// LINEAR translation and rotation channels of `node` from `tr` (quaternions
-/// kept on one hemisphere, so interpolation takes the short way).
-void add_motion(Builder& b, tinygltf::Animation& anim, int node, int time_accessor, const scene::Trajectory& tr) {
+/// The keys of `tr` as glTF values: positions (x, z, -y) and rotations
+/// glTF ← cloud, each on the hemisphere of the one before (q·q_prev >= 0:
+/// viewers slerp the short way, which the keys are dense enough to be right).
+std::pair<std::vector<float>, std::vector<float>> key_values(const scene::Trajectory& tr) {
   const std::size_t n = tr.size();
   std::vector<float> pos(3 * n), rot(4 * n);
-  Eigen::Vector4d prev(0, 0, 0, 1);
+  Eigen::Quaterniond prev = Eigen::Quaterniond::Identity();
   for (std::size_t k = 0; k < n; ++k) {
-    for (int i = 0; i < 3; ++i) pos[3 * k + i] = static_cast<float>(tr.c[3 * k + i]);
-    Eigen::Vector4d q(tr.q[4 * k + 1], tr.q[4 * k + 2], tr.q[4 * k + 3], tr.q[4 * k]);  // x y z w
-    if (q.dot(prev) < 0) q = -q;
+    const Eigen::Vector3d c = to_gltf(Eigen::Vector3d(tr.c[3 * k], tr.c[3 * k + 1], tr.c[3 * k + 2]));
+    Eigen::Quaterniond q = gltf_from_world() * Eigen::Quaterniond(tr.q[4 * k], tr.q[4 * k + 1], tr.q[4 * k + 2], tr.q[4 * k + 3]);
+    if (k > 0 && q.dot(prev) < 0) q.coeffs() = -q.coeffs();
     prev = q;
-    for (int i = 0; i < 4; ++i) rot[4 * k + i] = static_cast<float>(q[i]);
+    for (int i = 0; i < 3; ++i) pos[3 * k + i] = static_cast<float>(c[i]);
+    const std::vector<double> r = rotation(q);
+    for (int i = 0; i < 4; ++i) rot[4 * k + i] = static_cast<float>(r[i]);
   }
+  return {pos, rot};
+}
+
+/// The body's LINEAR translation and rotation channels; returns its times' accessor.
+int add_motion(Builder& b, tinygltf::Animation& anim, int node, const scene::Trajectory& tr) {
+  const auto [pos, rot] = key_values(tr);
   b.at(node).translation = {pos[0], pos[1], pos[2]};
   b.at(node).rotation = {rot[0], rot[1], rot[2], rot[3]};
-  const std::pair<const char*, int> outputs[] = {
-      {"translation", b.floats(pos, TINYGLTF_TYPE_VEC3, 3, 0, false)},
-      {"rotation", b.floats(rot, TINYGLTF_TYPE_VEC4, 4, 0, false)}};
-  for (const auto& [path, output] : outputs) {
-    tinygltf::AnimationSampler s;
-    s.input = time_accessor;
-    s.output = output;
-    s.interpolation = "LINEAR";
-    anim.samplers.push_back(s);
-    tinygltf::AnimationChannel c;
-    c.sampler = static_cast<int>(anim.samplers.size() - 1);
-    c.target_node = node;
-    c.target_path = path;
-    anim.channels.push_back(c);
+  if (tr.size() < 2) return -1;  // one keyframe is no animation: the node's pose says it
+  const int times = b.floats(std::vector<float>(tr.t.begin(), tr.t.end()), TINYGLTF_TYPE_SCALAR, 1, 0, true);
+  b.channel(anim, node, "translation", times, b.floats(pos, TINYGLTF_TYPE_VEC3, 3, 0, false));
+  b.channel(anim, node, "rotation", times, b.floats(rot, TINYGLTF_TYPE_VEC4, 4, 0, false));
+  return times;
+}
+
+/// The rotation of a glTF camera (looking along its -z, +y up) at `eye`
+/// looking at `target` with `up`, all in glTF's axes.
+Eigen::Quaterniond look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up) {
+  const Eigen::Vector3d back = (eye - target).normalized();
+  const Eigen::Vector3d right = up.cross(back).normalized();
+  Eigen::Matrix3d r;
+  r << right, back.cross(right), back;
+  return Eigen::Quaterniond(r).normalized();
+}
+
+/// The scene's camera as the renderer places it (fitted_camera, also
+/// following a body), and the renderer's light fixed to it.
+void add_camera(Builder& b, NodeNames& names, tinygltf::Animation& anim, const scene::Scene& s,
+                const std::vector<scene::Trajectory>& tracks, const std::vector<int>& times) {
+  const double aspect = static_cast<double>(s.render.output.width) / s.render.output.height;
+  const scene::Body* follow = s.find_body(s.render.camera.follow);
+  const std::size_t f = follow ? static_cast<std::size_t>(follow - s.bodies.data()) : tracks.size();
+  const viz::Camera cam = fitted_camera(s, tracks, aspect, f);
+  auto eig = [](const glm::dvec3& v) { return Eigen::Vector3d(v.x, v.y, v.z); };
+  tinygltf::Camera c;
+  c.type = "perspective";
+  c.name = "camera";
+  c.perspective.aspectRatio = aspect;
+  c.perspective.yfov = cam.fov_y_deg * std::numbers::pi / 180;
+  c.perspective.znear = cam.near_m;
+  c.perspective.zfar = cam.far_m;
+  b.model().cameras.push_back(c);
+  const int node = b.node(names.add("camera"), -1);
+  b.at(node).camera = static_cast<int>(b.model().cameras.size() - 1);
+  b.at(node).translation = vec(to_gltf(eig(cam.position)));
+  b.at(node).rotation = rotation(look_at(to_gltf(eig(cam.position)), to_gltf(eig(cam.target)), to_gltf(eig(viz::view_up(cam)))));
+  // A camera that follows a body keeps its offset from the body's centre of mass.
+  if (f < tracks.size() && times[f] >= 0) {
+    std::vector<float> pos;
+    const Eigen::Vector3d offset = eig(cam.position - cam.target);
+    for (std::size_t k = 0; k < tracks[f].size(); ++k) {
+      const Eigen::Vector3d p = to_gltf(Eigen::Vector3d(tracks[f].c[3 * k], tracks[f].c[3 * k + 1], tracks[f].c[3 * k + 2]) + offset);
+      pos.insert(pos.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
+    }
+    b.channel(anim, node, "translation", times[f], b.floats(pos, TINYGLTF_TYPE_VEC3, 3, 0, false));
   }
+  tinygltf::Light light;
+  light.name = "light";
+  light.type = "directional";
+  light.color = {1.0, 1.0, 1.0};
+  light.intensity = kLightLux;
+  b.model().lights.push_back(light);
+  const int l = b.node(names.add("camera", "_light"), node);
+  // A directional light shines along its node's -z: +z towards the light.
+  b.at(l).rotation = rotation(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), kLightFromCamera));
+  tinygltf::Value::Object ext{{"light", tinygltf::Value(static_cast<int>(b.model().lights.size() - 1))}};
+  b.at(l).extensions["KHR_lights_punctual"] = tinygltf::Value(ext);
 }
 
 }  // namespace
 
-std::vector<double> keyframe_times(const scene::Scene& s, double fps) {
-  return scene::sample_times(s.simulation.duration, fps > 0 ? fps : s.render.output.fps);
+Eigen::Quaterniond gltf_from_world() {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(-std::numbers::pi / 2, Eigen::Vector3d::UnitX()));
 }
 
 std::string gltf_bytes(const scene::Scene& s, const std::vector<scene::Trajectory>& tracks, bool binary) {
   Builder b;
   b.model().scenes[0].name = s.name;
+  NodeNames names;
   tinygltf::Animation anim;
   anim.name = "motion";
-  int times = -1;
-  for (std::size_t i = 0; i < s.bodies.size() && i < tracks.size(); ++i) {
-    const int node = add_body(b, s.bodies[i]);
-    if (tracks[i].size() < 2) continue;  // one keyframe is no animation: the node's pose says it
-    if (times < 0) {
-      const std::vector<float> t(tracks[i].t.begin(), tracks[i].t.end());
-      times = b.floats(t, TINYGLTF_TYPE_SCALAR, 1, 0, true);
-    }
-    add_motion(b, anim, node, times, tracks[i]);
-  }
+  std::vector<int> times;
+  for (std::size_t i = 0; i < s.bodies.size() && i < tracks.size(); ++i)
+    times.push_back(add_motion(b, anim, add_body(b, names, s.bodies[i]), tracks[i]));
+  add_camera(b, names, anim, s, tracks, times);
   if (!anim.channels.empty()) b.model().animations.push_back(std::move(anim));
   std::ostringstream out;
   tinygltf::TinyGLTF writer;
@@ -249,13 +228,12 @@ std::string gltf_bytes(const scene::Scene& s, const std::vector<scene::Trajector
   return std::move(out).str();
 }
 
-std::vector<scene::Trajectory> export_gltf(const scene::Scene& s, const std::filesystem::path& out, double fps,
-                                           const std::string& option) {
+std::vector<scene::Trajectory> export_gltf(const scene::Scene& s, const std::filesystem::path& out, const KeyOptions& keys,
+                                           const std::string& option, const std::function<void()>& poll) {
   const std::string ext = out.extension().string();
   if (ext != ".glb" && ext != ".gltf")
     throw InputError(option + " " + out.string() + ": expected a file name ending in .glb or .gltf");
-  const std::vector<double> t = keyframe_times(s, fps);
-  std::vector<scene::Trajectory> tracks = scene::sample_run(s, s.simulation, t);
+  std::vector<scene::Trajectory> tracks = key_tracks(s, keys, poll);
   io::atomic_write_file(out, gltf_bytes(s, tracks, ext == ".glb"));
   return tracks;
 }

@@ -1,8 +1,11 @@
 #include "render/resource_dir.hpp"
 
+#include <dlfcn.h>
+
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace tumble::render {
 namespace fs = std::filesystem;
@@ -15,12 +18,18 @@ std::filesystem::path find_resource_dir() {
     return fs::is_directory(dir / "shaders", ec);
   };
 
+  // The file this code was loaded from: the executable, or the Python module
+  // (installed with its shaders beside it, whatever python3's folder is).
   std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
+  std::vector<fs::path> starts;
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&find_resource_dir), &info) != 0 && info.dli_fname)
+    starts.push_back(fs::absolute(info.dli_fname, ec));
+  if (const fs::path exe = fs::read_symlink("/proc/self/exe", ec); !ec) starts.push_back(exe);
+  for (const fs::path& start : starts) {
     // Build trees look like <source>/build-xxx/src/app/tumble, so walking up
     // from the executable reaches the source tree's shaders/.
-    for (fs::path dir = exe.parent_path(); !dir.empty(); dir = dir.parent_path()) {
+    for (fs::path dir = start.parent_path(); !dir.empty(); dir = dir.parent_path()) {
       if (has_shaders(dir)) return dir;
       if (dir == dir.root_path()) break;
     }

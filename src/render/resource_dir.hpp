@@ -15,8 +15,10 @@ class ResourceError : public io::IoError {
   using io::IoError::IoError;
 };
 
-/// First directory containing a `shaders/` folder among: the executable's
-/// directory and its parents, then the compile-time TUMBLE_SOURCE_DIR.
+/// First directory containing a `shaders/` folder among: the folder of the
+/// file this code is in (the executable, or the Python module's library) and
+/// its parents, the executable's and its parents, then the compile-time
+/// TUMBLE_SOURCE_DIR.
 /// Throws ResourceError listing where it looked.
 std::filesystem::path find_resource_dir();
 

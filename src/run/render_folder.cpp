@@ -85,6 +85,7 @@ struct Job {
   void save() const { io::atomic_write_file(man_path(), man.json()); }
   /// "tumble render SCENE -o DIR" + `tail`: how to run this again.
   std::string rerun(const std::string& tail) const {
+    if (req.rerun) return req.rerun(tail);
     return "tumble render " + quote_arg(req.scene_arg) + " -o " + quote_arg(req.dir.string()) + tail;
   }
 };

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,9 @@ struct RenderRequest {
   std::string scene_arg;      ///< the scene as the user named it, for "run it again" hints
   std::optional<int> gpu = {};  ///< EGL device (--gpu, TUMBLE_EGL_DEVICE); nullopt: automatic
   int jobs = 0;               ///< frame encoder threads; 0: render::worker_threads()
+  /// How the caller runs this again, given the command line's flags for it
+  /// (" --resume", " --frames A:B --resume"); unset: `tumble render SCENE -o DIR` + flags.
+  std::function<std::string(const std::string& flags)> rerun = {};
 };
 
 /// Renders `r`. Throws InputError (bad range, a folder holding another render

@@ -37,6 +37,9 @@ int read_cloud_sources(TableReader& r, LoadContext& ctx, const Eigen::Vector3d& 
 /// Reads [[bodies]] into scene.bodies (uses scene.gravity for the force sets).
 void read_bodies(TableReader& root, LoadContext& ctx, Scene& scene);
 
+/// Reads [output] into scene.render.output (and its time_scale).
+void read_output_config(TableReader& root, LoadContext& ctx, Scene& scene);
+
 /// Reads [output], [camera], [draw], [compare] into scene.render.
 void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene);
 

@@ -33,8 +33,8 @@ std::string type_name(toml::node_type t) {
 Diagnostic Diagnostics::make(const toml::source_region& at, std::string key, std::string message) const {
   Diagnostic dg;
   dg.file = file_;
-  dg.line = at.begin.line ? static_cast<int>(at.begin.line) : 1;
-  dg.column = at.begin.column ? static_cast<int>(at.begin.column) : 1;
+  dg.line = !located_ ? 0 : at.begin.line ? static_cast<int>(at.begin.line) : 1;
+  dg.column = !located_ ? 0 : at.begin.column ? static_cast<int>(at.begin.column) : 1;
   for (const auto& [k, option] : options_)
     if (k == key && !at.begin.line) dg.option = option;  // a value the file never held
   dg.key = std::move(key);
@@ -61,8 +61,8 @@ std::vector<Diagnostic> Diagnostics::take_errors() {
 
 void Diagnostics::warning(const toml::source_region& at, std::string key, std::string message) {
   const Diagnostic dg = make(at, std::move(key), std::move(message));
-  warnings_.push_back(dg.file + ":" + std::to_string(dg.line) + ":" + std::to_string(dg.column) +
-                      ": warning: " + dg.key + ": " + dg.message);
+  const std::string where = dg.line ? dg.file + ":" + std::to_string(dg.line) + ":" + std::to_string(dg.column) : dg.file;
+  warnings_.push_back(where + ": warning: " + dg.key + ": " + dg.message);
 }
 
 Range Range::closed(double lo, double hi) {

@@ -21,8 +21,11 @@ class Diagnostics {
  public:
   /// `options`: scene keys set on the command line, with the option that set
   /// each; errors at those keys name the option instead of a file position.
-  explicit Diagnostics(std::string file, std::vector<std::pair<std::string, std::string>> options = {})
-      : file_(std::move(file)), options_(std::move(options)) {}
+  /// `located` false: the document was built in code (no lines), so messages
+  /// say "file: error: ..." without a position.
+  explicit Diagnostics(std::string file, std::vector<std::pair<std::string, std::string>> options = {},
+                       bool located = true)
+      : file_(std::move(file)), options_(std::move(options)), located_(located) {}
   void error(const toml::source_region& at, std::string key, std::string message);
   void warning(const toml::source_region& at, std::string key, std::string message);
   bool ok() const { return errors_.empty(); }
@@ -40,6 +43,7 @@ class Diagnostics {
   Diagnostic make(const toml::source_region& at, std::string key, std::string message) const;
   std::string file_;
   std::vector<std::pair<std::string, std::string>> options_;
+  bool located_ = true;
   std::vector<Diagnostic> errors_;
   std::vector<std::string> warnings_;
 };

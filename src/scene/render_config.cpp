@@ -125,12 +125,16 @@ void read_compare(TableReader& r, Scene& s) {
 
 }  // namespace
 
-void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
+void read_output_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   scene.render.output.fps = scene.simulation.fps;
   if (auto t = root.subtable("output")) {
     TableReader r(*t, "output", ctx.diag, {"width", "height", "fps", "aa", "msaa", "background", "video", "time_scale"});
     read_output(r, scene);
   }
+}
+
+void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
+  read_output_config(root, ctx, scene);
   if (auto t = root.subtable("camera")) {
     TableReader r(*t, "camera", ctx.diag, {"position", "target", "up", "fov_y", "auto", "follow"});
     read_camera(r, ctx, scene);

@@ -12,6 +12,8 @@ namespace {
 
 void append(std::vector<double>& to, const Eigen::Vector3d& x) { to.insert(to.end(), {x.x(), x.y(), x.z()}); }
 
+}  // namespace
+
 /// The columns of io::append_trajectory_row and `simulate`'s extra ω_body, from the same functions.
 void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const BodyState& s) {
   const Eigen::Quaterniond q = cloud_orientation(m, s);
@@ -25,7 +27,17 @@ void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const Body
   tr.energy.push_back(total_energy(m, s));
 }
 
-}  // namespace
+BodyRun::BodyRun(const SimulationConfig& sim, const Body& body)
+    : body_(&body), plan_(plan_method(sim, body)), p_(body.model, body.initial, plan_.config) {}
+
+Trajectory BodyRun::header() const {
+  Trajectory tr;
+  tr.body = body_->name;
+  tr.method = std::string(method_name(plan_.config.method));
+  tr.step = step_label(plan_.config, body_->model);
+  tr.auto_reason = plan_.reason;
+  return tr;
+}
 
 void check_sample_times(std::span<const double> times) {
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -38,23 +50,23 @@ void check_sample_times(std::span<const double> times) {
   }
 }
 
+std::optional<std::string> BodyRun::warning() const {
+  return coarse_step_warning(body_->model, body_->initial, plan_.config);
+}
+
 std::vector<Trajectory> sample_run(const Scene& s, const SimulationConfig& sim, std::span<const double> times,
-                                   const std::function<void()>& poll) {
+                                   const std::function<void()>& poll, const std::function<void(const std::string&)>& warn) {
   check_sample_times(times);
   std::vector<Trajectory> out;
   for (const Body& b : s.bodies) {
-    const MethodPlan plan = plan_method(sim, b);
-    Propagator p(b.model, b.initial, plan.config);
-    Trajectory tr;
-    tr.body = b.name;
-    tr.method = std::string(method_name(plan.config.method));
-    tr.step = step_label(plan.config, b.model);
-    tr.auto_reason = plan.reason;
+    BodyRun run(sim, b);
+    if (const auto w = run.warning(); w && warn) warn(*w);
+    Trajectory tr = run.header();
     for (double t : times) {
-      append_sample(tr, t, b.model, t <= p.time() ? p.state() : p.advance_to(t));
+      append_sample(tr, t, b.model, run.at(t));
       if (poll) poll();
     }
-    tr.steps = p.steps();
+    tr.steps = run.steps();
     out.push_back(std::move(tr));
   }
   return out;

@@ -5,10 +5,12 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "core/propagator.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::scene {
@@ -32,15 +34,42 @@ struct Trajectory {
   std::size_t size() const { return t.size(); }
 };
 
+/// One body stepped from t = 0 with plan_method(sim, body) and sampled on
+/// request: the loop behind sample_run, for callers that pick the next sample
+/// time from the last state (the glTF export's keys).
+class BodyRun {
+ public:
+  BodyRun(const SimulationConfig& sim, const Body& body);
+  /// The state at t (s): a time at or before the last sample repeats it, as
+  /// Propagator::advance_to does. Throws Diverged.
+  const BodyState& at(double t) { return t <= p_.time() ? p_.state() : p_.advance_to(t); }
+  const RigidBodyModel& model() const { return body_->model; }
+  /// A Trajectory with no samples: the body, method, step and auto's reason.
+  Trajectory header() const;
+  long steps() const { return p_.steps(); }
+  /// The command line's warning when dt is too coarse for the body's start (core::coarse_step_warning).
+  std::optional<std::string> warning() const;
+
+ private:
+  const Body* body_;
+  MethodPlan plan_;
+  Propagator p_;
+};
+
+/// Appends the sample (t, state) of a body of model `m` to `tr` (every column).
+void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const BodyState& s);
+
 /// Throws InputError unless `times` are finite, >= 0 and non-decreasing.
 void check_sample_times(std::span<const double> times);
 
 /// Integrates every body of `s` with plan_method(sim, body) and samples it at
 /// `times` (s; a time at or before the last sample repeats it, as
 /// Propagator::advance_to does). `poll`, when set, is called after each sample
-/// of each body: it may throw to stop the run (Ctrl-C). Throws Diverged when a
+/// of each body: it may throw to stop the run (Ctrl-C); `warn`, when set, gets
+/// each body's BodyRun::warning before it is stepped. Throws Diverged when a
 /// body fails, InputError for bad times.
 std::vector<Trajectory> sample_run(const Scene& s, const SimulationConfig& sim, std::span<const double> times,
-                                   const std::function<void()>& poll = {});
+                                   const std::function<void()>& poll = {},
+                                   const std::function<void(const std::string&)>& warn = {});
 
 }  // namespace tumble::scene

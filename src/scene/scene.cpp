@@ -70,16 +70,32 @@ void read_forces(TableReader& root, detail::LoadContext& ctx, Scene& s) {
   }
 }
 
-// Puts each override into the parsed document, creating tables on the way.
-// A path through a non-table is left alone: the loader reports that key.
+// The table at `part` of `t` ("name", or "name[i]": element i of an array of
+// tables), made when missing; null when the document holds something else there.
+toml::table* sub_table(toml::table& t, const std::string& part) {
+  const auto open = part.find('[');
+  if (open == std::string::npos) {
+    if (!t.contains(part)) t.insert(part, toml::table{});
+    return t.get(part)->as_table();
+  }
+  const std::string name = part.substr(0, open);
+  const std::size_t index = std::stoul(part.substr(open + 1));
+  if (!t.contains(name)) t.insert(name, toml::array{});
+  toml::array* a = t.get(name)->as_array();
+  if (!a) return nullptr;
+  while (a->size() <= index) a->push_back(toml::table{});
+  return a->get(index)->as_table();
+}
+
+// Puts each override into the parsed document, creating tables (and arrays of
+// tables, "bodies[0].shape.units") on the way. A path through anything else
+// is left alone: the loader reports that key.
 void apply_overrides(toml::table& root, const std::vector<Override>& overrides) {
   for (const Override& o : overrides) {
     toml::table* t = &root;
     std::string_view rest = o.key;
     for (auto dot = rest.find('.'); t && dot != std::string_view::npos; dot = rest.find('.')) {
-      const std::string part(rest.substr(0, dot));
-      if (!t->contains(part)) t->insert(part, toml::table{});
-      t = t->get(part)->as_table();
+      t = sub_table(*t, std::string(rest.substr(0, dot)));
       rest.remove_prefix(dot + 1);
     }
     if (!t) continue;
@@ -93,6 +109,21 @@ void apply_overrides(toml::table& root, const std::vector<Override>& overrides) 
         },
         o.value);
   }
+}
+
+// The settings of `s` as the [simulation] and [output] tables that load them.
+toml::table settings_table(const Scene& s) {
+  const SimulationConfig& sim = s.simulation;
+  toml::table simulation{{"method", sim.automatic ? std::string("auto") : std::string(method_name(sim.step.method))},
+                         {"duration", sim.duration}, {"fps", sim.fps}, {"rtol", sim.step.rtol}, {"atol", sim.step.atol}};
+  if (sim.tolerance) simulation.insert("tolerance", *sim.tolerance);
+  else simulation.insert("dt", sim.step.dt);  // auto with a tolerance picks dt: the file could give none
+  const OutputConfig& o = s.render.output;
+  toml::table output{{"width", o.width}, {"height", o.height}, {"fps", o.fps},
+                     {"aa", std::string(antialias_name(o.aa))}, {"msaa", o.msaa},
+                     {"background", toml::array{o.background.x(), o.background.y(), o.background.z()}},
+                     {"video", std::string(video_format_name(o.video))}, {"time_scale", s.render.explain.time_scale}};
+  return toml::table{{"simulation", simulation}, {"output", output}};
 }
 
 Scene load_impl(std::string_view text, const std::string& source_name, const std::filesystem::path& base_dir,
@@ -140,8 +171,9 @@ Scene load_impl(std::string_view text, const std::string& source_name, const std
 }  // namespace
 
 std::string Diagnostic::str() const {
-  std::string out = option.empty() ? file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: "
-                                   : option + ": error: ";
+  std::string out = !option.empty() ? option + ": error: "
+                    : line == 0  ? file + ": error: "
+                                 : file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: ";
   if (!key.empty()) out += key + ": ";
   return out + message;
 }
@@ -194,6 +226,35 @@ std::string step_label(const StepConfig& c, const RigidBodyModel& m) {
   if (info.adaptive) return "rtol = " + format_number(c.rtol, 6);
   if (info.closed_form_if_free && m.forces.empty()) return "closed form";
   return "dt = " + format_number(c.dt, 6) + " s";
+}
+
+Settings override_settings(const Scene& s, const std::vector<Override>& overrides, std::string_view source_name) {
+  std::vector<std::pair<std::string, std::string>> options;
+  for (const Override& o : overrides) options.emplace_back(o.key, o.option);
+  detail::Diagnostics diag(std::string(source_name), std::move(options), false);
+  toml::table root = settings_table(s);
+  // A tolerance makes auto pick dt: the scene's dt goes, as a file could not hold both.
+  auto sets = [&](std::string_view key) {
+    return std::any_of(overrides.begin(), overrides.end(), [&](const Override& o) {
+      return o.key == key && !std::holds_alternative<std::monostate>(o.value);
+    });
+  };
+  if (sets("simulation.tolerance") && !sets("simulation.dt")) root["simulation"].as_table()->erase("dt");
+  apply_overrides(root, overrides);
+  Scene read;  // no bodies: only what the two tables fill
+  read.render.output = s.render.output;  // keeps what [output] does not hold (the quality)
+  detail::LoadContext ctx{diag, {}, 0, {}};
+  detail::TableReader r(root, "", diag, {"simulation", "output"});
+  read_simulation(r, ctx, read);
+  detail::read_output_config(r, ctx, read);
+  if (!diag.ok()) throw SceneError(diag.take_errors());
+  return {read.simulation, read.render.output, read.render.explain.time_scale, diag.take_warnings()};
+}
+
+void Settings::apply_to(Scene& s) const {
+  s.simulation = simulation;
+  s.render.output = output;
+  s.render.explain.time_scale = time_scale;
 }
 
 Scene load_scene(const std::filesystem::path& path, const std::vector<Override>& overrides) {

@@ -177,7 +177,9 @@ struct Diagnostic {
   int line = 0, column = 0;
   std::string key;      ///< e.g. "bodies[0].shape.size"; empty for syntax errors
   std::string message;  ///< what was expected and what was found
-  std::string str() const;  ///< "file:line:col: error: key: message", or "--option: error: key: message"
+  /// "file:line:col: error: key: message", "--option: error: key: message",
+  /// or "file: error: key: message" for a document built in code (line 0).
+  std::string str() const;
 };
 
 /// All errors of one load, reported together. An InputError, so exit code 2.
@@ -213,6 +215,23 @@ Scene load_scene(const std::filesystem::path& path, const std::vector<Override>&
 Scene load_scene_from_string(std::string_view text, std::string_view source_name,
                              const std::filesystem::path& base_dir = {},
                              const std::vector<Override>& overrides = {});
+
+/// A scene's [simulation] and [output] settings (and output's time_scale).
+struct Settings {
+  SimulationConfig simulation;
+  OutputConfig output;
+  double time_scale = 1;
+  std::vector<std::string> warnings;
+  void apply_to(Scene& s) const;
+};
+
+/// The settings of a loaded (perhaps edited) scene with `overrides` applied
+/// to them, as load_scene applies a command line's: the scene's values and the
+/// overrides are written into [simulation] and [output] tables and read by the
+/// loader's own code, so every check and message is the command line's, and
+/// each error names its override's option (others name `source_name`, with no
+/// position). Only "simulation.*" and "output.*" keys. Throws SceneError.
+Settings override_settings(const Scene& s, const std::vector<Override>& overrides, std::string_view source_name);
 
 /// Sample times k/fps for k = 0, 1, … up to `duration`; the last is always
 /// exactly `duration` (appended when it is not a multiple of 1/fps).
