@@ -14,6 +14,7 @@ RENDER_PACKAGES=(
   libstb-dev libdeflate-dev fonts-dejavu-core    # PNG in/out, text overlay
   nlohmann-json3-dev                             # JSON (manifest, golden sidecars, info --json)
   libassimp-dev                                  # mesh shapes (OBJ, STL, PLY, ...)
+  zlib1g-dev                                     # named by Debian's assimp CMake package, not among its dependencies
   ffmpeg                                         # videos (run as a program)
 )
 TEST_PACKAGES=(
