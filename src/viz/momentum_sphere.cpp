@@ -17,8 +17,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 // Around axis `a` (0 or 2): the other two components on an ellipse, Π_a from
 // the sphere; the parameter refined where the curve bends (near ±e2 a level
 // close to the separatrix turns within a few thousandths of |L|).
@@ -144,7 +142,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   if (draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
   auto scaled = [&](const std::vector<Eigen::Vector3d>& curve) {
     std::vector<glm::dvec3> out;
-    for (const Eigen::Vector3d& x : curve) out.push_back(g(x / L));
+    for (const Eigen::Vector3d& x : curve) out.push_back(to_glm(x / L));
     return out;
   };
   auto unit = [&](const std::vector<Eigen::Vector3d>& curve) {
@@ -178,7 +176,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
       view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f, false, "separatrix"});
   add_saddles(view);
   // Π now: a large dot standing out of the sphere, over every curve.
-  view.points.push_back({1.02 * g(in.momentum / L), 0.072, color_of(Meaning::momentum_point), "momentum_point"});
+  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.072, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
 }
 

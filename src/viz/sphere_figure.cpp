@@ -14,8 +14,6 @@ namespace tumble::viz {
 
 namespace {
 
-glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 void refine(const std::function<Eigen::Vector3d(double)>& at, double t0, const Eigen::Vector3d& p0, double t1,
             const Eigen::Vector3d& p1, double tol, int depth, std::vector<double>& out) {
   const double tm = 0.5 * (t0 + t1);
@@ -165,10 +163,10 @@ void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve,
     const Eigen::Vector3d v = p.cross(p.cwiseQuotient(inertia));  // dΠ/dt = Π × ω, up to |L|'s scale
     // Only where the curve faces the eye: an arrow near the rim is a fragment.
     const glm::dvec3 eye = glm::normalize(view.camera.position - view.camera.target);
-    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, g(p), 1.0) || glm::dot(eye, g(p.normalized())) < 0.35)
+    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, to_glm(p), 1.0) || glm::dot(eye, to_glm(p.normalized())) < 0.35)
       continue;
-    const glm::dvec3 dir = g(v.normalized());
-    view.arrows.push_back({g(p) - 0.5 * size * dir, size * dir, 0.12 * size, color, ""});
+    const glm::dvec3 dir = to_glm(v.normalized());
+    view.arrows.push_back({to_glm(p) - 0.5 * size * dir, size * dir, 0.12 * size, color, ""});
   }
 }
 
