@@ -46,6 +46,20 @@ TEST(AtomicFile, LeavesNothingWithoutCommit) {
   fs::remove_all(dir);
 }
 
+// A killed run leaves its temp file; this process's temp name may be the
+// same (pids are reused), and the write goes on over it.
+TEST(AtomicFile, ALeftoverTempFileOfTheSameNameIsReplaced) {
+  const fs::path dir = fresh_dir("leftover");
+  const fs::path p = dir / "a.txt";
+  {
+    std::ofstream(temp_path_for(p)) << "a killed run's half";
+  }
+  atomic_write_file(p, "whole");
+  EXPECT_EQ(slurp(p), "whole");
+  EXPECT_FALSE(fs::exists(temp_path_for(p)));
+  fs::remove_all(dir);
+}
+
 TEST(AtomicFile, FailureNamesThePath) {
   const fs::path bad = fresh_dir("fail") / "missing" / "x.json";
   try {
