@@ -25,6 +25,7 @@ constexpr double kRoundOff = 1e-13;       // end differences below this are roun
 constexpr double kAdaptiveMargin = 10;    // adaptive pairs run at rtol = tolerance / this
 constexpr double kPriceWindows = 32;      // an adaptive pair is priced on 1/32 of the run
 constexpr double kProbeWindows = 8;       // exact on a torqued body is probed on 1/8 of it
+constexpr double kOrderWindow = 0.4;      // order_seen: |observed order - p| within this
 
 }  // namespace
 

@@ -54,9 +54,8 @@ double step_cost_ns(Method method, const RigidBodyModel& m);
 
 /// The pilot's order window: whether successive differences shrinking by
 /// 2^observed show an order-p method in its asymptotic range, |observed - p|
-/// <= kOrderWindow. Wider, a pilot still short of it (an order-2 method
+/// <= 0.4 (NaN: no). Wider, a pilot still short of it (an order-2 method
 /// showing 1.5) would be extrapolated as if it were there, and miss the tolerance.
-inline constexpr double kOrderWindow = 0.4;
 bool order_seen(double observed, int p);
 
 /// `method = "auto"`'s first rule, the one place it is decided: a torque-free
