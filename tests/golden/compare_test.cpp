@@ -234,6 +234,10 @@ TEST(CompareLocal, APatchOfExactlyMaxDeltaIsNotOver) {
   EXPECT_EQ(c.region, 0);
   patch(b, 10, 10, 5, 1);
   EXPECT_EQ(compare_images(b, a, o).region, 25);
+  Image ringed = a;  // 5x5 over, in a ring of pixels exactly at max_delta: the region is the 25
+  patch(ringed, 9, 9, 7, o.max_delta);
+  patch(ringed, 10, 10, 5, 1);
+  EXPECT_EQ(compare_images(ringed, a, o).region, 25);
 }
 
 // An image lower than the window: the window is clipped to its height, not skipped.
