@@ -1,15 +1,10 @@
 #!/bin/sh
 # rk45 (and with `dop853`, dop853) against odeint's dopri5 at equal delivered
 # error on the T-handle and the forced T-handle; `rk4`: rk4 against dop853 at
-# 1e-10 rad on the T-handle. See scripts/adaptive_study.cpp.
-# Needs a release build: cmake --build --preset release --target tumble_bench
+# 1e-10 rad on the T-handle. See src/bench/studies/adaptive_study.cpp; built
+# as the target tumble_adaptive_study of a bench build (scripts/test.sh makes one).
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
-lib=$root/build/release/src
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-${CXX:-g++} -std=c++20 -O2 -DNDEBUG -ffp-contract=off -I"$root/src" -I/usr/include/eigen3 "$root/scripts/adaptive_study.cpp" \
-  "$lib/bench/libtumble_bench.a" "$lib/io/libtumble_io.a" "$lib/core/libtumble_core.a" \
-  $(pkg-config --libs bullet-float64 2>/dev/null || pkg-config --libs bullet 2>/dev/null) \
-  $(pkg-config --libs ode 2>/dev/null) -o "$out/study"
-"$out/study" "$@"
+build=${BUILD:-$root/build/release}
+cmake --build "$build" --target tumble_adaptive_study -j2 >/dev/null
+"$build/src/bench/tumble_adaptive_study" "$@"

@@ -1,7 +1,8 @@
 #!/bin/sh
-# Regenerates the README's frames (docs/demo_frame.png, docs/explained_*.png,
-# docs/poinsot_*.png, docs/tennis_racket_flip.png, docs/methods_compare_frame.png)
-# and the lessons' storyboards (docs/storyboard_<scene>.png): the demo and a few frames
+# Regenerates the documentation's frames (docs/demo_frame.png, docs/explained_*.png,
+# docs/poinsot_*.png, docs/tennis_racket_flip.png, docs/methods_compare_frame.png,
+# docs/readme_scene.png: the README's scene, from its toml block) and the lessons'
+# storyboards (docs/storyboard_<scene>.png): the demo and a few frames
 # of the explanatory scenes rendered at 960x540 (`tumble info` lists what each frame shows); at
 # 640x360 the keys' text is ~6.5 px and thin stems (l, i, I) drop out.
 set -eu
@@ -33,3 +34,11 @@ for scene in dzhanibekov_explained tennis_racket poinsot methods_compare dzhanib
   "$tumble" storyboard "scenes/$scene.toml" --width 960 --height 540 -n 8 --tile-width 400 --progress none \
     -o "docs/storyboard_$scene.png" >/dev/null
 done
+# The README's scene, as its toml block says, at frame 54 (t = 1.8 s, the first flip).
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+python3 -c 'import re, sys; sys.stdout.write(re.search(r"```toml\n(.*?)```", open("README.md").read(), re.S).group(1))' >"$tmp/flip.toml"
+"$tumble" render "$tmp/flip.toml" --frames 54:54 --width 960 --height 540 --video none --progress none --force \
+  -o "$out/flip" >/dev/null
+cp "$out/flip/frame_000054.png" docs/readme_scene.png.tmp
+mv docs/readme_scene.png.tmp docs/readme_scene.png

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates src/core/method_costs.inc (the per-step costs of the method table,
 # used by method = "auto" as relative weights) from the Google microbenchmark:
-# medians of BM_Step over 5 repetitions; and the README's speed table between
+# medians of BM_Step over 5 repetitions; and docs/methods.md's speed table between
 # <!-- BEGIN/END microbench:speed-table --> from the same run plus BM_Propagate
 # (a whole 10 s run as tumble makes it). Run on an idle machine:
-#   scripts/gen_method_costs.sh [build/release/bench/tumble_microbench]
+#   scripts/gen_method_costs.sh [build/release/src/bench/tumble_microbench]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bin=${1:-$root/build/release/bench/tumble_microbench}
+bin=${1:-$root/build/release/src/bench/tumble_microbench}
 out=$root/src/core/method_costs.inc
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
@@ -15,7 +15,7 @@ trap 'rm -f "$json"' EXIT
   --benchmark_min_time=0.2 --benchmark_format=json >"$json"
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 cxx=$(${CXX:-c++} --version | head -1)
-python3 - "$json" "$cpu" "$cxx" "$root/README.md" >"$out.tmp" <<'PY'
+python3 - "$json" "$cpu" "$cxx" "$root/docs/methods.md" >"$out.tmp" <<'PY'
 import json, os, re, sys
 runs = json.load(open(sys.argv[1]))["benchmarks"]
 cost, run, stepping = {}, {}, {}
@@ -58,7 +58,7 @@ rows.append("<!-- END microbench:speed-table -->")
 readme = open(sys.argv[4]).read()
 new = re.sub(r"<!-- BEGIN microbench:speed-table -->.*?<!-- END microbench:speed-table -->", "\n".join(rows), readme, flags=re.S)
 if new == readme and "microbench:speed-table" not in readme:
-    sys.exit("README.md has no <!-- BEGIN/END microbench:speed-table --> block")
+    sys.exit(sys.argv[4] + " has no <!-- BEGIN/END microbench:speed-table --> block")
 open(sys.argv[4] + ".tmp", "w").write(new)
 os.replace(sys.argv[4] + ".tmp", sys.argv[4])
 PY

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Deliberate small changes checked against the committed goldens (issue 16):
+# Deliberate small changes checked against the committed goldens:
 # each mutant runs from a scratch copy (binary + shaders, or a scene file), so
 # the source tree is never touched. Prints per mutant how many of the
 # golden images fail with the current rule and with the old global rule alone
@@ -52,7 +52,7 @@ mkdir -p "$O/moved"
 sed 's/^position = \[0.0, 0.0, 0.0\]/position = [0.0, 0.0, 0.0058]/' scenes/dzhanibekov.toml >"$O/moved/dzhanibekov.toml"
 if cmp -s scenes/dzhanibekov.toml "$O/moved/dzhanibekov.toml"; then echo "move: did not apply" >&2; exit 1; fi
 check "dzhanibekov body moved 1 px up" "$T" "$O/moved"
-# Issue 11: an element of an explanatory view removed or moved (scene mutants).
+# An element of an explanatory view removed or moved (scene mutants).
 scene_mutant() { # label, sed script on scenes/dzhanibekov_explained.toml
   d="$O/$(echo "$1" | tr -c 'A-Za-z0-9\n' _)"
   mkdir -p "$d"
@@ -64,11 +64,11 @@ scene_mutant "explained: plot view removed" '/^\[\[views\]\]$/{N;/kind = "plot"/
 scene_mutant "explained: sphere view moved 1%" 's/^viewport = \[0.5, 0.0, 0.5, 0.6\]/viewport = [0.51, 0.0, 0.49, 0.6]/'
 scene_mutant "explained: captions' text edited" '/^text = "/s/ the / a /'
 scene_mutant "explained: time_scale 0.5 -> 0.55" 's/^time_scale = 0.5 /time_scale = 0.55 /'
-# Issue 22: captions anchored to flips found from the simulation.
+# Captions anchored to flips found from the simulation.
 scene_mutant "explained: flip caption 0.3 s late" 's/^start = "flip 1 - 0.1"/start = "flip 1 + 0.2"/'
 scene_mutant "explained: flip caption on flip 2" '/^start = "flip 1 - 0.1"/{s//start = "flip 2 - 0.1"/;n;s/^end = "flip 1 + 0.5"/end = "flip 2 + 0.2"/}'
 scene_mutant "explained: title hold 2.5 -> 2.4 s" 's/^hold = 2.5 /hold = 2.4 /'
 
-# Issue 22: the keys turned off, and the momentum sphere's camera fixed instead of following Π.
+# The keys turned off, and the momentum sphere's camera fixed instead of following Π.
 scene_mutant "explained: keys off" '/^\[draw\]$/a key = false'
 scene_mutant "explained: sphere camera fixed" '/^viewport = \[0.5, 0.0, 0.5, 0.6\]$/a camera = { follow = false, azimuth = 132, elevation = 34 }'

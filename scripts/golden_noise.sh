@@ -4,7 +4,7 @@
 # 128-bit (SSE) against its native 256-bit (AVX) code, for every
 # golden scene at its golden times with MSAA 4 and 0; and, for scale, MSAA 4
 # against MSAA 0 of the same frame (anti-aliasing on every edge). Prints one
-# line per pair kind with the worst figures; the README's golden defaults
+# line per pair kind with the worst figures; docs/golden.md's defaults
 # come from this.
 #   usage: scripts/golden_noise.sh [TUMBLE_BINARY] [OUT_DIR] [WIDTHxHEIGHT]
 set -eu

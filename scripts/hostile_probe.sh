@@ -89,10 +89,6 @@ setup; mkdir g; "$bin" golden s.toml --dir g --frames 1 --update >/dev/null 2>&1
 run "golden PNG a FIFO" "1|2" tumble golden s.toml --dir g --frames 1
 setup; mkdir sh; mkfifo sh/manifest.part-000000-000001.json
 run "shard part a FIFO" "1|2" tumble assemble sh --progress none
-setup; mkfifo R.md
-run "methods --readme a FIFO" "1|2" tumble methods --readme R.md
-setup
-run "bench --readme-table /dev/zero" "1|2" tumble bench --readme-table /dev/zero
 setup; mkfifo x.glb; check='[ -p x.glb ]'
 run "export onto a FIFO" "1|2" tumble export s.toml --gltf x.glb
 setup; printf 'name = "p"\n[[bodies]]\ncloud = "/dev/stdin"\n' >p.toml

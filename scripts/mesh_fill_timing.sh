@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times the volume fill of a 100 000-triangle mesh (issue #12): a torus
+# Times the volume fill of a 100 000-triangle mesh: a torus
 # (R = 0.1 m, r = 0.04 m, 250 × 200 quads) written as binary STL, closed and
 # with 3 triangles removed (a small hole: the winding-number tree's path),
 # resolution 190 (about 10⁶ particles). Prints `tumble info`'s particle lines

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# Issue 26 probe: N mutated copies of assimp's OBJ/STL/PLY/OFF test models (byte flips,
+# A probe of the mesh import: N mutated copies of assimp's OBJ/STL/PLY/OFF test models (byte flips,
 # cuts, inserted digits, truncation) through `tumble info`; counts how each ends. Any
 # ending but exit 0 or 2 (a signal, a hang past 90 s, "internal error") is kept in
 # build/mesh_mutations/. Usage: scripts/mesh_mutations.py N [SEED] [TUMBLE]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 23's scaling table without a GPU: `tumble render` of the demo
+# The render scaling table without a GPU: `tumble render` of the demo
 # (scenes/dzhanibekov.toml, FXAA) pinned by `taskset` to 1 core and to 2
 # cores, at --jobs 1..4, two ways: PNG frames (--video none) and the H.264
 # video streamed (--frames-out none). frames/s is the difference of two

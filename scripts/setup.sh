@@ -7,13 +7,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 RENDER_PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libboost-dev                     # core: linear algebra, elliptic functions
   libtomlplusplus-dev libcli11-dev               # scenes, command line
   libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev  # headless GL (OSMesa / EGL), camera maths
   libstb-dev libdeflate-dev fonts-dejavu-core    # PNG in/out, text overlay
   nlohmann-json3-dev                             # JSON (manifest, golden sidecars, info --json)
   libassimp-dev                                  # mesh shapes (OBJ, STL, PLY, ...)
+  zlib1g-dev                                     # named by Debian's assimp CMake package, not among its dependencies
   ffmpeg                                         # videos (run as a program)
 )
 TEST_PACKAGES=(

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak (issue 26): KILLS random kill -9 points over the three commands that
+# Soak: KILLS random kill -9 points over the three commands that
 # change an output folder — a shard render, its --resume, and assemble (with
 # an mp4) — then each is run to the end. The folder must end byte-identical
 # to a clean run (frames, video, frames.sums aside: it records each write, so

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The table that chooses the video encode's x264 preset and threads (README,
-# "Video encode"): the demo's frames at 1280x720, CRF 18 as tumble encodes
+# The table that chooses the video encode's x264 preset and threads (docs/rendering.md,
+# "Video encoder"): the demo's frames at 1280x720, CRF 18 as tumble encodes
 # them, fed as raw RGB (as `render` pipes them) to libx264 at each preset and
 # thread count; time (wall and CPU, user + system), file size, and PSNR and
 # SSIM of the decoded video against the PNG frames (ffmpeg's psnr/ssim

@@ -33,7 +33,7 @@ std::string box_text(const golden::Box& b) {
 }
 
 // --diff must not overwrite an input (the expected golden, say) and must be
-// writable: both checked before any work, exit 2 (issue 26).
+// writable: both checked before any work, exit 2.
 void check_diff_path(const CompareCliOptions& o) {
   namespace fs = std::filesystem;
   const fs::path d = o.diff;

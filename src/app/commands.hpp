@@ -51,13 +51,17 @@ void add_render_command(CLI::App& app, Action& action);
 void add_assemble_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_golden_command(CLI::App& app, Action& action);
+/// Lists `bench` among the commands; run_bench_tool does the work.
 void add_bench_command(CLI::App& app, Action& action);
+/// `tumble bench ARGS`: replaces this process with tumble-bench ARGS from the
+/// folder of this binary; returns an exit code only when it cannot.
+int run_bench_tool(int argc, char** argv);
 void add_methods_command(CLI::App& app, Action& action);
 void add_export_command(CLI::App& app, Action& action);
 void add_storyboard_command(CLI::App& app, Action& action);
 
-/// The README's "Integration methods" table (markdown), one row per row of
-/// core's method table: name, order, description.
+/// The integration methods as a markdown table (`tumble methods --markdown`,
+/// docs/methods.md), one row per row of core's method table: name, order, description.
 std::string methods_markdown();
 
 /// The options that are scene keys ([output] width, height, fps, aa, msaa),

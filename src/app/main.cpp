@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   tumble::app::add_bench_command(app, action);
   tumble::app::add_methods_command(app, action);
   tumble::app::add_export_command(app, action);
+  if (argc >= 2 && std::string(argv[1]) == "bench") return tumble::app::run_bench_tool(argc - 2, argv + 2);
   if (argc < 2) {  // no command: say what there is
     std::cout << app.help();
     return tumble::app::kOk;

@@ -27,7 +27,7 @@ int run(const BenchOptions& opt, std::ostream& log);
 int run_problems(const BenchOptions& opt, const std::string& title, const std::vector<Problem>& problems,
                  std::ostream& log);
 
-/// The README's "How accurate is each method on the reference problem?" table
+/// docs/methods.md's "How accurate is each method on the reference problem?" table
 /// (markdown): orientation error at 10 s on the T-handle of every method and
 /// peer at dt = 0.1, 0.01, 0.001 s (adaptive: at rtol 1e-9), and ns per step at
 /// dt = 1e-3 s (median CPU).

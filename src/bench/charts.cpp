@@ -1,6 +1,6 @@
 #include "bench/charts.hpp"
 
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 
 #include <cmath>
 #include <cstdlib>

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "bench/flips.hpp"
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 #include "bench/studies.hpp"
 #include "core/dynamics.hpp"
 #include "core/fixed_stepper.hpp"

@@ -25,13 +25,13 @@ struct Problem {
   double reference_check = 0;  ///< forced: |dop853(1e-13) - exact| on the T-handle, rad
 };
 
-/// Principal moments (1, 2, 3) kg·m², ω_body = (0.01, 10, 0.01) rad/s, 10 s (issue #2 §5).
+/// Principal moments (1, 2, 3) kg·m², ω_body = (0.01, 10, 0.01) rad/s, 10 s.
 Problem t_handle_problem();
 /// Principal moments (2, 2, 4) kg·m², ω_body = (3, 1, 5) rad/s, 10 s: torque-free symmetric top.
 Problem symmetric_top_problem();
 /// T-handle under gravity g = (0, 0, -9.81) m/s² plus a body-fixed 2 N force at (1, 0, 0) m.
 Problem forced_problem();
-/// Three more forced scenes with forces and damping (issue #27 §4): a thruster
+/// Three more forced scenes with forces and damping: a thruster
 /// (gravity, body-fixed force, body torque), a damped tumbler (gravity, linear
 /// and angular damping) and a torqued, damped symmetric top.
 std::vector<Problem> scene_problems();

@@ -8,7 +8,7 @@
 
 #include "bench/bench.hpp"
 #include "bench/charts.hpp"
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 #include "bench/report.hpp"
 #include "bench/studies.hpp"
 
@@ -103,7 +103,7 @@ int run(const BenchOptions& opt, std::ostream& log) {
 
   std::ostringstream md;
   md << header_markdown(std::string("# tumble bench") + (opt.quick ? " (--quick)" : ""), st, problems);
-  md << "Targets (issue #6) on the T-handle: ≤ 1e-6 rad within 20 µs, ≤ 1e-9 rad within 200 µs. `exact` with "
+  md << "Targets on the T-handle: ≤ 1e-6 rad within 20 µs, ≤ 1e-9 rad within 200 µs. `exact` with "
      << "dt ≥ 1 s is a handful of closed-form steps.\n\n"
      << wp_md;
   md << "## Stability map (T-handle moments, spin Ω about the intermediate axis for ≈ 10 s ending between flips, "

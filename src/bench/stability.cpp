@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "bench/flips.hpp"
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 #include "bench/studies.hpp"
 #include "core/dynamics.hpp"
 #include "core/free_rotation_exact.hpp"

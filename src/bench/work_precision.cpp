@@ -4,7 +4,7 @@
 #include <map>
 #include <sstream>
 
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 #include "bench/studies.hpp"
 #include "io/atomic_file.hpp"
 

@@ -18,7 +18,7 @@ namespace {
 viz::Color rgba(const Eigen::Vector3d& c, float a) {
   return {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()), a};
 }
-glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+using viz::to_glm;
 
 std::vector<viz::BodySnapshot> snapshots(const scene::Scene& s, const std::vector<BodyState>& states,
                                          const std::vector<viz::BodyLook>* looks = nullptr) {

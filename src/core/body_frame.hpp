@@ -1,11 +1,11 @@
 // Euler's coordinates for the rotation: the RK-type methods integrate
 // (c, q, P, Π) with Π = Rᵀ L (principal frame), Π' = Π × ω_body + Rᵀ τ and
 // q' = ½ q ⊗ (0, ω_body), ω_body = I⁻¹ Π. The ODE is the seed's; only the
-// coordinates differ. On the README's reference problem (dt = 1 ms, 10 s) RK4
+// coordinates differ. On the reference problem (docs/methods.md) (dt = 1 ms, 10 s) RK4
 // in these coordinates errs 1.3e-9 rad against 1.6e-3 rad in the seed's
 // (q, L_world): the seed's form lets the RK error move |Π| and 2T off their
 // level sets independently, and near the separatrix that moves the flip times
-// (issue #10 §1; Boost.odeint's body-frame RK4 measured 8.4e-10).
+// (Boost.odeint's body-frame RK4 measured 8.4e-10).
 //
 // These are the plain Eigen forms (the reference the tuned kernels in
 // body_frame_tuned.hpp must reproduce bit for bit).

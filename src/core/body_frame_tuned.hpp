@@ -8,7 +8,7 @@
 // Eigen expressions perform, in the same order, with -ffp-contract=off (no
 // fused multiply-add): only dead work (P' = 0) is dropped, and the stage
 // vectors and the two rotations (Eigen's q * v) are kept in scalars, so the
-// step is one unpacked chain (measured figures: README's generated speed
+// step is one unpacked chain (measured figures: docs/methods.md's generated speed
 // table, scripts/gen_method_costs.sh).
 // tests/core/reference_kernels_test.cpp holds them equal.
 #pragma once

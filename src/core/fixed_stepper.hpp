@@ -4,7 +4,7 @@
 // step(), or with the sub-flow order fixed from the start when the method's
 // best order depends on it (MethodInfo::ordered_step: splitting). The Propagator adds the grid, sampling and the divergence guard;
 // tumble bench steps its methods through this too, so the charts show what a
-// run does (issue #10 §1).
+// run does.
 #pragma once
 
 #include <optional>

@@ -1,5 +1,5 @@
 // Dzhanibekov flips found from the motion itself, so explanatory videos can
-// anchor their text to them (issue 22): flip N is the N-th time the
+// anchor their text to them: flip N is the N-th time the
 // intermediate principal axis e₂ is perpendicular to L, i.e. the body-frame
 // momentum Π₂ = e₂·L changes sign (axis2_L crosses π/2), on a swing where e₂
 // turns over: |Π₂| reaches |L|/√2 (e₂ within 45° of ±L) before or after the

@@ -1,4 +1,4 @@
-// Forces and torques a body carries, as one list of small terms (issue #15 §2).
+// Forces and torques a body carries, as one list of small terms.
 // Each kind of term says, in one place (this file and forces.cpp):
 //   - `add_wrench`: its force (N) and torque about c (N·m), world frame, at a state;
 //   - `add_kick`:   its part of the exact kick (c and q frozen, see KickPart);

@@ -57,8 +57,8 @@ struct MethodInfo {
   Method method;
   std::string_view name;
   /// One line for people (markdown: `code`, no '|' escaping): what the method
-  /// is and what it integrates in. The README's method table is generated from
-  /// it (`tumble methods --readme README.md`).
+  /// is and what it integrates in. docs/methods.md's method table is generated
+  /// from it (`tumble_docs methods docs/methods.md`).
   std::string_view description;
   int order;                 ///< global order (adaptive pairs: of the solution they advance; exact: 0 = exact when torque-free)
   StepFn step;               ///< one fixed step (adaptive pairs: one uncontrolled step)

@@ -29,7 +29,7 @@ struct MassProperties {
   Eigen::Quaterniond principal_rotation() const { return Eigen::Quaterniond(principal_axes); }
 };
 
-/// Smallest principal moment allowed, relative to the largest (issue #5 §2).
+/// Smallest principal moment allowed, relative to the largest.
 inline constexpr double kMinMomentRatio = 1e-12;
 
 /// Computes M, c, J0, the right-handed principal frame and the box.

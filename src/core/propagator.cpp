@@ -57,7 +57,7 @@ void Propagator::check(const BodyState& s, double t, double h) {
   // A quaternion whose norm overflowed normalises to 0 yet stays finite.
   bool bad = !s.all_finite() || std::abs(s.q.squaredNorm() - 1.0) > 1e-6;
   if (!bad) {
-    // Energy balance (issue #10 §5): E − E0 can exceed the work W of the driving
+    // Energy balance: E − E0 can exceed the work W of the driving
     // terms (trapezoidal in the step's end powers) only by the method's error;
     // damping can only remove energy. Torque-free: W = 0, E is an invariant.
     const EnergyFlow f = energy_flow(*m_, s);

@@ -1,5 +1,5 @@
 // Advances one body through a run, sample time by sample time, with the
-// numeric-failure guard (issue #5 §3, #10 §5).
+// numeric-failure guard.
 #pragma once
 
 #include <memory>

@@ -8,7 +8,7 @@
 //    mapping", SIGGRAPH), which catches a faint but coherent patch.
 // Scattered single pixels and low-bit noise, the typical driver and
 // anti-aliasing differences, stay under all three. The defaults come from
-// measurements on llvmpipe and on deliberate small changes (README, "Golden-image tests").
+// measurements on llvmpipe and on deliberate small changes (docs/golden.md).
 #pragma once
 
 #include <string>

@@ -20,7 +20,7 @@
 namespace tumble::render {
 namespace {
 
-constexpr const char* kHint = "install the Debian packages libegl1 and libegl-mesa0";
+constexpr const char* kEglHint = "install the Debian packages libegl1 and libegl-mesa0";
 
 std::string to_hex(EGLint v) {
   constexpr char digits[] = "0123456789abcdef";
@@ -31,7 +31,7 @@ std::string to_hex(EGLint v) {
 
 class EglContext final : public GlContext {
  public:
-  explicit EglContext(std::optional<int> device) : lib_("libEGL.so.1", kHint) {
+  explicit EglContext(std::optional<int> device) : lib_("libEGL.so.1", kEglHint) {
     get_proc_ = lib_.get<PFNEGLGETPROCADDRESSPROC>("eglGetProcAddress");
     auto query_string = lib_.get<PFNEGLQUERYSTRINGPROC>("eglQueryString");
     get_error_ = lib_.get<PFNEGLGETERRORPROC>("eglGetError");
@@ -70,7 +70,7 @@ class EglContext final : public GlContext {
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error(display_name_ + ": " + what + " (EGL error 0x" + to_hex(get_error_()) + "); " + kHint);
+    throw std::runtime_error(display_name_ + ": " + what + " (EGL error 0x" + to_hex(get_error_()) + "); " + kEglHint);
   }
 
   EGLDisplay surfaceless_display() {
@@ -86,7 +86,7 @@ class EglContext final : public GlContext {
   template <class Fn>
   Fn ext(const char* name) const {
     auto f = reinterpret_cast<Fn>(get_proc_(name));
-    if (f == nullptr) throw std::runtime_error(std::string("EGL lacks ") + name + "; " + kHint);
+    if (f == nullptr) throw std::runtime_error(std::string("EGL lacks ") + name + "; " + kEglHint);
     return f;
   }
 

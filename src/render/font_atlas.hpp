@@ -52,7 +52,7 @@ class FontAtlas {
   };
   const Glyph* find(char32_t c) const;
 
-  int width_ = 1024, height_ = 2048;  // the first 1024 rows as before issue 22: the same glyph texels
+  int width_ = 1024, height_ = 2048;  // the first 1024 rows as before the atlas grew: the same glyph texels
   glm::vec2 solid_uv_{0};
   glm::vec2 texel_{0};  // one atlas texel in uv
   float bake_px_;

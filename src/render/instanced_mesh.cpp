@@ -5,7 +5,7 @@
 namespace tumble::render {
 namespace {
 
-const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+const void* mesh_offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
 }  // namespace
 
@@ -22,10 +22,10 @@ InstancedMesh::InstancedMesh(const GlFunctions& gl, const MeshData& data)
                 data.vertices.data(), GL_STATIC_DRAW);
   gl.EnableVertexAttribArray(0);
   gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
-                         offset(offsetof(MeshVertex, position)));
+                         mesh_offset(offsetof(MeshVertex, position)));
   gl.EnableVertexAttribArray(1);
   gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
-                         offset(offsetof(MeshVertex, normal)));
+                         mesh_offset(offsetof(MeshVertex, normal)));
   gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, data.indices.size() * sizeof(std::uint32_t),
                 data.indices.data(), GL_STATIC_DRAW);
@@ -35,12 +35,12 @@ InstancedMesh::InstancedMesh(const GlFunctions& gl, const MeshData& data)
   for (GLuint col = 0; col < 4; ++col) {
     gl.EnableVertexAttribArray(2 + col);
     gl.VertexAttribPointer(2 + col, 4, GL_FLOAT, GL_FALSE, sizeof(MeshInstance),
-                           offset(offsetof(MeshInstance, model) + col * sizeof(glm::vec4)));
+                           mesh_offset(offsetof(MeshInstance, model) + col * sizeof(glm::vec4)));
     gl.VertexAttribDivisor(2 + col, 1);
   }
   gl.EnableVertexAttribArray(6);
   gl.VertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, sizeof(MeshInstance),
-                         offset(offsetof(MeshInstance, color)));
+                         mesh_offset(offsetof(MeshInstance, color)));
   gl.VertexAttribDivisor(6, 1);
   gl.BindVertexArray(0);
 }

@@ -30,11 +30,11 @@ constexpr int kOsmesaCoreProfile = 0x34;
 constexpr int kOsmesaMajor = 0x36;
 constexpr int kOsmesaMinor = 0x37;
 
-constexpr const char* kHint = "install the Debian package libosmesa6";
+constexpr const char* kOsmesaHint = "install the Debian package libosmesa6";
 
 class OsmesaContext final : public GlContext {
  public:
-  OsmesaContext() : lib_("libOSMesa.so.8", kHint) {
+  OsmesaContext() : lib_("libOSMesa.so.8", kOsmesaHint) {
     create_ = lib_.get<CreateContextAttribsFn>("OSMesaCreateContextAttribs");
     destroy_ = lib_.get<DestroyContextFn>("OSMesaDestroyContext");
     make_current_ = lib_.get<MakeCurrentFn>("OSMesaMakeCurrent");
@@ -49,7 +49,7 @@ class OsmesaContext final : public GlContext {
     ctx_ = create_(attribs.data(), nullptr);
     if (ctx_ == nullptr) {
       throw std::runtime_error("OSMesa: cannot create a GL 3.3 core context; " +
-                               std::string(kHint));
+                               std::string(kOsmesaHint));
     }
     try {
       make_current();

@@ -16,7 +16,7 @@
 namespace tumble::render {
 
 /// Where the GPU does more than draw. Both on for a hardware GPU; off on
-/// llvmpipe, where each measured slower (README, "Using the whole machine")
+/// llvmpipe, where each measured slower (docs/rendering.md, "Using the whole machine")
 /// and the CPU FXAA keeps the bytes the goldens hold.
 struct GpuPaths {
   bool overlapped_readback = false;  ///< two PBOs: a frame's read-back overlaps the next one's drawing

@@ -8,7 +8,7 @@
 namespace tumble::render {
 namespace {
 
-const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+const void* sphere_offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
 }  // namespace
 
@@ -28,9 +28,9 @@ SpherePass::Batch SpherePass::make_batch() const {
   gl_->BindVertexArray(b.vao.id());
   gl_->BindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
   gl_->EnableVertexAttribArray(0);
-  gl_->VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(SphereInstance), offset(offsetof(SphereInstance, sphere)));
+  gl_->VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(SphereInstance), sphere_offset(offsetof(SphereInstance, sphere)));
   gl_->EnableVertexAttribArray(1);
-  gl_->VertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(SphereInstance), offset(offsetof(SphereInstance, color)));
+  gl_->VertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(SphereInstance), sphere_offset(offsetof(SphereInstance, color)));
   gl_->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices.id());
   gl_->BindVertexArray(0);
   return b;

@@ -5,7 +5,7 @@
 namespace tumble::render {
 namespace {
 
-const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+const void* text_offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
 }  // namespace
 
@@ -31,13 +31,13 @@ TextPass::TextPass(const GlFunctions& gl, const std::filesystem::path& shader_di
   gl.BindBuffer(GL_ARRAY_BUFFER, vbo_.id());
   gl.EnableVertexAttribArray(0);
   gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(TextVertex),
-                         offset(offsetof(TextVertex, position_px)));
+                         text_offset(offsetof(TextVertex, position_px)));
   gl.EnableVertexAttribArray(1);
   gl.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, sizeof(TextVertex),
-                         offset(offsetof(TextVertex, uv)));
+                         text_offset(offsetof(TextVertex, uv)));
   gl.EnableVertexAttribArray(2);
   gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, sizeof(TextVertex),
-                         offset(offsetof(TextVertex, color)));
+                         text_offset(offsetof(TextVertex, color)));
   gl.BindVertexArray(0);
 }
 

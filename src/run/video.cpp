@@ -133,7 +133,7 @@ std::string verify_video(const std::filesystem::path& video, long frames, int fp
 }
 
 VideoEncoder x264_encoder(int cores) {
-  // scripts/video_presets.sh's table (README, "Video encode"): at CRF 18 the
+  // scripts/video_presets.sh's table (docs/rendering.md, "Video encoder"): at CRF 18 the
   // fastest preset whose PSNR and SSIM against the frames are at least those
   // of x264's default (medium): ultrafast, at a quarter of medium's CPU time
   // and about twice its file size. One thread on 2 cores, where tumble draws

@@ -26,7 +26,7 @@ struct VideoEncoder {
 };
 
 /// libx264 at the preset and threads chosen by scripts/video_presets.sh's
-/// table (README, "Video encode"), for `cores`: the cores this process may
+/// table (docs/rendering.md, "Video encoder"), for `cores`: the cores this process may
 /// use (render::usable_cores), never --jobs, so that x264's thread count, and
 /// with it the video's bytes, do not depend on --jobs.
 VideoEncoder x264_encoder(int cores);

@@ -1,4 +1,4 @@
-// Times anchored to events of the simulated motion (issue 22): a caption's or
+// Times anchored to events of the simulated motion: a caption's or
 // slow-motion segment's `start`/`end` may be "flip N", "flip N + S" or
 // "flip N - S" instead of simulated seconds, so the text stays on the flip
 // when a user edits ω. Flip N is the N-th sign change of the body's Π₂

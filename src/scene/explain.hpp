@@ -1,4 +1,4 @@
-// Scene settings of explanatory videos (issue 11): time mapping (time_scale,
+// Scene settings of explanatory videos: time mapping (time_scale,
 // slow-motion segments), captions, a title card and laid-out views.
 #pragma once
 

@@ -142,6 +142,9 @@ struct Camera {
 
 /// The camera's up, or the fallback of core/camera_up.hpp when it is parallel
 /// to the view direction (a camera that follows a body can come to look along it).
+/// An Eigen vector as GLM's: the physics is in Eigen, draw lists in GLM.
+inline glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
 inline glm::dvec3 view_up(const Camera& c) {
   const glm::dvec3 d = c.target - c.position;
   const Eigen::Vector3d u = usable_up({c.up.x, c.up.y, c.up.z}, {d.x, d.y, d.z});

@@ -17,8 +17,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 // Around axis `a` (0 or 2): the other two components on an ellipse, Π_a from
 // the sphere; the parameter refined where the curve bends (near ±e2 a level
 // close to the separatrix turns within a few thousandths of |L|).
@@ -102,7 +100,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   auto add = [&](const std::vector<std::vector<Eigen::Vector3d>>& curves, Color c, float w, const char* name) {
     for (const auto& curve : curves) {
       PolylineItem p{{}, c, w, false, name};
-      for (const Eigen::Vector3d& x : curve) p.points.push_back(g(x / L));
+      for (const Eigen::Vector3d& x : curve) p.points.push_back(to_glm(x / L));
       view.polylines.push_back(std::move(p));
     }
   };
@@ -130,11 +128,11 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   add(own, color_of(Meaning::polhode), 2.0f, "polhode");
   for (const auto& c : own) add_direction_arrows(view, unit(c), I, 4, color_of(Meaning::polhode), 0.13);
   add_saddles(view);
-  view.points.push_back({g(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
+  view.points.push_back({to_glm(in.momentum / L), 0.045, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
   // Π's recent path, on the near side only (its fade runs oldest to newest).
   PolylineItem path{{}, color_of(Meaning::momentum_point, 0.8f), 2.0f, true, "momentum_path"};
-  for (const Eigen::Vector3d& p : in.history) path.points.push_back(g(p / L));
+  for (const Eigen::Vector3d& p : in.history) path.points.push_back(to_glm(p / L));
   if (path.points.size() >= 2) view.polylines.push_back(std::move(path));
 }
 

@@ -13,8 +13,6 @@ namespace tumble::viz {
 
 namespace {
 
-glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 // Two unit vectors spanning the plane ⊥ n.
 void plane_basis(const Eigen::Vector3d& n, Eigen::Vector3d& u, Eigen::Vector3d& v) {
   const Eigen::Vector3d a = std::abs(n.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
@@ -65,10 +63,10 @@ void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSet
   const Eigen::Vector3d target = 0.3 * f.foot + 0.25 * up;  // the key above the ellipsoid
   view.camera = Camera{};
   view.name = "poinsot";
-  view.camera.target = g(target);
+  view.camera.target = to_glm(target);
   const double az = glm::radians(c.azimuth_deg), el = glm::radians(c.elevation_deg);
-  view.camera.position = g(target + c.distance * (std::cos(el) * (std::cos(az) * f.u + std::sin(az) * f.v) + std::sin(el) * up));
-  view.camera.up = g(up);
+  view.camera.position = to_glm(target + c.distance * (std::cos(el) * (std::cos(az) * f.u + std::sin(az) * f.v) + std::sin(el) * up));
+  view.camera.up = to_glm(up);
   view.camera.fov_y_deg = 38;
   view.camera.near_m = 0.3;
   view.camera.far_m = 30;
@@ -80,8 +78,8 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
   const PoinsotGeometry& p = f.p;
   const double pi = std::numbers::pi;
   glm::dmat3 axes;
-  for (int i = 0; i < 3; ++i) axes[i] = g(p.axes.col(i));
-  view.surfaces.push_back(ellipsoid({0, 0, 0}, axes, g(p.semi_axes * f.scale), color_of(Meaning::ellipsoid, 0.32f)));
+  for (int i = 0; i < 3; ++i) axes[i] = to_glm(p.axes.col(i));
+  view.surfaces.push_back(ellipsoid({0, 0, 0}, axes, to_glm(p.semi_axes * f.scale), color_of(Meaning::ellipsoid, 0.32f)));
   view.surfaces.back().name = "ellipsoid";
   const Color ring = color_of(Meaning::ellipsoid, 0.6f);
   for (int a = 0; a < 3; ++a) {
@@ -89,26 +87,26 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
     const int b = (a + 1) % 3, c = (a + 2) % 3;
     for (int i = 0; i <= 96; ++i) {
       const double ph = 2 * pi * i / 96;
-      section.points.push_back(g((p.axes.col(b) * p.semi_axes[b] * std::cos(ph) +
+      section.points.push_back(to_glm((p.axes.col(b) * p.semi_axes[b] * std::cos(ph) +
                                   p.axes.col(c) * p.semi_axes[c] * std::sin(ph)) * f.scale * 1.003));
     }
     view.polylines.push_back(std::move(section));
   }
   for (int i = 0; i < 3; ++i)
-    view.arrows.push_back({{0, 0, 0}, g(p.axes.col(i) * p.semi_axes[i] * f.scale * 1.15), 0.012, kAxisColors[i]});
+    view.arrows.push_back({{0, 0, 0}, to_glm(p.axes.col(i) * p.semi_axes[i] * f.scale * 1.15), 0.012, kAxisColors[i]});
 }
 
 // The invariable plane: opaque, centred on the foot of L, with a faint grid
 // a hair above it (towards the ellipsoid) so nothing fights its depth.
 void add_invariable_plane(View& view, const PoinsotFrame& f) {
   const double half = 1.6, lift = 0.5 * kHerpolhodeLift;
-  view.surfaces.push_back(rectangle(g(f.foot), g(f.u * half), g(f.v * half), kPlaneColor));
+  view.surfaces.push_back(rectangle(to_glm(f.foot), to_glm(f.u * half), to_glm(f.v * half), kPlaneColor));
   const Color grid = color_of(Meaning::plane, 0.45f);
   const Eigen::Vector3d on = f.foot - lift * f.p.normal;
   for (int i = -4; i <= 4; ++i) {
     const double s = half * i / 4;
-    view.polylines.push_back({{g(on + s * f.u - half * f.v), g(on + s * f.u + half * f.v)}, grid, 1.0f, false});
-    view.polylines.push_back({{g(on - half * f.u + s * f.v), g(on + half * f.u + s * f.v)}, grid, 1.0f, false});
+    view.polylines.push_back({{to_glm(on + s * f.u - half * f.v), to_glm(on + s * f.u + half * f.v)}, grid, 1.0f, false});
+    view.polylines.push_back({{to_glm(on - half * f.u + s * f.v), to_glm(on + half * f.u + s * f.v)}, grid, 1.0f, false});
   }
 }
 
@@ -117,14 +115,14 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const PoinsotGeometry& p = f.p;
   // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
   const Eigen::Vector3d L_tip = f.foot - 3 * kHerpolhodeLift * p.normal;
-  view.arrows.push_back({{0, 0, 0}, g(L_tip), 0.015, kLColor, "L"});
-  view.arrows.push_back({{0, 0, 0}, g(p.contact * f.scale), 0.015, kOmegaColor, "omega"});
+  view.arrows.push_back({{0, 0, 0}, to_glm(L_tip), 0.015, kLColor, "L"});
+  view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.015, kOmegaColor, "omega"});
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f, false, "polhode"};
   PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f, false, "herpolhode"};
-  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(g(in.q * w * f.scale * 1.006));
+  for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(to_glm(in.q * w * f.scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history)
-    herpolhode.points.push_back(g(w * f.scale - kHerpolhodeLift * p.normal));
-  view.points.push_back({g(p.contact * f.scale), 0.035, color_of(Meaning::omega), "contact_point"});
+    herpolhode.points.push_back(to_glm(w * f.scale - kHerpolhodeLift * p.normal));
+  view.points.push_back({to_glm(p.contact * f.scale), 0.035, color_of(Meaning::omega), "contact_point"});
   if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
 }

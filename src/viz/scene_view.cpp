@@ -10,8 +10,6 @@ namespace tumble::viz {
 
 namespace {
 
-glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 glm::dmat3 rotation_of(const Eigen::Quaterniond& q) {
   const Eigen::Matrix3d r = q.toRotationMatrix();
   glm::dmat3 g;

@@ -14,8 +14,6 @@ namespace tumble::viz {
 
 namespace {
 
-glm::dvec3 g(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
 void refine(const std::function<Eigen::Vector3d(double)>& at, double t0, const Eigen::Vector3d& p0, double t1,
             const Eigen::Vector3d& p1, double tol, int depth, std::vector<double>& out) {
   const double tm = 0.5 * (t0 + t1);
@@ -161,9 +159,9 @@ void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve,
     while (j + 1 < along.size() && along[j + 1] < s) ++j;
     const Eigen::Vector3d p = curve[j];
     const Eigen::Vector3d v = p.cross(p.cwiseQuotient(inertia));  // dΠ/dt = Π × ω, up to |L|'s scale
-    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, g(p), 1.0)) continue;
-    const glm::dvec3 dir = g(v.normalized());
-    view.arrows.push_back({g(p) - 0.5 * size * dir, size * dir, 0.12 * size, color, ""});
+    if (v.norm() <= 0 || hidden_by_ball(view.camera.position, to_glm(p), 1.0)) continue;
+    const glm::dvec3 dir = to_glm(v.normalized());
+    view.arrows.push_back({to_glm(p) - 0.5 * size * dir, size * dir, 0.12 * size, color, ""});
   }
 }
 

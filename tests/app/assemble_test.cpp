@@ -1,4 +1,4 @@
-// Issue 14: shards of a render (`--frames A:B`, each with its manifest part)
+// Shards of a render (`--frames A:B`, each with its manifest part)
 // run by GNU Parallel and put together by `tumble assemble` equal a single
 // run byte for byte; parts that do not add up are refused, naming the gap.
 #include "render_fixture.hpp"

@@ -93,19 +93,19 @@ TEST_F(Cli, AutoToleranceSaysWhatItPicked) {
   const Result info = run("info " + scene("thruster.toml"));
   ASSERT_EQ(info.code, 0) << info.err;
   EXPECT_NE(info.out.find("<- picked"), std::string::npos) << info.out;
-  // A torqued body gets dop853 at rtol = tolerance/10 without pilot runs (issue 27): one candidate, priced.
+  // A torqued body gets dop853 at rtol = tolerance/10 without pilot runs: one candidate, priced.
   EXPECT_NE(info.out.find("dop853 "), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("not priced (no pilot)"), std::string::npos) << info.out;
-  // The README shows this block as info prints it (scripts/readme_figures.sh writes it).
-  const std::string readme = slurp(kSource / "README.md");
+  // docs/methods.md shows this block as info prints it (scripts/doc_figures.sh writes it).
+  const std::string readme = slurp(kSource / "docs" / "methods.md");
   const std::size_t b = readme.find("<!-- BEGIN info:thruster -->\n"), e = readme.find("<!-- END info:thruster -->");
-  ASSERT_TRUE(b != std::string::npos && e != std::string::npos && b < e) << "README.md: no info:thruster block";
+  ASSERT_TRUE(b != std::string::npos && e != std::string::npos && b < e) << "docs/methods.md: no info:thruster block";
   int shown = 0;
   for (const std::string& l : lines(readme.substr(b, e - b)))
     if (l.rfind("    ", 0) == 0) {
       ++shown;
       EXPECT_NE(info.out.find("  " + l.substr(4) + "\n"), std::string::npos)
-          << "README.md's info:thruster line\n" << l << "\nis not what info prints; run scripts/readme_figures.sh";
+          << "docs/methods.md's info:thruster line\n" << l << "\nis not what info prints; run scripts/doc_figures.sh";
     }
   EXPECT_GE(shown, 2);
   // The tolerance picks dt: a --dt on top is refused; --method takes over and drops it.
@@ -158,7 +158,7 @@ TEST_F(Cli, DivergenceExits3AndKeepsRows) {
                     csv.string() + "'");
   EXPECT_EQ(r.code, 3);
   EXPECT_NE(r.err.find("diverged at t="), std::string::npos) << r.err;
-  // The energy-balance guard (issue 10) stops this run at its first step (it
+  // The energy-balance guard stops this run at its first step (it
   // used to run on until the momenta overflowed): the row at t = 0 is kept.
   const auto l = lines(slurp(csv));
   ASSERT_GE(l.size(), 2u);
@@ -212,6 +212,23 @@ TEST_F(Cli, InfoShowsPlyVertexMasses) {
   const Result bad = run("info '" + (dir_ / "t.toml").string() + "'");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("t.ply: vertex 2: mass -3 kg is negative"), std::string::npos) << bad.err;
+}
+
+// The README's scene is a scene, and makes what the README says it makes:
+// 181 frames, flips at 1.8 s and 5.1 s (its picture: scripts/explain_frames.sh).
+TEST_F(Cli, ReadmeSceneIsAValidSceneThatFlipsWhereTheReadmeSays) {
+  const std::string readme = slurp(kSource / "README.md");
+  const std::size_t b = readme.find("```toml\n"), e = readme.find("```", b + 8);
+  ASSERT_TRUE(b != std::string::npos && e != std::string::npos) << "README.md: no toml block";
+  const fs::path scene = dir_ / "flip.toml";
+  std::ofstream(scene) << readme.substr(b + 8, e - b - 8);
+  const Result r = run("info '" + scene.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "") << "the README's scene warns";
+  EXPECT_NE(r.out.find("flips (e2 \u22a5 L)     1.7999, 5.0887 s in 6 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("frames 181 at 30 fps"), std::string::npos) << r.out;
+  EXPECT_NE(readme.find("flips over at t = 1.8 s and back at 5.1 s"), std::string::npos);
+  EXPECT_NE(readme.find("`out/flip/frame_000000.png` \u2026 `frame_000180.png`"), std::string::npos);
 }
 
 }  // namespace

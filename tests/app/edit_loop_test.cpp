@@ -1,4 +1,4 @@
-// Issue 13: the edit-render loop. Rendering the same scene file again after an
+// The edit-render loop. Rendering the same scene file again after an
 // edit replaces its frames without --force: new frames are written whole
 // (atomically), stale frames past the new range go once the new ones exist,
 // and an interrupted replacement is never resumed from the old frames.

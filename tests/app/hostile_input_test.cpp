@@ -1,4 +1,4 @@
-// Issue 13: hostile inputs and bad options, as a user meets them. Each fails at
+// Hostile inputs and bad options, as a user meets them. Each fails at
 // once, with the documented exit code and a message saying what the path is or
 // which option is wrong, before any work. None needs GL.
 #include <sys/stat.h>
@@ -186,7 +186,7 @@ TEST_F(BadOption, BenchIntoAnUnwritableFolderSaysWhy) {
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
 }
 
-// ---- Issue 26: hostile inputs and environments ------------------------------
+// ---- hostile inputs and environments ----------------------------------------
 
 TEST_F(HostileInput, CompareDiffThatIsAnInputIsRefusedBeforeAnyWork) {
   const fs::path golden = kSource / "tests/golden/poinsot/poinsot_f000150_fxaa.png";
@@ -218,7 +218,7 @@ TEST_F(HostileInput, DeeplyDottedTomlKeyIsExitTwoNamingTheLimit) {
 }
 
 TEST_F(HostileInput, PlyWhoseHeaderNeverEndsFailsAtOnceForEveryFill) {
-  // assimp spun at 100 % CPU forever on this one (issue 26).
+  // assimp spun at 100 % CPU forever on this one.
   std::ofstream(dir_ / "endless.ply") << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\n";
   for (const char* fill : {"volume", "surface", "vertices"}) {
     SCOPED_TRACE(fill);

@@ -123,7 +123,7 @@ TEST_F(HostileOutput, AnEmptyPathIsRefusedNotTakenAsTheDefault) {
 
 TEST_F(HostileOutput, SpecialFilesWhereTumbleReadsItsOwnFilesNeverBlock) {
   const fs::path scene = cloud_scene();
-  // A FIFO as an existing render's manifest, as a golden trajectory, as the README bench rewrites.
+  // A FIFO as an existing render's manifest, as a golden trajectory, as a PNG compared.
   fs::create_directories(dir_ / "render");
   fifo("render/manifest.json");
   Result r = bounded("render '" + scene.string() + "' -o '" + (dir_ / "render").string() + "'", 20);
@@ -135,10 +135,6 @@ TEST_F(HostileOutput, SpecialFilesWhereTumbleReadsItsOwnFilesNeverBlock) {
               20);
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("s.trajectory.csv: golden trajectory is a FIFO"), std::string::npos) << r.err;
-  fifo("README.md");
-  r = bounded("bench --readme-table '" + (dir_ / "README.md").string() + "'", 20);
-  EXPECT_EQ(r.code, 1) << r.err;
-  EXPECT_NE(r.err.find("README.md: --readme-table file is a FIFO"), std::string::npos) << r.err;
   fifo("a.png");
   r = bounded("compare '" + (dir_ / "a.png").string() + "' '" + (dir_ / "a.png").string() + "'", 20);
   EXPECT_EQ(r.code, 2) << r.err;

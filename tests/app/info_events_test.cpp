@@ -1,4 +1,4 @@
-// Issue 22 §5: `tumble info` lists each body's flips (the events "flip N"
+// `tumble info` lists each body's flips (the events "flip N"
 // counts) and the frames with the simulated time each shows.
 #include <string>
 

@@ -66,7 +66,7 @@ TEST_F(RenderCli, FrameRangeIsByteIdenticalToTheFullRun) {
   EXPECT_NE(slurp(dir_ / "full" / "frame_000003.png"), slurp(dir_ / "full" / "frame_000004.png"));
 }
 
-// Issue 23: the frames do not depend on the thread count (--jobs,
+// The frames do not depend on the thread count (--jobs,
 // TUMBLE_JOBS) nor on the GPU paths (PBO read-back one frame late, FXAA as
 // a GL pass): each frame is finished from its own read-back alone.
 TEST_F(RenderCli, FramesAreByteIdenticalWhateverTheJobs) {

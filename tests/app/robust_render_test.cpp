@@ -1,4 +1,4 @@
-// Hardening of `tumble render` (issue 5): interrupted renders (SIGINT, SIGKILL)
+// Hardening of `tumble render`: interrupted renders (SIGINT, SIGKILL)
 // and --resume, output-folder safety (--force), write errors naming the path.
 #include "render_fixture.hpp"
 
@@ -138,7 +138,7 @@ TEST_F(RobustRender, SceneNameCannotLeaveTheOutputFolder) {
   EXPECT_NE(r.err.find("evil.toml:1:8: error: name: expected 1-64 characters"), std::string::npos) << r.err;
 }
 
-// ---- Issue 26: one writer per folder, nothing on disk trusted unchecked ------
+// ---- one writer per folder, nothing on disk trusted unchecked ---------------
 
 using tumble::io::FolderLock;
 
@@ -234,7 +234,7 @@ TEST_F(RobustRender, AnyLegalFolderNameWorksEndToEnd) {
 
 TEST_F(RobustRender, ATopDownCameraDrawsTheBodyNotABlankFrame) {
   TUMBLE_NEED_GL();
-  // Looking straight down along the default up (+z) drew blank frames (issue 26).
+  // Looking straight down along the default up (+z) drew blank frames.
   std::string scene = slurp(data("tiny_render.toml"));
   scene += "\n[camera]\nposition = [0, 0, 3]\ntarget = [0, 0, 0]\n";
   std::ofstream(dir_ / "top.toml") << scene;

@@ -1,4 +1,4 @@
-// Soak (issue 13): a render of many frames, killed with SIGKILL at random
+// Soak: a render of many frames, killed with SIGKILL at random
 // points and resumed each time, ends byte-identical to a clean run with no
 // temp file left. TUMBLE_SOAK_FRAMES sets the length (default 300, the CI
 // size; 2000 locally: TUMBLE_SOAK_FRAMES=2000), TUMBLE_SOAK_SEED the kill times.

@@ -1,4 +1,4 @@
-// Issue 13: the video is part of a complete render. An interrupted encode
+// The video is part of a complete render. An interrupted encode
 // exits 130/143, a failed or missing ffmpeg exits 1; each leaves "complete":
 // false with "video": null and the reason, and --resume makes the video.
 // A fake ffmpeg on PATH makes each case happen on cue.
@@ -41,7 +41,7 @@ class VideoRender : public RobustRender {
   }
 };
 
-// Issue 23: the measured x264 settings at the CRF, and NVENC only for an
+// The measured x264 settings at the CRF, and NVENC only for an
 // NVIDIA GPU whose ffmpeg can open it (a fake ffmpeg answers the trial).
 TEST_F(VideoRender, EncoderIsChosenByGpuAndTrialEncode) {
   using tumble::run::choose_video_encoder;
@@ -138,7 +138,7 @@ TEST_F(VideoRender, EncodeShowsProgress) {
 
 }  // namespace
 
-// ---- --frames-out none: raw frames piped to ffmpeg, no PNG (issue 14) -------
+// ---- --frames-out none: raw frames piped to ffmpeg, no PNG ------------------
 
 namespace {
 
@@ -188,7 +188,7 @@ TEST_F(VideoRender, StreamedVideoHasEveryFrameAndNoPngs) {
   EXPECT_EQ(a, b);
 }
 
-// Issue 23: frames finish on --jobs workers in any order but reach ffmpeg in
+// Frames finish on --jobs workers in any order but reach ffmpeg in
 // order, and x264's threads follow the machine, not --jobs (+bitexact: no
 // encoder version in the file), so the streamed mp4's bytes do not depend on
 // --jobs. FXAA and 25 frames give the workers work to finish out of order.
@@ -266,7 +266,7 @@ TEST_F(VideoRender, InterruptedStreamExits130AndLeavesNoVideo) {
 
 TEST_F(VideoRender, AVideoFfmpegCallsDoneIsCheckedAndNeverReplacesAGoodOne) {
   TUMBLE_NEED_GL();
-  // Issue 26: on a full disk ffmpeg failed writing the trailer, yet its
+  // On a full disk ffmpeg failed writing the trailer, yet its
   // truncated mp4 was renamed into place and called complete.
   const fs::path out = dir_ / "o";
   ASSERT_EQ(wait_exit(spawn_render(data("tiny_render.toml"), out, {"--video", "mp4"})), 0) << slurp(dir_ / "spawn.err");

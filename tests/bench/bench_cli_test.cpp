@@ -1,5 +1,5 @@
-// `tumble bench --scene FILE` and `tumble bench --readme-table FILE`, run as a
-// user would (the built binary, exit codes, files written).
+// `tumble bench --scene FILE` and the dispatch of `tumble bench` to
+// tumble-bench, run as a user would (the built binary, exit codes, files written).
 #include <set>
 
 #include "../app/cli_fixture.hpp"
@@ -102,23 +102,29 @@ TEST_F(BenchCli, UnknownBodyAndMissingSceneExit2) {
   EXPECT_EQ(r.code, 2);
 }
 
-TEST_F(BenchCli, ReadmeTableReplacesOnlyBetweenMarkers) {
-  const std::string before = "# doc\nintro\n<!-- BEGIN bench:accuracy-table -->\n| old |\n<!-- END bench:accuracy-table -->\nafter\n";
-  const fs::path doc = write("doc.md", before);
-  const Result r = run("bench --readme-table '" + doc.string() + "'");
+// `tumble bench` runs tumble-bench from tumble's folder: its help is
+// tumble-bench's, and a tumble alone (a demo build) says what to build.
+TEST_F(BenchCli, TumbleBenchRunsTheBenchTool) {
+  const Result r = run("bench --help");
   ASSERT_EQ(r.code, 0) << r.err;
-  const std::string after = slurp(doc);
-  EXPECT_EQ(after.rfind("# doc\nintro\n<!-- BEGIN bench:accuracy-table -->\n| method |", 0), 0u) << after;
-  EXPECT_EQ(after.find("| old |"), std::string::npos);
-  EXPECT_NE(after.find("\n<!-- END bench:accuracy-table -->\nafter\n"), std::string::npos);
-  for (const char* row : {"| rk4 |", "| splitting |", "| peer odeint_rk4_body |", "| peer odeint_rk4_world |"})
-    EXPECT_NE(after.find(row), std::string::npos) << row;
+  EXPECT_NE(r.out.find("tumble bench"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--scene"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--render"), std::string::npos) << r.out;
+}
 
-  const fs::path plain = write("plain.md", "no markers here\n");
-  const Result bad = run("bench --readme-table '" + plain.string() + "'");
-  EXPECT_EQ(bad.code, 2);
-  EXPECT_NE(bad.err.find("BEGIN bench:accuracy-table"), std::string::npos) << bad.err;
-  EXPECT_EQ(slurp(plain), "no markers here\n");
+TEST_F(BenchCli, WithoutTheBenchToolTumbleBenchSaysWhatToBuild) {
+  const fs::path alone = dir_ / "alone" / "tumble";
+  fs::create_directories(alone.parent_path());
+  fs::copy_file(tumble_bin(), alone);
+  fs::permissions(alone, fs::perms::owner_all);
+  const std::string cmd = "'" + alone.string() + "' bench --quick >/dev/null 2>'" + (dir_ / "err").string() + "'";
+  const int st = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), 2);
+  const std::string err = slurp(dir_ / "err");
+  EXPECT_NE(err.find("the benchmark tool is not built"), std::string::npos) << err;
+  EXPECT_NE(err.find("tumble-bench"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "ran a study without the tool";
 }
 
 }  // namespace

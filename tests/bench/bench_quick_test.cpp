@@ -1,5 +1,5 @@
 // `tumble bench --quick` end to end: runs the studies into a temp folder once,
-// then checks the CSVs it wrote (issue #6 §6).
+// then checks the CSVs it wrote.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -155,7 +155,7 @@ TEST_F(BenchQuick, OdeintPeersOnEveryStudy) {
     EXPECT_GE(err[l].size(), 4u) << l;
     EXPECT_EQ(param_name[l], l == "odeint_dopri5_body" ? "rtol" : "dt") << l;
   }
-  // Same method, same steps, different coordinates (issue 10 §1): Euler's
+  // Same method, same steps, different coordinates: Euler's
   // equations for Π keep the near-separatrix T-handle far more accurately than
   // (q, L_world) with q normalised inside f. At dt = 1e-3 s (10⁴ steps):
   auto at = [&](const std::string& l, double dt) {

@@ -1,4 +1,4 @@
-// Issue 22 §5, the event test: captions anchored to "flip N" follow the flip
+// The event test: captions anchored to "flip N" follow the flip
 // found from the simulation. The same scene with a different ω flips at
 // another time; its caption is on screen at the new flip and gone 1 s after.
 // GL-free: it reads the frames' draw lists.

@@ -1,4 +1,4 @@
-// Issue 22 §9: what a viewer sees, from the layout report (no GL, no pixels).
+// What a viewer sees, from the layout report (no GL, no pixels).
 // Every frame of each shipped explanatory scene (every scenes/*.toml with
 // [[views]]) at 640×360, 960×540 and 1920×1080: Π always visible (but under
 // the title card, which covers the animation on purpose), no two
@@ -28,7 +28,7 @@ struct Size {
 };
 constexpr Size kSizes[] = {{640, 360}, {960, 540}, {1920, 1080}};
 
-// The shipped scenes with laid-out views; at least the two of issue 22.
+// The shipped scenes with laid-out views; at least the lessons' two.
 std::vector<fs::path> explained_scenes() {
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(fs::path(TUMBLE_SOURCE_DIR) / "scenes")) {
@@ -157,7 +157,7 @@ void text_at_1080p_twice_its_540p_height() {
   }
 }
 
-// Issue 22: a key covers nothing that matters. Each key (its lines' union, per
+// A key covers nothing that matters. Each key (its lines' union, per
 // view and the frame's) overlaps no body's box and no Π dot, in any frame.
 void keys_cover_no_body_or_momentum_point() {
   int keys = 0;
@@ -184,7 +184,7 @@ void keys_cover_no_body_or_momentum_point() {
   EXPECT_GT(keys, 1000) << "keys drawn over all frames";
 }
 
-// Issue 22 follow-up: a body's name sits beside its body, not on it. No
+// A body's name sits beside its body, not on it. No
 // visible body label overlaps a body's box (its own or another's) in its view,
 // in any frame.
 void body_labels_clear_of_bodies() {

@@ -1,4 +1,4 @@
-// Euler's coordinates (issue #10 §1): on the README's reference problem
+// Euler's coordinates: on the reference problem
 // (moments 1, 2, 3; ω_body = (0.01, 10, 0.01) rad/s; 10 s, three flips) rk4
 // and rk45 in (c, q, P, Π) stay close to the closed form where the seed's
 // coordinates lose the flip times. Errors are against FreeRotationExact.
@@ -30,7 +30,7 @@ TEST(BodyFrame, Rk4OnTheReferenceProblem) {
   const double body = error_at_10s(Method::rk4, 1e-3), seed = error_at_10s(Method::rk4_seed, 1e-3);
   std::printf("dt = 1e-3, t = 10 s: rk4 (Euler's coordinates) %.3e rad, rk4_seed %.3e rad\n", body, seed);
   EXPECT_LE(body, 1e-8);
-  // The seed's coordinates: the flip times move (README, issue #10's table: 1.57e-3).
+  // The seed's coordinates: the flip times move (docs/methods.md: 1.57e-3).
   EXPECT_GT(seed, 1e3 * body);
 }
 

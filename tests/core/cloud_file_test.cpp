@@ -109,7 +109,7 @@ TEST(CloudFile, CsvErrorsNameTheLine) {
 }
 
 TEST(CloudFile, CsvWithAUtf8ByteOrderMarkReadsItsHeader) {
-  // Excel's "CSV UTF-8" export starts with EF BB BF (issue 26: "no column named 'x'").
+  // Excel's "CSV UTF-8" export starts with EF BB BF (it said "no column named 'x'").
   const ParticleCloud c = parse_cloud_text("\xEF\xBB\xBFx,y,z,m\n1,2,3,4\n", "excel.csv");
   ASSERT_EQ(c.size(), 1u);
   EXPECT_EQ(c[0].mass, 4.0);

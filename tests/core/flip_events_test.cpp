@@ -1,4 +1,4 @@
-// Flip events (issue 22): the N-th sign change of Π₂, from the closed form and
+// Flip events: the N-th sign change of Π₂, from the closed form and
 // from the stepped motion of a body with torque terms.
 #include <gtest/gtest.h>
 

@@ -163,7 +163,7 @@ TEST(Forces, AngularAccelerationIsTheDerivativeOfOmega) {
 namespace tumble {
 namespace {
 
-// Issue #15 §2: energy conservation, the energy balance's power and the
+// Energy conservation, the energy balance's power and the
 // potential are derived in core from the terms' declared `work` and `potential`.
 TEST(ForceTerms, EnergyConservationIsDecidedFromTheTerms) {
   ForceSet f;

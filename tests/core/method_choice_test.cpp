@@ -1,4 +1,4 @@
-// method = "auto" with a tolerance (issue #6 §4): whatever choose_method picks,
+// method = "auto" with a tolerance: whatever choose_method picks,
 // and every candidate it calls usable, must meet the tolerance when run the way
 // a scene runs it (stopping at every frame), checked against an independent
 // reference (dop853 at rtol 1e-13), not against the pilot's own estimate.

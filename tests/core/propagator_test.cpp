@@ -1,7 +1,7 @@
 // Propagator: samples land exactly on the requested times (a scene's frames),
-// fixed-step methods step on the grid t_n = n·dt whatever the sample times
-// (issue #10 §4), and a run that blows up, forced or not, throws Diverged
-// naming the time, step, body and method (issue #10 §5).
+// fixed-step methods step on the grid t_n = n·dt whatever the sample times,
+// and a run that blows up, forced or not, throws Diverged
+// naming the time, step, body and method.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,7 +134,7 @@ TEST(Propagator, NonFiniteStateThrowsDiverged) {
   EXPECT_NE(what.find("euler"), std::string::npos) << what;
 }
 
-// Issue #10 §5: explicit Euler with angular_damping = 50 at dt = 0.5 s multiplies
+// Explicit Euler with angular_damping = 50 at dt = 0.5 s multiplies
 // Π by (1 - 25/Iᵢ) per step (energy 1e237 at t = 10 s before the guard). The
 // energy balance stops it within the first steps, naming time, step, body, method.
 TEST(Propagator, DampedBlowUpOfAForcedBodyThrows) {
@@ -184,7 +184,7 @@ TEST(Propagator, DrivenBodyPassesTheEnergyBalance) {
   }
 }
 
-// Issue #10 §4: the trajectory of a fixed-step method does not depend on the
+// The trajectory of a fixed-step method does not depend on the
 // sample times. Sampled at 7, 30 and 240 fps (and once at the end only), every
 // fixed-step method reaches the same state at t = 10 s, bit for bit: the grid
 // steps are the same operations; samples are partial steps off the grid.

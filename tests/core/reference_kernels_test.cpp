@@ -1,4 +1,4 @@
-// Tuned kernels against the plain Eigen forms they stand for (issue #15 §6):
+// Tuned kernels against the plain Eigen forms they stand for:
 // the contracts written in body_frame_tuned.hpp and splitting_kernel.hpp.
 #include <gtest/gtest.h>
 

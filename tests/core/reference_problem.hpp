@@ -1,4 +1,4 @@
-// The reference problem of issue #2: principal moments exactly (1, 2, 3) kg·m²,
+// The reference problem: principal moments exactly (1, 2, 3) kg·m²,
 // identity orientation, ω_body = (0.01, 10, 0.01) rad/s, no forces, 10 s.
 #pragma once
 

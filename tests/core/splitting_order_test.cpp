@@ -1,4 +1,4 @@
-// Issue #10 §1: `splitting` and `splitting4` choose their sub-flow order per
+// `splitting` and `splitting4` choose their sub-flow order per
 // body from its moments (kernel::split_order, split_order4), and a `splitting`
 // run from its start too (kernel::split_order_for_start); not from the orbit
 // region, which the study (scripts/splitting_order_study.sh) finds gains ~3%.

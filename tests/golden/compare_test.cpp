@@ -1,5 +1,5 @@
 // The image comparison (GL-free): global fraction, largest connected region
-// and the windowed mean on synthetic images (issue 16's must-show cases).
+// and the windowed mean on synthetic images (the cases it must tell apart).
 #include <algorithm>
 #include <cstdint>
 #include <random>

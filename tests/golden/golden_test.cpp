@@ -264,7 +264,7 @@ TEST_F(GoldenCli, ChangedImageWritesTheFourPicturesAndTheIndex) {
 }
 
 // Times pick the nearest frame (within half a frame), as decimals or simple
-// fractions; --frames takes frame numbers (issue 13 item 5).
+// fractions; --frames takes frame numbers.
 TEST_F(GoldenCli, TimesPickTheNearestFrameOrFrameNumbers) {
   const std::string base = std::string("golden '") + kTiny + "' --dir '" + (dir_ / "g").string() + "' --report '" +
                            (dir_ / "rep").string() + "' --width 32 --height 24 --msaa 0 --every 100";

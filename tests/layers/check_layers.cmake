@@ -10,9 +10,9 @@ set(rank_compose 3)   # frame composition: scene + viz -> draw lists, view recta
 set(rank_render 4)
 set(rank_golden 4)
 set(rank_gltf 4)   # glTF export (tinygltf): core, io, scene and viz, beside render
-set(rank_bench 4)  # the benchmark's peers and kernels: core and io only
 set(rank_run 5)
 set(rank_app 6)
+set(rank_bench 7)  # studies, peers, render and micro benchmarks, tumble-bench, tumble_docs: above the app, included by none
 
 if(NOT IS_DIRECTORY "${SRC}")
   message(FATAL_ERROR "SRC='${SRC}' is not a folder")
@@ -48,6 +48,6 @@ if(files_checked EQUAL 0)
   message(FATAL_ERROR "no source files under ${SRC}")
 endif()
 if(errors)
-  message(FATAL_ERROR "includes against the layer order core -> {io, viz} -> scene -> compose -> {render, golden, gltf, bench} -> run -> app:${errors}")
+  message(FATAL_ERROR "includes against the layer order core -> {io, viz} -> scene -> compose -> {render, golden, gltf} -> run -> app -> bench:${errors}")
 endif()
 message(STATUS "layers: ${files_checked} files, every include points down")

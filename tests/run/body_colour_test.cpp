@@ -1,4 +1,4 @@
-// Issue 22: a body's default colour is no vector's or curve's colour
+// A body's default colour is no vector's or curve's colour
 // (docs/colours.md): the demo's T-handle was L's orange. Each default (a scene
 // of six bodies without `color`) stays apart from the axes, L, ω, Π and the
 // polhode, herpolhode and separatrix (the greys of the other levels, the plane

@@ -33,7 +33,7 @@ TEST(ManifestParts, MissingRangesNameEveryGap) {
   EXPECT_EQ(missing_ranges({{1, 12}}, 5), "0:0");  // a range past the end covers no more
 }
 
-// Issue 26: a part whose numbers were changed on disk (an absurd or negative
+// A part whose numbers were changed on disk (an absurd or negative
 // frame_count, a range outside it) is not a part; assemble names it instead of
 // sizing a table by it ("internal error: std::bad_alloc" before).
 TEST(ManifestParts, APartWithAbsurdNumbersIsNotOk) {

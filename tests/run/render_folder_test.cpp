@@ -87,7 +87,7 @@ TEST_F(RenderFolder, AStopRequestIsAnInterruptedOutcomeNamingHowToResume) {
   EXPECT_EQ(man->value("complete", true), false);
 }
 
-// Issue 26: a folder that render or assemble refuses gets nothing written into
+// A folder that render or assemble refuses gets nothing written into
 // it, not even the lock file (.tumble.lock was left in such folders). No GL:
 // the folder is refused before any drawing.
 TEST_F(RenderFolder, ARefusedFolderGetsNoLockFile) {

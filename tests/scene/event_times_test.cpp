@@ -1,4 +1,4 @@
-// Issue 22 §5: times written as "flip N ± S", parsed, resolved at load from
+// Times written as "flip N ± S", parsed, resolved at load from
 // the body's own motion, and refused with file:line:col when malformed.
 #include <gtest/gtest.h>
 

@@ -117,7 +117,7 @@ time_scale = 0.1
   EXPECT_EQ(frame_clock(s, 30).count(), 1 + 30 * (2 + 1.0 / 0.5 + 0.5 / 0.1 + 0.5 / 0.5));  // hold, then the run
 }
 
-// Issue 22: a view's camera, the keys' switch and the principal-axis series.
+// A view's camera, the keys' switch and the principal-axis series.
 TEST(ExplainConfig, ReadsViewCamerasKeysAndPrincipalSeries) {
   const Scene s = load(R"(
 [draw]

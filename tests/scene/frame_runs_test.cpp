@@ -1,4 +1,4 @@
-// Issue 11 §4: smooth curves. Trails and polhodes come from sub-frame samples
+// Smooth curves. Trails and polhodes come from sub-frame samples
 // (dense output, never fed back), adaptive on the turning angle, the same for
 // a frame range as for a full run.
 #include <cmath>
@@ -85,7 +85,7 @@ TEST(SmoothCurves, SubSamplesFollowTheTurnPerFrame) {
 
 namespace {
 
-// Issue 11: text in small views does not overlap. The poinsot scene at the
+// Text in small views does not overlap. The poinsot scene at the
 // golden size (320 × 240) has four 160 × 120 views with titles, an overlay
 // line and body name labels.
 }  // namespace

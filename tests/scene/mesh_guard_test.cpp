@@ -1,4 +1,4 @@
-// Issue 26: a mesh never reaches assimp unchecked. Our structural check refuses
+// A mesh never reaches assimp unchecked. Our structural check refuses
 // malformed OBJ, STL, PLY and OFF files with file:line messages, and assimp
 // runs in a guarded child whose crash, hang or runaway allocation becomes an
 // InputError instead of killing (or freezing) the process.
@@ -44,7 +44,7 @@ std::string slurp(const fs::path& p) {
 }
 
 TEST(MeshPrecheck, PlyHeaderThatNeverEndsIsRefusedBeforeAssimp) {
-  // assimp spins at 100 % CPU on this forever (issue 26).
+  // assimp spins at 100 % CPU on this forever.
   const std::string msg = refusal("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", MeshFormat::ply, "h.ply");
   EXPECT_NE(msg.find("h.ply:5:1: the file ends before 'end_header'"), std::string::npos) << msg;
 }
@@ -99,7 +99,7 @@ TEST(MeshPrecheck, EveryAssimpTestModelOfTheCheckedFormatsStillLoads) {
     for (const auto& e : fs::directory_iterator(models / dir)) {
       const std::string ext = e.path().extension().string();
       if (ext != ".obj" && ext != ".stl" && ext != ".ply" && ext != ".off") continue;
-      // Refused on purpose: UTF-16 text, an OFF and a PLY (assimp issue 623) whose
+      // Refused on purpose: UTF-16 text, an OFF and a PLY (assimp's issue623.ply) whose
       // data contradict their headers, and a PLY with a NaN vertex.
       const std::string n = e.path().filename().string();
       if (n == "box_UTF16BE.obj" || n == "invalid.off" || n == "issue623.ply" || n == "pond.0.ply") continue;

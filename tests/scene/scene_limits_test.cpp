@@ -1,4 +1,4 @@
-// Issue 26: limits checked on a scene's text before toml++ parses it, each
+// Limits checked on a scene's text before toml++ parses it, each
 // refused with file:line:column naming the limit; and long or binary tokens
 // quoted short in messages.
 #include <string>
@@ -20,7 +20,7 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(SceneLimits, ADeeplyDottedKeyIsRefusedBeforeTomlRecursesOnIt) {
-  // 50 000 dots in 100 KB crashed toml++ (stack overflow, issue 26).
+  // 50 000 dots in 100 KB crashed toml++ (stack overflow).
   std::string key = "a";
   for (int i = 0; i < 50000; ++i) key += ".a";
   const std::string msg = error_of("name = \"x\"\n" + key + " = 1\n");

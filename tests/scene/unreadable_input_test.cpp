@@ -1,4 +1,4 @@
-// Inputs that exist but are not readable regular files (issue 13): a device,
+// Inputs that exist but are not readable regular files: a device,
 // a directory, a FIFO, a file without read permission, as the scene file or a
 // cloud file. Each fails at once with UnreadableFile (exit 1) saying what the
 // path is; none hangs or reads without bound.

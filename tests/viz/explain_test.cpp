@@ -90,7 +90,7 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
   EXPECT_TRUE(omega_arrow);
 }
 
-// Issue 22 §6: a shaded translucent ellipsoid on an opaque plane, seen from
+// A shaded translucent ellipsoid on an opaque plane, seen from
 // well above the plane, with its curves named inside the view.
 TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   const Tumbler b;
@@ -164,7 +164,7 @@ TEST(MomentumSphere, PolhodesLieOnBothSurfaces) {
   EXPECT_TRUE(polhodes(I, L, L * L / 0.9, 16).empty());  // above L²/I1: no such motion
 }
 
-// Issue 22 §1: the energy ellipsoid meets the sphere on the polhode, and is
+// The energy ellipsoid meets the sphere on the polhode, and is
 // left out where it would fill the view (near e₁ its e₃ semi-axis is √(I₃/I₁)).
 TEST(MomentumSphere, EnergyEllipsoidMeetsTheSphereOnThePolhode) {
   const Eigen::Vector3d I(1, 2, 2.5);

@@ -1,4 +1,4 @@
-// What a lecturer reads in a view (issue 22 follow-ups), GL-free: a key
+// What a lecturer reads in a view , GL-free: a key
 // lists exactly what its view draws, and a body's label sits beside its body,
 // clear of the body's box and its arrows.
 #include <string>

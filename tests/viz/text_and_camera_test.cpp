@@ -1,4 +1,4 @@
-// Issue 22: text sizes in proportion to the frame, wrapping, keys that do not
+// Text sizes in proportion to the frame, wrapping, keys that do not
 // overlap themselves, the colour table as documented, and the momentum-sphere
 // camera that keeps Π on the near side, turns smoothly and depends only on the past.
 #include <algorithm>

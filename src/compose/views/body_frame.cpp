@@ -15,10 +15,8 @@ namespace tumble::compose {
 
 namespace {
 
-constexpr double kMargin = 0.04;
-constexpr long kFitSamples = 240;
-
-glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+constexpr double kBodyMargin = 0.04;
+constexpr long kBodyFitSamples = 240;
 
 // The camera at t = 0: aimed at the body from the view's azimuth and
 // elevation (default: the scene camera's direction), `distance` body radii away.
@@ -31,7 +29,7 @@ viz::Camera body_camera(const scene::Scene& s, const viz::Camera& scene_cam, con
   cam.fov_y_deg = s.render.camera.fov_y_deg;
   const double r = viz::box_radius(m);
   const double dist = c.distance.value_or(std::max(2.2, 1.15 / std::sin(glm::radians(cam.fov_y_deg) / 2))) * r;
-  cam.target = to_glm(s0.c);
+  cam.target = viz::to_glm(s0.c);
   cam.position = cam.target + dist * glm::dvec3(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
   cam.up = {0, 0, 1};
   cam.near_m = 0.05 * dist;
@@ -59,11 +57,11 @@ class BodyFramePanel : public Panel {
                           ctx_.scene.bodies[body_].model, run.frames[0][body_]);
     std::vector<Shot> shots;
     const long n = static_cast<long>(run.frames.size());
-    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
-      const viz::View v = content(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
+    for (long i = 0; i < std::min(n, kBodyFitSamples); ++i) {
+      const viz::View v = content(n <= kBodyFitSamples ? i : i * (n - 1) / (kBodyFitSamples - 1));
       shots.push_back({v.camera, solid_points(v)});
     }
-    camera_ = backed_off(camera_, backoff(shots, aspect, kMargin));
+    camera_ = backed_off(camera_, backoff(shots, aspect, kBodyMargin));
   }
 
   viz::View content(long k) const override {
@@ -79,9 +77,9 @@ class BodyFramePanel : public Panel {
                                           ? Eigen::Quaterniond(cloud_orientation(m, sk) * cloud_orientation(m, s0).conjugate())
                                           : Eigen::Quaterniond::Identity();
       const glm::dvec3 off = cam.position - cam.target;
-      cam.target = to_glm(sk.c);
-      cam.position = cam.target + to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
-      cam.up = to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
+      cam.target = viz::to_glm(sk.c);
+      cam.position = cam.target + viz::to_glm(turn * Eigen::Vector3d(off.x, off.y, off.z));
+      cam.up = viz::to_glm(turn * Eigen::Vector3d(cam.up.x, cam.up.y, cam.up.z));
     }
     viz::View v = ctx_.world.view(0, k, cam, int(size_.x), int(size_.y), body_);
     v.name = name();

@@ -16,9 +16,9 @@ namespace tumble::compose {
 
 namespace {
 
-constexpr double kMargin = 0.04;
-constexpr long kFitSamples = 120;
-constexpr double kClosest = 0.5;
+constexpr double kPoinsotMargin = 0.04;
+constexpr long kPoinsotFitSamples = 120;
+constexpr double kPoinsotClosest = 0.5;
 
 // Points on the inertia ellipsoid's surface (its unit sphere under its model), for the camera fit.
 void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& out) {
@@ -45,8 +45,8 @@ class PoinsotPanel : public Panel {
     if (ctx_.runs.empty() || ctx_.runs[0].frames.empty()) return;
     const long n = static_cast<long>(ctx_.runs[0].frames.size());
     std::vector<Shot> shots;
-    for (long i = 0; i < std::min(n, kFitSamples); ++i) {
-      const viz::View v = build(n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1));
+    for (long i = 0; i < std::min(n, kPoinsotFitSamples); ++i) {
+      const viz::View v = build(n <= kPoinsotFitSamples ? i : i * (n - 1) / (kPoinsotFitSamples - 1));
       Shot s{v.camera, solid_points(v)};
       for (const viz::PolylineItem& l : v.polylines)
         if (!l.name.empty()) s.points.insert(s.points.end(), l.points.begin(), l.points.end());
@@ -55,7 +55,7 @@ class PoinsotPanel : public Panel {
       shots.push_back(std::move(s));
     }
     // Closer too: the construction, not the plane (cut at the content's edges), fills the content.
-    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kMargin, kClosest);
+    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kPoinsotMargin, kPoinsotClosest);
   }
 
   viz::View content(long k) const override {

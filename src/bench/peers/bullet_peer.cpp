@@ -1,5 +1,5 @@
 // Bullet peer: the body as a btRigidBody in a btDiscreteDynamicsWorld.
-#include "bench/peer.hpp"
+#include "bench/peers/peer.hpp"
 
 #if TUMBLE_HAVE_BULLET
 #include <btBulletDynamicsCommon.h>

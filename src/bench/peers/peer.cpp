@@ -1,5 +1,5 @@
 // The peers' common parts: tumble's methods as Steppers, fixed-step runs.
-#include "bench/peer.hpp"
+#include "bench/peers/peer.hpp"
 
 #include <cmath>
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace tumble::run {
+namespace tumble::bench {
 
 /// One scene's anti-aliasing measured against 4x MSAA (the reference), over
 /// a few frames: mean RMS difference (0..255 levels) and the mean fraction of
@@ -57,4 +57,4 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
                                    const std::filesystem::path& out_dir, std::ostream& log,
                                    const std::vector<std::filesystem::path>& quality_scenes = {}, int jobs = 0);
 
-}  // namespace tumble::run
+}  // namespace tumble::bench

@@ -16,7 +16,7 @@
 
 #include <boost/version.hpp>
 
-#include "bench/peer.hpp"
+#include "bench/peers/peer.hpp"
 #include "core/body_frame.hpp"
 #include "core/dynamics.hpp"
 

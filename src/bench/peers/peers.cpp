@@ -1,5 +1,5 @@
 // The registry: the engines in order, and what the bench asks of them all.
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
-// Google Benchmark: the golden-image comparison on a 720p pair (issue 16
-// target: under 10 ms per compare, all figures including the connected
+// Google Benchmark: the golden-image comparison on a 720p pair
+// (target: under 10 ms per compare, all figures including the connected
 // regions and the windowed mean).
 #include <benchmark/benchmark.h>
 

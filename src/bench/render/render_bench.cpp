@@ -1,4 +1,4 @@
-#include "run/render_bench.hpp"
+#include "bench/render/render_bench.hpp"
 
 #include <sys/resource.h>
 
@@ -20,7 +20,9 @@
 #include "render/renderer.hpp"
 #include "render/worker_threads.hpp"
 
-namespace tumble::run {
+namespace tumble::bench {
+
+using namespace tumble::run;  // the render pipeline this measures
 
 namespace {
 using Clock = std::chrono::steady_clock;
@@ -275,4 +277,4 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   return r;
 }
 
-}  // namespace tumble::run
+}  // namespace tumble::bench

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/peer.hpp"
+#include "bench/peers/peer.hpp"
 #include "bench/studies.hpp"
 
 namespace tumble::bench {

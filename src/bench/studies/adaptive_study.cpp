@@ -9,7 +9,7 @@
 // cheapest dt at 1e-10 rad on the T-handle (dt sweep 24 per decade);
 // `auto [problem]`: instead, the bench's own work-precision sweep and auto study
 // (full settings) on the scene problems (or the one named), as auto.csv.
-// Built and run by scripts/adaptive_study.sh.
+// Run by scripts/adaptive_study.sh (the target tumble_adaptive_study).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

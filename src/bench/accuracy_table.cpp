@@ -1,11 +1,11 @@
-// The README's accuracy table, computed (`tumble bench --readme-table README.md`)
+// The accuracy table of docs/methods.md, computed (`tumble_docs accuracy docs/methods.md`)
 // so no figure in it is copied by hand.
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
 #include "bench/bench.hpp"
-#include "bench/peers.hpp"
+#include "bench/peers/peers.hpp"
 #include "core/error.hpp"
 #include "core/embedded_rk.hpp"
 #include "core/format.hpp"
@@ -14,7 +14,7 @@ namespace tumble::bench {
 
 namespace {
 
-// README style: 0.556, 1.57e-3, 0.
+// As the docs write them: 0.556, 1.57e-3, 0.
 std::string sci(double v) {
   if (!std::isfinite(v)) return "diverged";
   if (v == 0) return "0";

@@ -1,5 +1,5 @@
 // ODE peer: the body as one dBody stepped by dWorldStep.
-#include "bench/peer.hpp"
+#include "bench/peers/peer.hpp"
 
 #if TUMBLE_HAVE_ODE
 #include <ode/ode.h>
