@@ -25,6 +25,13 @@ constexpr double kRoundOff = 1e-13;       // end differences below this are roun
 constexpr double kAdaptiveMargin = 10;    // adaptive pairs run at rtol = tolerance / this
 constexpr double kPriceWindows = 32;      // an adaptive pair is priced on 1/32 of the run
 constexpr double kProbeWindows = 8;       // exact on a torqued body is probed on 1/8 of it
+constexpr double kOrderWindow = 0.4;      // order_seen: |observed order - p| within this
+
+}  // namespace
+
+bool order_seen(double observed, int p) { return std::abs(observed - p) <= kOrderWindow; }
+
+namespace {
 
 // End state after `duration` with `cfg`, or nullopt when the run diverged.
 std::optional<BodyState> run(const RigidBodyModel& m, const BodyState& s0, const StepConfig& cfg, double duration) {
@@ -70,7 +77,7 @@ bool ladder_settles(const std::vector<double>& n_k, const std::vector<double>& d
   }
   if (k < 2 || !std::isfinite(d_k[k - 2])) return false;
   const double order = std::log2(d_k[k - 2] / d);
-  if (std::abs(order - p) > 0.4) return false;  // not yet asymptotic
+  if (!order_seen(order, p)) return false;  // not yet asymptotic
   // Asymptotic: the finer state x(n) has error ≈ d/(2^p - 1), and e ∝ n^-p.
   const double err_n = d / (std::pow(2.0, p) - 1);
   double n_star = std::ceil(n * std::pow(err_n / (kSafety * r.tolerance), 1.0 / p));
@@ -193,7 +200,7 @@ MethodEstimate kicked_exact_estimate(Method method, const RigidBodyModel& m, con
   }
   const double d2 = end_state_error(m, x8, at(16));
   e.observed_order = std::log2(d1 / d2);
-  if (!(d2 > kRoundOff) || !(std::abs(e.observed_order - 2) <= 0.4)) {  // NaN fails too
+  if (!(d2 > kRoundOff) || !order_seen(e.observed_order, 2)) {  // NaN fails too
     e.note = "order 2 not seen on the first 1/" + format_number(k, 0, 'f') + " of the run (observed " +
              format_number(e.observed_order, 2) + ")";
     return e;

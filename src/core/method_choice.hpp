@@ -52,6 +52,12 @@ double end_state_error(const RigidBodyModel& m, const BodyState& a, const BodySt
 /// machine it runs on.
 double step_cost_ns(Method method, const RigidBodyModel& m);
 
+/// The pilot's order window: whether successive differences shrinking by
+/// 2^observed show an order-p method in its asymptotic range, |observed - p|
+/// <= 0.4 (NaN: no). Wider, a pilot still short of it (an order-2 method
+/// showing 1.5) would be extrapolated as if it were there, and miss the tolerance.
+bool order_seen(double observed, int p);
+
 /// `method = "auto"`'s first rule, the one place it is decided: a torque-free
 /// body needs no measurement, as the closed form (`exact`) is exact for it.
 bool auto_takes_closed_form(const RigidBodyModel& m);

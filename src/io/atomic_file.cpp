@@ -20,7 +20,19 @@ constexpr std::string_view kTempTag = ".tmp-";
   throw IoError("cannot " + std::string(what) + " '" + p.string() + "': " + std::strerror(e) +
                 (e == EFBIG ? " (over the file-size limit: ulimit -f, or the filesystem's largest file)" : ""));
 }
+test_hooks::SyncHook& sync_hook() {
+  static test_hooks::SyncHook hook;
+  return hook;
+}
+
+/// The temp file's bytes on the disk (the stdio buffer is flushed already).
+bool sync_to_disk(std::FILE* f, const std::filesystem::path& tmp) {
+  if (sync_hook()) sync_hook()(::fileno(f), tmp);
+  return ::fsync(::fileno(f)) == 0;
+}
 }  // namespace
+
+void test_hooks::set_sync_hook(SyncHook hook) { sync_hook() = std::move(hook); }
 
 std::filesystem::path temp_path_for(const std::filesystem::path& path) {
   std::filesystem::path tmp = path;
@@ -83,7 +95,7 @@ void AtomicFile::commit() {
   if (!f_) return;
   std::FILE* f = f_;
   f_ = nullptr;
-  const bool ok = std::fflush(f) == 0 && (durability_ == Durability::rename_only || ::fsync(::fileno(f)) == 0);
+  const bool ok = std::fflush(f) == 0 && (durability_ == Durability::rename_only || sync_to_disk(f, tmp_));
   const int saved = errno;
   if (std::fclose(f) != 0 || !ok) {
     errno = ok ? errno : saved;

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -66,6 +67,14 @@ class AtomicFile {
   Durability durability_;
   std::FILE* f_ = nullptr;
 };
+
+namespace test_hooks {
+/// Called with the temp file's descriptor and path just before each fsync of
+/// a commit, so a test can see that the whole file reaches the disk before
+/// the rename (a crash between the two would otherwise leave a torn file).
+using SyncHook = std::function<void(int fd, const std::filesystem::path& tmp)>;
+void set_sync_hook(SyncHook hook);  ///< empty: none (the default)
+}  // namespace test_hooks
 
 /// Writes `contents` to `path` atomically. Throws IoError.
 void atomic_write_file(const std::filesystem::path& path, std::string_view contents,

@@ -182,6 +182,15 @@ struct Drawn {
   int signal = 0;
 };
 
+/// A test seam (tests/app/soak_test.cpp): TUMBLE_TEST_STOP_AT_FRAME=k stops
+/// the process (SIGSTOP) as it reaches frame k, so a test can kill it at a
+/// known frame, whatever the machine's load, with the encoder's threads
+/// caught wherever they are (mid-encode, mid-write, mid-rename). -1: unset.
+long test_stop_frame() {
+  const char* v = std::getenv("TUMBLE_TEST_STOP_AT_FRAME");
+  return v && *v ? std::atol(v) : -1;
+}
+
 /// Draws first..last (up to `good`, where the simulation stopped) into PNG
 /// files, skipping those a resumed render already has. A frame that cannot be
 /// written (disk full) records what is on disk and throws io::IoError.
@@ -211,7 +220,9 @@ Drawn draw_frames(Job& j, const compose::FrameBuilder& builder, render::Renderer
       encoder.submit(path, std::move(raw));
       raw = encoder.recycle_raw();
     };
+    const long stop_at = test_stop_frame();
     for (long k = j.first; k <= j.last && k < good; ++k) {
+      if (k == stop_at) ::raise(SIGSTOP);
       if ((d.signal = j.l.stop()) != 0) break;
       if (j.resume && kept(k)) {
         ++d.skipped;  // written whole by an earlier run (rename is atomic) and unchanged since

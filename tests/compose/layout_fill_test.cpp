@@ -15,6 +15,7 @@
 #include "compose/view_layout.hpp"
 #include "scene/frame_runs.hpp"
 #include "scene/scene.hpp"
+#include "viz/captions.hpp"
 #include "viz/key.hpp"
 #include "viz/palette.hpp"
 #include "viz/text_layout.hpp"
@@ -206,3 +207,56 @@ TEST(LayoutFill, ComparisonCellsShowTheExactBodyFaintly) {
 }
 
 }  // namespace
+
+namespace {
+
+// The frame's lowest and highest view edges, frame px (y down).
+std::pair<int, int> views_span(const FramePlan& p) {
+  int top = 1 << 30, bottom = 0;
+  for (const compose::ViewPlan& v : p.views) top = std::min(top, v.y), bottom = std::max(bottom, v.y + v.height);
+  return {top, bottom};
+}
+
+}  // namespace
+
+TEST(LayoutFill, ACaptionStripAtTheTopPutsTheViewsBelowIt) {
+  FrameNeeds n = needs({view({0, 0, 1, 1})});
+  n.caption_side = FrameNeeds::CaptionSide::top;
+  const FramePlan p = compose::plan_frame(n);
+  ASSERT_GT(p.captions.y1, p.captions.y0);
+  EXPECT_EQ(p.captions.y0, 0) << "the strip is at the top";
+  const auto [top, bottom] = views_span(p);
+  EXPECT_GE(top, p.captions.y1 - 1) << "no view under the caption strip";
+  EXPECT_NEAR(top, p.captions.y1, 1) << "the view starts where the strip ends";
+  EXPECT_EQ(bottom, n.height) << "and fills the rest of the frame";
+}
+
+TEST(LayoutFill, ALegendStripIsKeptFreeOfTheViews) {
+  FrameNeeds n = needs({view({0, 0, 1, 1})});
+  n.captions.clear();
+  n.legend = "a classic legend line: L, omega_world, the body's axes";
+  const FramePlan p = compose::plan_frame(n);
+  ASSERT_GT(p.legend.y1, p.legend.y0);
+  EXPECT_EQ(p.legend.y1, n.height) << "without captions the legend is at the foot";
+  const auto [top, bottom] = views_span(p);
+  EXPECT_EQ(top, 0);
+  EXPECT_LE(bottom, p.legend.y0 + 1) << "no view under the legend";
+}
+
+TEST(LayoutFill, EveryCaptionBackdropLiesInsideTheCaptionStrip) {
+  // Text never sits on the content: each caption's backdrop, at its bottom
+  // place, is inside the strip the views are kept out of.
+  for (const auto& caption : {std::string("short"), std::string("a caption long enough to wrap onto a second line "
+                                                                  "at this frame width, and then some more words")}) {
+    FrameNeeds n = needs({view({0, 0, 1, 1})});
+    n.captions = {caption};
+    const FramePlan p = compose::plan_frame(n);
+    ASSERT_GT(p.captions.y1, p.captions.y0);
+    for (const viz::TextItem& t : viz::caption_items(caption, 1.0f, n.width, n.height, p.badge_side)) {
+      if (t.backdrop.a <= 0) continue;
+      EXPECT_GE(t.backdrop_px.y, p.captions.y0) << caption;
+      EXPECT_LE(t.backdrop_px.w, p.captions.y1) << caption;
+    }
+    EXPECT_LE(views_span(p).second, p.captions.y0 + 1) << caption;
+  }
+}

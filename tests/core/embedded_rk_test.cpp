@@ -94,9 +94,52 @@ TEST_P(EmbeddedRk, DenseOutputDoesNotPerturbSteps) {
   EXPECT_LE(sampled->evaluations() - direct->evaluations(), GetParam().dense_evals * sampled->accepted());
 }
 
+// A step cut short to end on t_stop is no estimate of the step to come: the
+// controller keeps the step it had.
+TEST_P(EmbeddedRk, AStepCutToTheStopTimeKeepsTheControllersStep) {
+  const RigidBodyModel m = testing::reference_model();
+  const BodyState s0 = testing::reference_state(m);
+  const auto free = make(m, s0, 1e-8, INFINITY);
+  free->advance_to(std::nextafter(0.0, 1.0));
+  free->advance_to(std::nextafter(free->time(), INFINITY));
+  const double t1 = free->time();  // the end of the second step
+  const auto cut = make(m, s0, 1e-8, t1 + 1e-9);  // the third step cut to a sliver
+  cut->advance_to(t1 + 1e-9);
+  EXPECT_EQ(cut->time(), t1 + 1e-9);
+  EXPECT_GT(cut->next_step(), 1e3 * 1e-9) << "the sliver became the controller's step";
+}
+
 INSTANTIATE_TEST_SUITE_P(Pairs, EmbeddedRk,
                          ::testing::Values(PairCase{Method::rk45, 6, 0}, PairCase{Method::dop853, 12, 3}),
                          [](const auto& info) { return testing::name_of(info.param.method); });
+
+// After a rejected try the accepted step is not followed by a larger one
+// (HNW I §II.4: "facmax = 1 right after a rejection"), else the controller
+// oscillates between growing and being rejected. Watched one accepted step
+// at a time, over both pairs (the rule is theirs in common); the runs must
+// have rejections for the check to mean anything (rk45 at loose tolerances has).
+TEST(EmbeddedRkControl, NoGrowthRightAfterARejectedStep) {
+  const RigidBodyModel m = testing::body_with_moments({0.7, 1.3, 2.2});
+  const BodyState s0 = testing::spinning_state(m, Eigen::Quaterniond(0.3, -0.5, 0.7, 0.2), {0.3, 0.5, 4.0});
+  long after_rejection = 0;
+  for (Method method : {Method::rk45, Method::dop853})
+    for (double rtol : {1e-1, 1e-2, 1e-3, 1e-4, 1e-6}) {
+      AdaptiveOptions o;
+      o.rtol = o.atol = rtol;
+      const auto r = method_info(method).adaptive(m, s0, 0.0, o);
+      while (r->time() < 50.0) {
+        const double t0 = r->time();
+        const long rejected = r->rejected();
+        r->advance_to(std::nextafter(t0, INFINITY));  // exactly one accepted step
+        if (r->rejected() == rejected) continue;
+        ++after_rejection;
+        const double h = r->time() - t0;
+        EXPECT_LE(r->next_step(), h * (1 + 1e-12)) << testing::name_of(method) << ", rtol " << rtol << ", t " << r->time();
+      }
+    }
+  EXPECT_GT(after_rejection, 0) << "no rejected step: the check saw nothing";
+}
+
 
 // The norm against its definition (embedded_rk.hpp): orientation 2|δq| / (atol
 // + rtol), each vector group |δv| / (atol·floor + rtol·max(|v|, |v1|)), the

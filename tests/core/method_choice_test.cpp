@@ -47,6 +47,22 @@ BodyState reference_end(const RigidBodyModel& m, const BodyState& s0, double dur
   return Propagator(m, s0, cfg).advance_to(duration);
 }
 
+// The pilot trusts an extrapolation only where the observed order is the
+// method's own, within 0.4: an order-2 method whose differences shrink by
+// 2^1.5 (still pre-asymptotic) or 2^2.5 is not there yet, nor is a NaN
+// (a difference at round-off).
+TEST(MethodChoice, ThePilotsOrderWindowIsTheMethodsOrderWithinFourTenths) {
+  EXPECT_TRUE(order_seen(2.0, 2));
+  EXPECT_TRUE(order_seen(2.35, 2));
+  EXPECT_TRUE(order_seen(1.65, 2));
+  EXPECT_TRUE(order_seen(3.7, 4));
+  EXPECT_FALSE(order_seen(1.5, 2));
+  EXPECT_FALSE(order_seen(2.5, 2));
+  EXPECT_FALSE(order_seen(4.5, 4));
+  EXPECT_FALSE(order_seen(std::nan(""), 2));
+  EXPECT_FALSE(order_seen(INFINITY, 2));
+}
+
 TEST(MethodChoice, TorqueFreeBodyGetsTheClosedForm) {
   const RigidBodyModel m = testing::reference_model();
   const MethodChoice c = choose_method(m, testing::reference_state(m), {10, 1.0 / 30, 1e-9});

@@ -118,3 +118,27 @@ TEST(GltfKeys, ToleranceOutOfRangeIsRefused) {
     EXPECT_THROW(gltf::key_tracks(s, o), InputError) << bad;
   }
 }
+
+// Consecutive rotation keys sit in the same hemisphere (q·q' ≥ 0): a viewer
+// that interpolates the keys as stored (the glTF spec's slerp does not flip
+// signs) would otherwise turn the long way round between them.
+TEST(GltfKeys, RotationKeysNeverFlipBetweenQAndMinusQ) {
+  for (const char* name : {"dzhanibekov.toml", "thrown_box.toml"}) {
+    const scene::Scene s = scene::load_scene(kScenes / name);
+    const fs::path out = fs::path(::testing::TempDir()) / "signs.glb";
+    gltf::export_gltf(s, out);
+    const tinygltf::Model m = load(out);
+    std::size_t checked = 0;
+    for (const tinygltf::Animation& anim : m.animations)
+      for (const tinygltf::AnimationChannel& c : anim.channels) {
+        if (c.target_path != "rotation") continue;
+        const std::vector<float> v = floats(m, anim.samplers.at(static_cast<std::size_t>(c.sampler)).output);
+        for (std::size_t k = 1; 4 * k + 3 < v.size(); ++k, ++checked) {
+          double dot = 0;
+          for (int i = 0; i < 4; ++i) dot += double(v[4 * (k - 1) + i]) * v[4 * k + i];
+          ASSERT_GE(dot, 0.0) << name << ", node " << c.target_node << ": keys " << k - 1 << " and " << k << " flip sign";
+        }
+      }
+    EXPECT_GT(checked, 20u) << name << ": too few keys to tell";
+  }
+}

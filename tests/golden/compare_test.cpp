@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "golden/compare.hpp"
 
 namespace {
@@ -212,6 +213,54 @@ TEST(Compare, DifferentSizesFailWithoutThrowing) {
   EXPECT_FALSE(c.pass);
   EXPECT_TRUE(c.size_mismatch);
   EXPECT_NE(c.summary.find("32x24"), std::string::npos) << c.summary;
+}
+
+// Same pixel count, other shape: 10x20 is not 20x10.
+TEST(Compare, TransposedSizesAreASizeMismatch) {
+  const auto c = compare_images(flat(10, 20, 50), flat(20, 10, 50));
+  EXPECT_TRUE(c.size_mismatch);
+  EXPECT_FALSE(c.pass);
+}
+
+// "Over" is strictly more than max_delta: a patch of exactly max_delta is no region.
+TEST(CompareLocal, APatchOfExactlyMaxDeltaIsNotOver) {
+  const Image a = gradient(64, 48);
+  Image b = a;
+  const CompareOptions o;
+  patch(b, 10, 10, 5, o.max_delta);
+  const auto c = compare_images(b, a, o);
+  EXPECT_EQ(c.max_delta, o.max_delta);
+  EXPECT_EQ(c.over, 0);
+  EXPECT_EQ(c.region, 0);
+  patch(b, 10, 10, 5, 1);
+  EXPECT_EQ(compare_images(b, a, o).region, 25);
+  Image ringed = a;  // 5x5 over, in a ring of pixels exactly at max_delta: the region is the 25
+  patch(ringed, 9, 9, 7, o.max_delta);
+  patch(ringed, 10, 10, 5, 1);
+  EXPECT_EQ(compare_images(ringed, a, o).region, 25);
+}
+
+// An image lower than the window: the window is clipped to its height, not skipped.
+TEST(CompareLocal, TheWindowIsClippedToALowImage) {
+  const Image a = flat(40, 5, 100);
+  Image b = a;
+  patch(b, 20, 1, 3, 40);
+  CompareOptions o;
+  o.window = 9;
+  const auto c = compare_images(b, a, o);
+  EXPECT_NEAR(c.window_mean, 9 * 40 / (9.0 * 5), 1e-12);
+  EXPECT_EQ(c.window_box.y0, 0);
+  EXPECT_EQ(c.window_box.y1, 4);
+}
+
+TEST(Compare, OptionsOutOfRangeAreRefused) {
+  CompareOptions o;
+  o.window = 255;
+  EXPECT_NO_THROW(tumble::golden::check_compare_options(o));
+  o.window = 256;
+  EXPECT_THROW(tumble::golden::check_compare_options(o), tumble::InputError);
+  o.window = 0;
+  EXPECT_THROW(tumble::golden::check_compare_options(o), tumble::InputError);
 }
 
 }  // namespace

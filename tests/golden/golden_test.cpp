@@ -168,6 +168,19 @@ TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
   EXPECT_FALSE(tumble::golden::compare_trajectories("x\n", e).pass);
 }
 
+// A golden trajectory edited on Windows has CRLF line endings; it is the same
+// trajectory, so it compares equal to the LF file the run writes.
+TEST(Trajectory, AWindowsEditedFileWithCrlfLineEndingsIsTheSameTrajectory) {
+  const std::string row = "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5";
+  const std::string lf = std::string(tumble::io::kTrajectoryHeader) + "\n" + row + "\n";
+  const std::string crlf = std::string(tumble::io::kTrajectoryHeader) + "\r\n" + row + "\r\n";
+  const auto r = tumble::golden::compare_trajectories(lf, crlf);
+  EXPECT_TRUE(r.pass) << r.summary;
+  EXPECT_EQ(r.rows, 1);
+  const auto back = tumble::golden::compare_trajectories(crlf, lf);
+  EXPECT_TRUE(back.pass) << back.summary;
+}
+
 TEST_F(GoldenCli, CompareExitCodes) {
   auto w = [&](const char* n, const tumble::io::Image& img) {
     tumble::io::write_png_atomic(dir_ / n, img);

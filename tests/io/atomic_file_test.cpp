@@ -1,6 +1,7 @@
 // The atomic writer and its temp names.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -45,6 +46,20 @@ TEST(AtomicFile, LeavesNothingWithoutCommit) {
   fs::remove_all(dir);
 }
 
+// A killed run leaves its temp file; this process's temp name may be the
+// same (pids are reused), and the write goes on over it.
+TEST(AtomicFile, ALeftoverTempFileOfTheSameNameIsReplaced) {
+  const fs::path dir = fresh_dir("leftover");
+  const fs::path p = dir / "a.txt";
+  {
+    std::ofstream(temp_path_for(p)) << "a killed run's half";
+  }
+  atomic_write_file(p, "whole");
+  EXPECT_EQ(slurp(p), "whole");
+  EXPECT_FALSE(fs::exists(temp_path_for(p)));
+  fs::remove_all(dir);
+}
+
 TEST(AtomicFile, FailureNamesThePath) {
   const fs::path bad = fresh_dir("fail") / "missing" / "x.json";
   try {
@@ -53,6 +68,41 @@ TEST(AtomicFile, FailureNamesThePath) {
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find(bad.string()), std::string::npos) << e.what();
   }
+}
+
+// The durability seam: at the moment of the fsync the temp file holds every
+// byte written (the stdio buffer is flushed first), and the target does not
+// yet have them (the rename comes after). Frames (rename_only) are not synced.
+TEST(AtomicFile, SyncsTheWholeFileBeforeTheRename) {
+  const fs::path dir = fresh_dir("sync");
+  const fs::path p = dir / "m.json";
+  atomic_write_file(p, "old");
+  struct Seen {
+    int count = 0;
+    long size = -1;
+    std::string target;
+    fs::path tmp;
+  } seen;
+  test_hooks::set_sync_hook([&](int fd, const fs::path& tmp) {
+    struct stat st {};
+    ++seen.count;
+    seen.size = ::fstat(fd, &st) == 0 ? static_cast<long>(st.st_size) : -1;
+    seen.target = slurp(p);
+    seen.tmp = tmp;
+  });
+  const std::string bytes(100, 'x');  // well inside one stdio buffer: only a flush puts it in the file
+  atomic_write_file(p, bytes);
+  const Seen fsynced = seen;
+  seen = {};
+  atomic_write_file(p, "frame", Durability::rename_only);
+  test_hooks::set_sync_hook({});
+  EXPECT_EQ(fsynced.count, 1);
+  EXPECT_EQ(fsynced.size, 100) << "the bytes were not in the file when it was synced";
+  EXPECT_EQ(fsynced.target, "old") << "the target changed before the sync";
+  EXPECT_EQ(fsynced.tmp, temp_path_for(p));
+  EXPECT_EQ(seen.count, 0) << "a rename_only write was synced";
+  EXPECT_EQ(slurp(p), "frame");
+  fs::remove_all(dir);
 }
 
 TEST(TempNames, TheTempNameOfAFileLeadsBackToIt) {

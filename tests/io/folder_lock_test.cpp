@@ -24,32 +24,48 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 /// Forks one process per key; all wait on one pipe and are let go together
-/// (the parent closes its end), then each takes the folder as `mode` and holds
-/// it for `hold_us`. Returns how many were refused.
-int race(const fs::path& dir, FolderLock::Mode mode, const std::vector<std::string>& keys, int hold_us) {
-  int gate[2];
-  if (::pipe(gate) != 0) return -1;
+/// (the parent closes its end), then each tries to take the folder as `mode`
+/// and reports that it has tried. A process that got in holds the folder
+/// until every process has tried (the parent closes a second pipe), so no
+/// holder leaves before a later one arrives, however the scheduler orders
+/// them: the outcome depends on the lock alone, never on timing.
+/// Returns how many were refused.
+int race(const fs::path& dir, FolderLock::Mode mode, const std::vector<std::string>& keys) {
+  int gate[2], tried[2], release[2];
+  if (::pipe(gate) != 0 || ::pipe(tried) != 0 || ::pipe(release) != 0) return -1;
   std::vector<pid_t> kids;
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const pid_t pid = ::fork();
     if (pid == 0) {
       ::close(gate[1]);
-      char c;
+      ::close(tried[0]);
+      ::close(release[1]);
+      char c = 0;
       (void)!::read(gate[0], &c, 1);  // returns 0 when the parent closes its end: go
+      int code = 0;
       try {
         const FolderLock lock(dir, mode, "shard " + std::to_string(i), keys[i]);
-        ::usleep(static_cast<useconds_t>(hold_us));
+        (void)!::write(tried[1], "y", 1);
+        (void)!::read(release[0], &c, 1);  // hold until everyone has tried
       } catch (const InputError&) {
-        ::_exit(1);
+        code = 1;
       } catch (...) {
-        ::_exit(2);
+        code = 2;
       }
-      ::_exit(0);
+      if (code != 0) (void)!::write(tried[1], "n", 1);
+      ::_exit(code);
     }
     kids.push_back(pid);
   }
   ::close(gate[0]);
-  ::close(gate[1]);
+  ::close(tried[1]);
+  ::close(release[0]);
+  ::close(gate[1]);  // go
+  char c = 0;
+  for (std::size_t i = 0; i < keys.size() && ::read(tried[0], &c, 1) == 1; ++i) {
+  }
+  ::close(tried[0]);
+  ::close(release[1]);  // every process has tried: the holders may go
   int refused = 0;
   for (pid_t pid : kids) {
     int st = 0;
@@ -65,18 +81,19 @@ int race(const fs::path& dir, FolderLock::Mode mode, const std::vector<std::stri
 TEST(FolderLock, ShardsStartingTogetherNeverRefuseEachOther) {
   const fs::path dir = fresh_dir("shards");
   int refused = 0;
-  for (int round = 0; round < 300; ++round) refused += race(dir, FolderLock::Mode::shared, {"k", "k", "k", "k"}, 200);
+  for (int round = 0; round < 300; ++round) refused += race(dir, FolderLock::Mode::shared, {"k", "k", "k", "k"});
   EXPECT_EQ(refused, 0) << "shards of one render refused each other " << refused << " times in 300 rounds of 4";
   fs::remove_all(dir);
 }
 
-// Two renders racing for one folder: whatever the timing, the shards of one
-// are never let in beside the shards of the other, and one group gets it.
+// Two renders racing for one folder: whatever the order, the shards of one
+// are never let in beside the shards of the other, and one group gets it
+// whole (both its shards: each arrives while its sibling holds the folder).
 TEST(FolderLock, ShardsOfTwoRendersNeverShareAFolder) {
   const fs::path dir = fresh_dir("two");
   for (int round = 0; round < 100; ++round) {
-    const int refused = race(dir, FolderLock::Mode::shared, {"a", "b", "a", "b"}, 20000);
-    EXPECT_TRUE(refused == 2 || refused == 3) << "round " << round << ": " << refused << " of 4 refused";
+    const int refused = race(dir, FolderLock::Mode::shared, {"a", "b", "a", "b"});
+    EXPECT_EQ(refused, 2) << "round " << round << ": " << refused << " of 4 refused";
   }
   fs::remove_all(dir);
 }

@@ -51,6 +51,14 @@ TEST(FontCheck, TruncatedFontsAreRefusedWithWhereTheyEnd) {
   }
 }
 
+// A read that would run past the end is refused before it reads, naming the
+// first byte it would need: 3 bytes hold no 4-byte version tag.
+TEST(FontCheck, AReadRunningPastTheEndIsRefusedBeforeItReads) {
+  const std::string font = font_bytes();
+  EXPECT_NE(truetype_problem(font.substr(0, 3)).find("cut short (reads byte 4 of a span ending at 3)"), std::string::npos)
+      << truetype_problem(font.substr(0, 3));
+}
+
 // 400 damaged copies (a fixed seed): 1 to 32 bytes overwritten in the tables
 // stb_truetype walks first, or anywhere; the second half of the file (loca,
 // glyf) overwritten 200 times; or cut anywhere. What the check lets through

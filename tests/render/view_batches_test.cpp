@@ -21,6 +21,24 @@ TEST(ViewBatches, ArrowSplitsIntoShaftAndHead) {
   EXPECT_NEAR(tip.z, 5.0f, 1e-6);
 }
 
+// An arrow keeps its round cross-section whatever way it points, along the
+// x axis too (where the helper vector for its frame must not be x itself).
+TEST(ViewBatches, ArrowsAlongEveryAxisKeepTheirRadius) {
+  for (const glm::dvec3& d : {glm::dvec3(2, 0, 0), glm::dvec3(-2, 0, 0), glm::dvec3(0, 2, 0), glm::dvec3(0, 0, 2),
+                              glm::dvec3(1.9, 0.3, 0.1)}) {
+    viz::View v;
+    v.arrows.push_back({{0, 0, 0}, d, 0.05, {1, 0, 0, 1}});
+    const ViewBatches b = build_view_batches(v);
+    ASSERT_EQ(b.arrow_shafts.size(), 1u);
+    const glm::mat4& m = b.arrow_shafts[0].model;
+    for (int c = 0; c < 2; ++c) {  // the radial columns: radius long, across the arrow
+      const glm::vec3 r(m[c]);
+      EXPECT_NEAR(glm::length(r), 0.05f, 1e-6f) << "direction " << d.x << " " << d.y << " " << d.z;
+      EXPECT_NEAR(glm::dot(r, glm::vec3(glm::normalize(d))), 0.0f, 1e-6f);
+    }
+  }
+}
+
 TEST(ViewBatches, BoxesSortedFarToNearWithTwelveEdges) {
   viz::View v;
   v.camera.position = {0, -10, 0};

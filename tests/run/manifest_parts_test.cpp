@@ -55,6 +55,17 @@ TEST(ManifestParts, APartWithAbsurdNumbersIsNotOk) {
   EXPECT_FALSE(write("7", "[3, 0]", "4"));   // backwards
   EXPECT_FALSE(write("7", "[0, 3]", "-1"));
   EXPECT_FALSE(write("7", "[0, 3]", "5"));   // more written than the range holds
+  // The video's CRF is checked as the scene checks it: 0..51, the ends included.
+  auto crf = [&](const std::string& c) {
+    std::ofstream(part, std::ios::trunc) << R"({"tool": "tumble", "scene_hash": "a", "settings_hash": "b", "fps": 10, )"
+                                         << R"("width": 96, "height": 72, "frames": [0, 3], "frame_count": 7, )"
+                                         << R"("frames_written": 4, "complete": true, "video_format": "mp4", "crf": )" << c << "}";
+    return tumble::run::read_part(part).ok;
+  };
+  EXPECT_TRUE(crf("0"));
+  EXPECT_TRUE(crf("51"));
+  EXPECT_FALSE(crf("52"));
+  EXPECT_FALSE(crf("-1"));
   write("4000000000000000000", "[0, 3]", "4");
   struct Quiet : tumble::run::Listener {
     void note(const std::string&) override {}

@@ -15,6 +15,29 @@ TEST(FrameClock, WithoutScalingFrameKShowsExactlyKOverFps) {
   for (long k : {0L, 1L, 7L, 299L, 300L}) EXPECT_EQ(c.time(k), static_cast<double>(k) / 30);
 }
 
+// The frames are 0 … count - 1: a time one frame past the last has no frame,
+// however exactly it falls on the frame grid.
+TEST(FrameClock, TheLastFrameIsCountMinusOneAndOnePastItIsNoFrame) {
+  const FrameClock c(2, 10);
+  ASSERT_EQ(c.count(), 21);
+  EXPECT_EQ(c.frame_at(2.0), 20);
+  EXPECT_EQ(c.frame_at(2.1), -1);
+  EXPECT_EQ(c.frame_at(-0.1), -1);
+  const FrameClock slow(2, 10, 0.5);  // 4 s of video: frames 0 … 40
+  ASSERT_EQ(slow.count(), 41);
+  EXPECT_EQ(slow.frame_at(2.0), 40);
+  EXPECT_EQ(slow.frame_at(2.05), -1);
+}
+
+// The speed shown beside a slowed clock: whole fractions as ×1/n, the rest to 3 digits.
+TEST(FrameClock, SpeedTextNamesWholeFractions) {
+  EXPECT_EQ(speed_text(1.0), "");
+  EXPECT_EQ(speed_text(0.25), "\u00d71/4");
+  EXPECT_EQ(speed_text(0.1), "\u00d71/10");
+  EXPECT_EQ(speed_text(0.3), "\u00d70.3");
+  EXPECT_EQ(speed_text(2.0), "\u00d72");
+}
+
 TEST(FrameClock, QuarterTimeScaleIsFourTimesSlower) {
   const FrameClock c(2, 30, 0.25);
   EXPECT_EQ(c.count(), 241);  // 2 s simulated, 8 s of video at 30 fps

@@ -265,6 +265,10 @@ TEST(Captions, FadeInHoldFadeOut) {
   EXPECT_NEAR(fade_alpha(2.9, 1, 3), 0.25f, 1e-6);
   EXPECT_EQ(fade_alpha(3.1, 1, 3), 0.0f);
   EXPECT_NEAR(fade_alpha(1.1, 1, 1.8), 0.5f, 1e-6);  // short span: fades take a quarter each
+  // Without fades a caption is shown exactly over its span, and not after it.
+  EXPECT_EQ(fade_alpha(0.9, 1, 3, 0), 0.0f);
+  EXPECT_EQ(fade_alpha(2.0, 1, 3, 0), 1.0f);
+  EXPECT_EQ(fade_alpha(3.1, 1, 3, 0), 0.0f);
   const TextItem c = caption_item("hello", 0.5f, 1280, 720);
   EXPECT_EQ(c.color.a, 0.5f);
   EXPECT_GT(c.position_px.y, 600.0f);

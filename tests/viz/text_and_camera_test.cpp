@@ -57,6 +57,40 @@ TEST(TextLayout, WrapsAtTheWidthAndKeepsExplicitBreaks) {
   EXPECT_NEAR(text_box({"Hi", {10, 0}, 100, {0, 0, 0, 1}}).x0, 10 + 100 * h.ink_x0, 1e-3f);
 }
 
+// A word wider than the whole line stands alone on its own line, the first
+// one when it comes first: the text never starts with an empty line.
+TEST(TextLayout, AWordWiderThanItsLineIsALineOfItsOwnNotAnEmptyLineFirst) {
+  const float wide = text_width("Dzhanibekov", 20);
+  const std::string w = wrap_text("Dzhanibekov flips", 20, 0.5f * wide);
+  EXPECT_EQ(w, "Dzhanibekov\nflips");
+  EXPECT_EQ(wrap_text("Dzhanibekov", 20, 0.5f * wide), "Dzhanibekov");
+  EXPECT_EQ(wrap_text("a Dzhanibekov", 20, 0.5f * wide), "a\nDzhanibekov");
+  EXPECT_EQ(wrap_text("one\nDzhanibekov", 20, 0.5f * wide), "one\nDzhanibekov");
+}
+
+// Near the separatrix (2E a billionth above |L|²/I₂) the polhode is still
+// the body's own: two loops, each around one end of the smallest moment's
+// axis (Π₁ keeps its sign), not the separatrix circles (which cross Π₁ = 0 at ±e₂).
+TEST(MomentumSphere, APolhodeABillionthOffTheSeparatrixIsNotTheSeparatrix) {
+  const Eigen::Vector3d I(0.0197, 0.0366, 0.0547);
+  const double L = 0.3, sep = L * L / I[1];
+  for (double rel : {1e-9, 1e-7}) {
+    const auto curves = polhodes(I, L, sep * (1 + rel), 192);
+    ASSERT_EQ(curves.size(), 2u);
+    for (const auto& c : curves) {
+      double lo = 1e300, hi = -1e300;
+      for (const Eigen::Vector3d& p : c) lo = std::min(lo, p[0]), hi = std::max(hi, p[0]);
+      EXPECT_TRUE(lo >= -1e-12 * L || hi <= 1e-12 * L) << "a curve crosses Pi1 = 0 at 2E = sep * (1 + " << rel << ")";
+    }
+  }
+  const auto on = polhodes(I, L, sep, 192);  // exactly at the level: the separatrix itself
+  ASSERT_EQ(on.size(), 2u);
+  double lo = 1e300, hi = -1e300;
+  for (const Eigen::Vector3d& p : on[0]) lo = std::min(lo, p[0]), hi = std::max(hi, p[0]);
+  EXPECT_LT(lo, -0.1 * L);
+  EXPECT_GT(hi, 0.1 * L);
+}
+
 TEST(Key, EntriesSitOnTheBackdropWithoutOverlapping) {
   View v;
   const std::vector<KeyEntry> entries = {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e₁ e₂ e₃"},
