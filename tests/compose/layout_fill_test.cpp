@@ -196,7 +196,7 @@ TEST(LayoutFill, ComparisonCellsShowTheExactBodyFaintly) {
     }
     EXPECT_GT(ghosts, 0) << runs[r].label;
     for (const viz::SurfaceItem& x : sf)
-      if (x.name == "ghost") EXPECT_LT(x.color.a, 0.5f) << runs[r].label;
+      if (x.name == "ghost") { EXPECT_LT(x.color.a, 0.5f) << runs[r].label; }
   }
   // Explicit Euler has left the exact motion by then: its body and the ghost differ.
   const auto& euler = dl.views[0].surfaces;
@@ -231,16 +231,17 @@ TEST(LayoutFill, ACaptionStripAtTheTopPutsTheViewsBelowIt) {
   EXPECT_EQ(bottom, n.height) << "and fills the rest of the frame";
 }
 
-TEST(LayoutFill, ALegendStripIsKeptFreeOfTheViews) {
+TEST(LayoutFill, AFrameKeyStripIsKeptFreeOfTheViews) {
   FrameNeeds n = needs({view({0, 0, 1, 1})});
   n.captions.clear();
-  n.legend = "a classic legend line: L, omega_world, the body's axes";
+  n.frame_key = {viz::key_entry(viz::Meaning::L, "L: angular momentum"),
+                 viz::key_entry(viz::Meaning::omega, "omega: angular velocity")};
   const FramePlan p = compose::plan_frame(n);
-  ASSERT_GT(p.legend.y1, p.legend.y0);
-  EXPECT_EQ(p.legend.y1, n.height) << "without captions the legend is at the foot";
+  ASSERT_GT(p.frame_key_box.y1, p.frame_key_box.y0);
+  EXPECT_EQ(p.frame_key_box.y1, n.height) << "without captions the frame key is at the foot";
   const auto [top, bottom] = views_span(p);
   EXPECT_EQ(top, 0);
-  EXPECT_LE(bottom, p.legend.y0 + 1) << "no view under the legend";
+  EXPECT_LE(bottom, p.frame_key_box.y0 + 1) << "no view under the frame key";
 }
 
 TEST(LayoutFill, EveryCaptionBackdropLiesInsideTheCaptionStrip) {

@@ -42,7 +42,7 @@ TEST(LessonFigures, EverySphereLabelsAllSixAxisEndsInEveryFrame) {
   const char* const kNames[] = {"axis_label_e1", "axis_label_e2", "axis_label_e3",
                                 "axis_label_-e1", "axis_label_-e2", "axis_label_-e3"};
   for (const fs::path& p : scenes)
-    for (const auto [w, h] : {std::pair{640, 360}, std::pair{960, 540}, std::pair{1920, 1080}}) {
+    for (const auto& [w, h] : {std::pair{640, 360}, std::pair{960, 540}, std::pair{1920, 1080}}) {
       const tumble::scene::Scene s = tumble::scene::load_scene(p);
       const double fps = s.render.output.fps;
       const long frames = tumble::scene::frame_clock(s, fps).count();
