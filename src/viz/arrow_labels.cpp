@@ -5,6 +5,7 @@
 // named curves, the bodies' parts, the view's text and the names placed before it.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "viz/captions.hpp"
 #include "viz/text_layout.hpp"
@@ -54,30 +55,74 @@ std::vector<Box> part_boxes(const View& view, const ViewportProjection& project)
 // What a tip's name is tried in turn: along the arrow, then turned either way.
 constexpr float kTurns[] = {0.0f, 0.5f, -0.5f, 1.0f, -1.0f, 1.5f, -1.5f, 2.0f, -2.0f, 2.6f, -2.6f};
 
-}  // namespace
-
-std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px) {
-  const ViewportProjection project(view.camera, width_px, height_px);
+// What a name must keep clear of: arrow shafts and named curves, arrow heads,
+// and boxes already taken (the bodies' parts, the view's text, earlier names).
+struct Obstacles {
   std::vector<Segment> shafts;
-  std::vector<glm::vec2> heads;  // tip centre, radius in z
-  std::vector<float> head_r;
+  std::vector<glm::vec2> heads;  // tip centre
+  std::vector<float> head_r;     // its radius, px
+  std::vector<Box> taken;
+
+  bool clear(const Box& b) const {
+    if (std::any_of(taken.begin(), taken.end(), [&](const Box& o) { return o.overlaps(b); })) return false;
+    if (std::any_of(shafts.begin(), shafts.end(), [&](const Segment& s) { return segment_hits(s, b); })) return false;
+    for (std::size_t h = 0; h < heads.size(); ++h)
+      if (heads[h].x + head_r[h] > b.x0 && heads[h].x - head_r[h] < b.x1 && heads[h].y + head_r[h] > b.y0 &&
+          heads[h].y - head_r[h] < b.y1)
+        return false;
+    return true;
+  }
+};
+
+Obstacles obstacles_of(const View& view, const ViewportProjection& project) {
+  Obstacles o;
   for (const ArrowItem& a : view.arrows) {
     glm::vec2 p0, p1;
     if (!project(a.origin, p0) || !project(a.origin + a.vector, p1)) continue;
     const float r = screen_len(project, view.camera, a.origin + a.vector, 2.4 * a.radius);
-    shafts.push_back({p0, p1, std::max(2.0f, screen_len(project, view.camera, a.origin, a.radius)) + 1.5f});
-    heads.push_back(p1);
-    head_r.push_back(r + 1.5f);
+    o.shafts.push_back({p0, p1, std::max(2.0f, screen_len(project, view.camera, a.origin, a.radius)) + 1.5f});
+    o.heads.push_back(p1);
+    o.head_r.push_back(r + 1.5f);
   }
   // The curves a viewer follows (named: a polhode, a herpolhode), as short segments.
   for (const PolylineItem& l : view.polylines) {
     if (l.name.empty()) continue;
     glm::vec2 a, b;
     for (std::size_t i = 1; i < l.points.size(); ++i)
-      if (project(l.points[i - 1], a) && project(l.points[i], b)) shafts.push_back({a, b, 2.0f});
+      if (project(l.points[i - 1], a) && project(l.points[i], b)) o.shafts.push_back({a, b, 2.0f});
   }
-  std::vector<Box> taken = part_boxes(view, project);
-  for (const TextItem& t : view.texts) taken.push_back(text_box(t));
+  o.taken = part_boxes(view, project);
+  for (const TextItem& t : view.texts) o.taken.push_back(text_box(t));
+  return o;
+}
+
+// The first place, turning from along the arrow, where `a`'s name (its tip
+// projected at `base` → `tip`) fits the view clear of `o`; nullopt if none.
+std::optional<TextItem> place_tip(const ArrowItem& a, glm::vec2 base, glm::vec2 tip, float head, const Obstacles& o,
+                                  glm::vec2 view_px, float label_px) {
+  const InkSpan ink = text_ink(a.tip, label_px);
+  const glm::vec2 along = tip - base;
+  const float len = glm::length(along);
+  const glm::vec2 d0 = len > 0.3f * label_px ? along / len : glm::vec2(0, -1);
+  for (const float turn : kTurns) {
+    const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
+    const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.2f * label_px;
+    const glm::vec2 centre = tip + reach * d;
+    TextItem t{a.tip, {centred_x(a.tip, label_px, centre.x), centre.y - 0.5f * label_px}, label_px, a.color,
+               "tip:" + (a.name.empty() ? a.tip : a.name)};
+    t.color.a = 1.0f;
+    const Box b = text_box(t);
+    if (b.x0 < 0 || b.y0 < 0 || b.x1 > view_px.x || b.y1 > view_px.y) continue;
+    if (o.clear(b)) return t;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px) {
+  const ViewportProjection project(view.camera, width_px, height_px);
+  Obstacles o = obstacles_of(view, project);
   // L first, then ω, then the axes: the quantities the lesson is about keep their place.
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < view.arrows.size(); ++i)
@@ -90,34 +135,13 @@ std::vector<std::string> label_arrow_tips(View& view, float width_px, float heig
     glm::vec2 base, tip;
     if (!project(a.origin, base) || !project(a.origin + a.vector, tip)) continue;
     const float head = screen_len(project, view.camera, a.origin + a.vector, 2.4 * a.radius);
-    const InkSpan ink = text_ink(a.tip, label_px);
-    const glm::vec2 along = tip - base;
-    const float len = glm::length(along);
-    const glm::vec2 d0 = len > 0.3f * label_px ? along / len : glm::vec2(0, -1);
-    bool placed = false;
-    for (const float turn : kTurns) {
-      const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
-      const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.2f * label_px;
-      const glm::vec2 centre = tip + reach * d;
-      TextItem t{a.tip, {centred_x(a.tip, label_px, centre.x), centre.y - 0.5f * label_px}, label_px, a.color,
-                 "tip:" + (a.name.empty() ? a.tip : a.name)};
-      t.color.a = 1.0f;
-      const Box b = text_box(t);
-      if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
-      const auto on = [&](const Box& o) { return o.overlaps(b); };
-      if (std::any_of(taken.begin(), taken.end(), on)) continue;
-      if (std::any_of(shafts.begin(), shafts.end(), [&](const Segment& s) { return segment_hits(s, b); })) continue;
-      bool on_head = false;
-      for (std::size_t h = 0; h < heads.size() && !on_head; ++h)
-        on_head = heads[h].x + head_r[h] > b.x0 && heads[h].x - head_r[h] < b.x1 && heads[h].y + head_r[h] > b.y0 &&
-                  heads[h].y - head_r[h] < b.y1;
-      if (on_head) continue;
-      taken.push_back(b);
-      view.texts.push_back(std::move(t));
-      placed = true;
-      break;
+    std::optional<TextItem> t = place_tip(a, base, tip, head, o, {width_px, height_px}, label_px);
+    if (!t) {
+      left_out.push_back(a.tip);
+      continue;
     }
-    if (!placed) left_out.push_back(a.tip);
+    o.taken.push_back(text_box(*t));
+    view.texts.push_back(std::move(*t));
   }
   return left_out;
 }
