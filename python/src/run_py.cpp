@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "core/integrator.hpp"
+#include "core/observables.hpp"
 #include "core/propagator.hpp"
 #include "scene/sampled_run.hpp"
 #ifdef TUMBLE_HAVE_GLTF
@@ -20,11 +21,32 @@ namespace {
 
 using scene::Trajectory;
 
-/// A (n, cols) read-only view of one of the trajectory's columns.
-template <std::vector<double> Trajectory::*member, std::size_t cols>
-py::array_t<double> column(py::object self) {
+/// A (n, cols) read-only view of a column of the trajectory (cols = 0: shape (n,)).
+py::array_t<double> column(py::object self, const std::vector<double> Trajectory::*times, std::size_t array,
+                           std::size_t cols) {
   const Trajectory& t = self.cast<const Trajectory&>();
-  return view((t.*member).data(), t.size(), cols, cols ? cols * sizeof(double) : sizeof(double), self);
+  const double* data = times ? (t.*times).data() : t.arrays.at(array).data();
+  return view(data, t.size(), cols, cols ? cols * sizeof(double) : sizeof(double), self);
+}
+
+/// t, then an array per kPythonArray observable (core/observables.hpp), and
+/// the class docstring that lists them with their shapes and units.
+void add_arrays(py::class_<Trajectory, std::shared_ptr<Trajectory>>& c) {
+  c.def_property_readonly("t", [](py::object self) { return column(std::move(self), &Trajectory::t, 0, 0); });
+  for (std::size_t i = 0; i < scene::python_arrays().size(); ++i) {
+    const Observable& o = *scene::python_arrays()[i];
+    const std::size_t cols = o.size == 1 ? 0 : o.size;
+    c.def_property_readonly(std::string(o.name).c_str(),
+                            [i, cols](py::object self) { return column(std::move(self), nullptr, i, cols); });
+  }
+}
+
+std::string trajectory_doc() {
+  std::string d = "One body's samples in the CSV's units and frames (read-only numpy views): t (n,) s";
+  for (const Observable* o : scene::python_arrays())
+    d += "; " + std::string(o->name) + (o->size == 1 ? " (n,)" : " (n, " + std::to_string(o->size) + ")") +
+         (o->unit.empty() ? "" : " ") + std::string(o->unit);
+  return d + ".";
 }
 
 /// The scene's [simulation] with simulate()'s method and dt, read by the scene
@@ -89,29 +111,19 @@ static void add_run_functions(py::module_& m) {
 }
 
 void add_run(py::module_& m) {
-  py::class_<Trajectory, std::shared_ptr<Trajectory>>(
-      m, "Trajectory",
-      "One body's samples in the CSV's units and frames (read-only numpy views): t (n,) s; c (n, 3) m; q (n, 4) "
-      "world ← cloud (w, x, y, z); v (n, 3) m/s; omega_world, omega_body (n, 3) rad/s; L (n, 3) kg·m²/s; energy "
-      "(n,) J.")
-      .def_readonly("body", &Trajectory::body)
+  static const std::string doc = trajectory_doc();
+  py::class_<Trajectory, std::shared_ptr<Trajectory>> c(m, "Trajectory", doc.c_str());
+  c.def_readonly("body", &Trajectory::body)
       .def_readonly("method", &Trajectory::method)
       .def_readonly("step", &Trajectory::step)
       .def_readonly("steps", &Trajectory::steps)
       .def_readonly("auto_reason", &Trajectory::auto_reason)
-      .def_property_readonly("t", column<&Trajectory::t, 0>)
-      .def_property_readonly("c", column<&Trajectory::c, 3>)
-      .def_property_readonly("q", column<&Trajectory::q, 4>)
-      .def_property_readonly("v", column<&Trajectory::v, 3>)
-      .def_property_readonly("omega_world", column<&Trajectory::omega_world, 3>)
-      .def_property_readonly("omega_body", column<&Trajectory::omega_body, 3>)
-      .def_property_readonly("L", column<&Trajectory::L, 3>)
-      .def_property_readonly("energy", column<&Trajectory::energy, 0>)
       .def("__len__", &Trajectory::size)
       .def("__repr__", [](const Trajectory& t) {
         return "<tumble.Trajectory '" + t.body + "': " + std::to_string(t.size()) + " samples, " + t.method + ", " +
                t.step + ">";
       });
+  add_arrays(c);
 
   add_run_functions(m);
 }

@@ -1,5 +1,4 @@
 // `tumble simulate SCENE --csv FILE`: one CSV row per body per sample.
-#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -11,6 +10,7 @@
 #include "app/commands.hpp"
 #include "app/stop_signals.hpp"
 #include "core/propagator.hpp"
+#include "scene/scene_run.hpp"
 #include "io/atomic_file.hpp"
 #include "io/trajectory_csv.hpp"
 
@@ -54,45 +54,24 @@ void check_sampling(const SimulateOptions& o, const scene::Scene& s) {
     throw InputError("the run would write more than 1e8 rows; raise --every or lower the scene's fps");
 }
 
-using Propagators = std::vector<std::unique_ptr<Propagator>>;
-
-/// Each body's propagator with the method the scene (or auto) picks, saying why.
-Propagators make_propagators(const scene::Scene& s) {
-  Propagators props;
-  for (const scene::Body& b : s.bodies) {
-    const scene::MethodPlan plan = scene::plan_method(s.simulation, b);
-    if (!plan.reason.empty()) std::cerr << "tumble: body '" << b.name << "': auto picked " << plan.reason << "\n";
-    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) std::cerr << "tumble: warning: " << *w << "\n";
-    props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
+/// Each body's run with the method the scene (or auto) picks, saying why.
+scene::SceneRun start_run(const scene::Scene& s) {
+  scene::SceneRun run(s, s.simulation);
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    const scene::BodyRun& b = run.body(i);
+    if (!b.plan().reason.empty()) std::cerr << "tumble: body '" << b.body().name << "': auto picked " << b.plan().reason << "\n";
+    if (auto w = b.warning()) std::cerr << "tumble: warning: " << *w << "\n";
   }
-  return props;
+  return run;
 }
 
-/// The rows after t = 0 into `buf`: every N steps (--every) or at the scene's
-/// sample times; `after_sample` runs after each sample. Throws Diverged.
-void step_rows(const SimulateOptions& o, const scene::Scene& s, Propagators& props, std::string& buf,
-               const std::function<void()>& after_sample) {
-  const double duration = s.simulation.duration, dt = s.simulation.step.dt;
-  if (o.every_opt->count()) {
-    // Every N steps; the block that ends within round-off of the end lands on it exactly.
-    const double n = static_cast<double>(o.every);
-    const long blocks = static_cast<long>(std::floor(duration / (dt * n) * (1 + 1e-12)));
-    for (long b = 1; b <= blocks + 1; ++b) {
-      const bool last = static_cast<double>(b) * n * dt >= duration * (1 - 1e-12);
-      for (auto& p : props) {
-        const BodyState& st = last ? p->advance_to(duration) : p->advance_steps(o.every);
-        io::append_simulate_row(buf, last ? duration : static_cast<double>(b) * n * dt, p->model(), st);
-      }
-      after_sample();
-      if (last) break;
-    }
-  } else {
-    const std::vector<double> times = scene::sample_times(duration, s.simulation.fps);
-    for (std::size_t k = 1; k < times.size(); ++k) {
-      for (auto& p : props) io::append_simulate_row(buf, times[k], p->model(), p->advance_to(times[k]));
-      after_sample();
-    }
-  }
+/// Every row into `buf`: at t = 0, then every N steps (--every) or at the
+/// scene's sample times; `after_sample` runs after each sample. Throws Diverged.
+void write_rows(const SimulateOptions& o, const scene::Scene& s, scene::SceneRun& run, std::string& buf,
+                const std::function<void()>& after_sample) {
+  const auto row = [&](const scene::Sample& x) { io::append_simulate_row(buf, x.t, x.model, x.state); };
+  if (o.every_opt->count()) return run.sample_every(o.every, s.simulation.duration, row, after_sample);
+  run.sample(scene::sample_times(s.simulation.duration, s.simulation.fps), row, after_sample);
 }
 
 /// Where the rows go: the CSV file, written atomically, or standard output
@@ -123,20 +102,19 @@ int run_simulate(const SimulateOptions& o) {
   scene::Scene s = load_scene_verbose(o.scene, scene_overrides(o));
   if (!to_stdout) io::check_output_file("--csv", o.csv);  // again, now that the scene, clouds and meshes are known inputs
   check_sampling(o, s);
-  Propagators props = make_propagators(s);
+  scene::SceneRun run = start_run(s);
   // Ctrl-C / SIGTERM: stop at the next row, write nothing (the temp file goes
   // with `out`), and leave an existing CSV as it was.
   const StopSignals stop;
   struct Stopped {};
   RowSink out(o.csv);
-  std::string buf = std::string(io::kTrajectoryHeader) + io::kSimulateExtraColumns + "\n";
+  std::string buf = io::simulate_header() + "\n";
   auto flush = [&] {
     out.write(buf);
     buf.clear();
   };
   try {
-    for (auto& p : props) io::append_simulate_row(buf, 0.0, p->model(), p->state());
-    step_rows(o, s, props, buf, [&] {
+    write_rows(o, s, run, buf, [&] {
       if (buf.size() > (1u << 20)) flush();
       if (stop.received()) throw Stopped{};
     });
@@ -158,9 +136,11 @@ int run_simulate(const SimulateOptions& o) {
   flush();
   out.commit();
   // The step each body actually took (fixed-step methods step on the grid n·dt).
-  for (const auto& p : props)
-    std::cerr << "tumble: body '" << p->model().name << "': " << method_name(p->config().method) << ", "
-              << scene::step_label(p->config(), p->model()) << ", " << p->steps() << " steps\n";
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    const Propagator& p = run.body(i).propagator();
+    std::cerr << "tumble: body '" << p.model().name << "': " << method_name(p.config().method) << ", "
+              << scene::step_label(p.config(), p.model()) << ", " << p.steps() << " steps\n";
+  }
   return kOk;
 }
 

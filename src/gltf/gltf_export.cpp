@@ -38,11 +38,11 @@ glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 std::pair<Eigen::Vector3d, Eigen::Quaterniond> pose_at(const scene::Trajectory& tr, double t) {
   std::size_t k = 0;
   while (k + 2 < tr.size() && tr.t[k + 1] <= t) ++k;
-  if (tr.size() < 2) return {Eigen::Vector3d(tr.c[0], tr.c[1], tr.c[2]), Eigen::Quaterniond(tr.q[0], tr.q[1], tr.q[2], tr.q[3])};
+  if (tr.size() < 2) return {Eigen::Vector3d(tr["c"][0], tr["c"][1], tr["c"][2]), Eigen::Quaterniond(tr["q"][0], tr["q"][1], tr["q"][2], tr["q"][3])};
   const double u = std::clamp((t - tr.t[k]) / (tr.t[k + 1] - tr.t[k]), 0.0, 1.0);
-  const Eigen::Vector3d a(tr.c[3 * k], tr.c[3 * k + 1], tr.c[3 * k + 2]), b(tr.c[3 * k + 3], tr.c[3 * k + 4], tr.c[3 * k + 5]);
-  const Eigen::Quaterniond qa(tr.q[4 * k], tr.q[4 * k + 1], tr.q[4 * k + 2], tr.q[4 * k + 3]);
-  const Eigen::Quaterniond qb(tr.q[4 * k + 4], tr.q[4 * k + 5], tr.q[4 * k + 6], tr.q[4 * k + 7]);
+  const Eigen::Vector3d a(tr["c"][3 * k], tr["c"][3 * k + 1], tr["c"][3 * k + 2]), b(tr["c"][3 * k + 3], tr["c"][3 * k + 4], tr["c"][3 * k + 5]);
+  const Eigen::Quaterniond qa(tr["q"][4 * k], tr["q"][4 * k + 1], tr["q"][4 * k + 2], tr["q"][4 * k + 3]);
+  const Eigen::Quaterniond qb(tr["q"][4 * k + 4], tr["q"][4 * k + 5], tr["q"][4 * k + 6], tr["q"][4 * k + 7]);
   return {(1 - u) * a + u * b, qa.slerp(u, qb)};
 }
 
@@ -53,7 +53,7 @@ viz::Camera fitted_camera(const scene::Scene& s, const std::vector<scene::Trajec
   std::vector<std::vector<glm::dvec3>> centres(tracks.size());
   for (std::size_t i = 0; i < tracks.size(); ++i)
     for (std::size_t k = 0; k < tracks[i].size(); ++k)
-      centres[i].emplace_back(tracks[i].c[3 * k], tracks[i].c[3 * k + 1], tracks[i].c[3 * k + 2]);
+      centres[i].emplace_back(tracks[i]["c"][3 * k], tracks[i]["c"][3 * k + 1], tracks[i]["c"][3 * k + 2]);
   const viz::Camera cam = compose::scene_camera(s, centres, aspect);
   std::vector<compose::Shot> shots;
   for (int j = 0; j < kFitSamples && !tracks.empty(); ++j) {
@@ -128,8 +128,8 @@ std::pair<std::vector<float>, std::vector<float>> key_values(const scene::Trajec
   std::vector<float> pos(3 * n), rot(4 * n);
   Eigen::Quaterniond prev = Eigen::Quaterniond::Identity();
   for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector3d c = to_gltf(Eigen::Vector3d(tr.c[3 * k], tr.c[3 * k + 1], tr.c[3 * k + 2]));
-    Eigen::Quaterniond q = gltf_from_world() * Eigen::Quaterniond(tr.q[4 * k], tr.q[4 * k + 1], tr.q[4 * k + 2], tr.q[4 * k + 3]);
+    const Eigen::Vector3d c = to_gltf(Eigen::Vector3d(tr["c"][3 * k], tr["c"][3 * k + 1], tr["c"][3 * k + 2]));
+    Eigen::Quaterniond q = gltf_from_world() * Eigen::Quaterniond(tr["q"][4 * k], tr["q"][4 * k + 1], tr["q"][4 * k + 2], tr["q"][4 * k + 3]);
     if (k > 0 && q.dot(prev) < 0) q.coeffs() = -q.coeffs();
     prev = q;
     for (int i = 0; i < 3; ++i) pos[3 * k + i] = static_cast<float>(c[i]);
@@ -187,7 +187,7 @@ void add_camera(Builder& b, NodeNames& names, tinygltf::Animation& anim, const s
     std::vector<float> pos;
     const Eigen::Vector3d offset = eig(cam.position - cam.target);
     for (std::size_t k = 0; k < tracks[f].size(); ++k) {
-      const Eigen::Vector3d p = to_gltf(Eigen::Vector3d(tracks[f].c[3 * k], tracks[f].c[3 * k + 1], tracks[f].c[3 * k + 2]) + offset);
+      const Eigen::Vector3d p = to_gltf(Eigen::Vector3d(tracks[f]["c"][3 * k], tracks[f]["c"][3 * k + 1], tracks[f]["c"][3 * k + 2]) + offset);
       pos.insert(pos.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
     }
     b.channel(anim, node, "translation", times[f], b.floats(pos, TINYGLTF_TYPE_VEC3, 3, 0, false));

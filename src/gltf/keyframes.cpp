@@ -90,10 +90,10 @@ double check_step(const RigidBodyModel& m, const Pose& p, double tolerance, doub
                    "or shorten the scene's duration");
 }
 
-scene::Trajectory body_keys(const scene::Scene& s, const scene::Body& b, const std::vector<double>& base,
-                            const KeyOptions& o, const std::function<void()>& poll) {
-  scene::BodyRun run(s.simulation, b);
-  scene::Trajectory tr = run.header();
+scene::Trajectory body_keys(scene::BodyRun& run, const std::vector<double>& base, const KeyOptions& o,
+                            const std::function<void()>& poll) {
+  const scene::Body& b = run.body();
+  scene::Trajectory tr = scene::trajectory_header(run);
   const RigidBodyModel& m = b.model;
   const double radius = viz::box_radius(m), angle = 0.9 * o.tolerance, distance = angle * radius;
   auto pose = [&](double t) {
@@ -132,8 +132,9 @@ std::vector<scene::Trajectory> key_tracks(const scene::Scene& s, const KeyOption
     throw InputError(o.tolerance_name + ": error: expected a number in [" + format_number(kMinKeyTolerance, 3) + ", " +
                      format_number(kMaxKeyTolerance, 3) + "] rad, found " + format_number(o.tolerance, 6));
   const std::vector<double> base = keyframe_times(s, o.fps);
+  scene::SceneRun run(s, s.simulation);
   std::vector<scene::Trajectory> out;
-  for (const scene::Body& b : s.bodies) out.push_back(body_keys(s, b, base, o, poll));
+  for (std::size_t i = 0; i < run.size(); ++i) out.push_back(body_keys(run.body(i), base, o, poll));
   return out;
 }
 

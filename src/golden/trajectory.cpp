@@ -45,12 +45,12 @@ TrajectoryComparison compare_trajectories(const std::string& actual_csv, const s
     r.summary = why;
     return r;
   };
-  if (e.empty() || e[0] != io::kTrajectoryHeader) return fail("expected trajectory: missing or unknown header");
-  if (a.empty() || a[0] != io::kTrajectoryHeader) return fail("actual trajectory: missing or unknown header");
+  if (e.empty() || e[0] != io::trajectory_header()) return fail("expected trajectory: missing or unknown header");
+  if (a.empty() || a[0] != io::trajectory_header()) return fail("actual trajectory: missing or unknown header");
   if (a.size() != e.size())
     return fail("row count differs: actual " + std::to_string(a.size() - 1) + ", expected " +
                 std::to_string(e.size() - 1) + " (a run diverged, or the times changed)");
-  const auto names = fields_of(io::kTrajectoryHeader);
+  const auto names = fields_of(io::trajectory_header());
   std::string worst_text;
   char buf[400];
   for (std::size_t i = 1; i < a.size(); ++i) {

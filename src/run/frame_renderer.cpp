@@ -37,7 +37,7 @@ std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::ve
 }
 
 std::string SceneFrames::trajectory_csv(const std::vector<long>& ks) const {
-  std::string out = std::string(io::kTrajectoryHeader) + "\n";
+  std::string out = io::trajectory_header() + "\n";
   const scene::FrameClock clock = scene::frame_clock(scene_, fps_);
   for (long k : ks) {
     for (const scene::Run& run : runs_) {

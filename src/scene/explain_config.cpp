@@ -1,6 +1,7 @@
 // [[views]], [[captions]], [title], [[slow_motion]]: explanatory-video settings.
 #include <algorithm>
 
+#include "core/observables.hpp"
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/internal.hpp"
@@ -8,10 +9,25 @@
 namespace tumble::scene {
 
 const std::vector<std::string>& plot_series_names() {
-  static const std::vector<std::string> names = {"w1",           "w2",      "w3",      "wbx",    "wby", "wbz", "|w|",
-                                                 "energy_error", "axis1_L", "axis2_L", "axis3_L"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const Observable& o : observables())
+      if (o.use & kPlotSeries) v.insert(v.end(), o.columns.begin(), o.columns.begin() + static_cast<long>(o.size));
+    return v;
+  }();
   return names;
 }
+
+namespace {
+
+// "w1, w2, …, axis3_L": the names a plot takes, for errors.
+std::string series_list() {
+  std::string out;
+  for (const std::string& n : plot_series_names()) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
 
 const char* view_kind_name(ViewKind k) {
   switch (k) {
@@ -155,8 +171,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
       for (const std::string& name : *series) {
         const auto& all = plot_series_names();
         if (std::find(all.begin(), all.end(), name) == all.end())
-          r.error("series", "expected names from w1, w2, w3, wbx, wby, wbz, |w|, energy_error, axis1_L, axis2_L, "
-                            "axis3_L, found " + quote_token(name));
+          r.error("series", "expected names from " + series_list() + ", found " + quote_token(name));
       }
       v.series = *series;
     }

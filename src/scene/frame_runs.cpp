@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include "core/dynamics.hpp"
-#include "core/propagator.hpp"
+#include "scene/scene_run.hpp"
 
 namespace tumble::scene {
 
@@ -19,20 +18,17 @@ int sub_samples(const std::vector<const RigidBodyModel*>& models, const std::vec
 
 namespace {
 
-using Propagators = std::vector<std::unique_ptr<Propagator>>;
-
-// One Propagator per body for `sim`, with the run's notes, energies at t = 0
-// and labels. Labels list each method and step once, compared whole (by enum
-// for the methods): rk45 and rk4 are two entries, not one substring of the other.
-Propagators start_run(const Scene& s, const SimulationConfig& sim, Run& run) {
-  Propagators props;
+// The run's notes, energies at t = 0 and labels. Labels list each method and
+// step once, compared whole (by enum for the methods): rk45 and rk4 are two
+// entries, not one substring of the other.
+void label_run(const SceneRun& bodies, Run& run) {
   std::vector<Method> used;
   std::vector<std::string> steps;
-  for (const Body& b : s.bodies) {
-    const MethodPlan plan = plan_method(sim, b);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Body& b = bodies.body(i).body();
+    const MethodPlan& plan = bodies.body(i).plan();
     if (!plan.reason.empty()) run.auto_notes.push_back("body '" + b.name + "': auto picked " + plan.reason);
-    if (auto w = coarse_step_warning(b.model, b.initial, plan.config)) run.auto_notes.push_back("warning: " + *w);
-    props.push_back(std::make_unique<Propagator>(b.model, b.initial, plan.config));
+    if (auto w = bodies.body(i).warning()) run.auto_notes.push_back("warning: " + *w);
     run.energy0.push_back(total_energy(b.model, b.initial));
     const std::string step = step_label(plan.config, b.model);
     if (std::find(steps.begin(), steps.end(), step) == steps.end()) {
@@ -47,13 +43,12 @@ Propagators start_run(const Scene& s, const SimulationConfig& sim, Run& run) {
                    (info.order > 0 ? ", order " + std::to_string(info.order) : "");
     }
   }
-  return props;
 }
 
 // The run's frames (and, with `curves`, its path: the frames and sub-frame
 // samples between them) until the last frame or a divergence.
 void advance_run(const FrameClock& clock, long frames, bool curves, const std::vector<const RigidBodyModel*>& models,
-                 Propagators& props, Run& run) {
+                 SceneRun& bodies, Run& run) {
   try {
     for (long k = 0; k < frames; ++k) {
       const double t = clock.time(k);
@@ -64,14 +59,11 @@ void advance_run(const FrameClock& clock, long frames, bool curves, const std::v
         const int n = sub_samples(models, run.frames.back(), t - t0);
         for (int j = 1; j < n; ++j) {
           const double tj = t0 + (t - t0) * j / n;
-          std::vector<BodyState> sub;
-          for (auto& p : props) sub.push_back(p->advance_to(tj));
-          run.path.push_back(std::move(sub));
+          run.path.push_back(bodies.states_at(tj));
           run.path_t.push_back(tj);
         }
       }
-      std::vector<BodyState> states;
-      for (auto& p : props) states.push_back(p->advance_to(t));
+      std::vector<BodyState> states = bodies.states_at(t);
       if (curves) {
         run.path_of_frame.push_back(run.path.size());
         run.path.push_back(states);
@@ -100,8 +92,9 @@ std::vector<Run> simulate_runs(const Scene& s, long frames, double fps) {
     SimulationConfig sim = s.simulation;
     sim.automatic = !method;
     if (method) sim.step.method = *method;
-    Propagators props = start_run(s, sim, run);
-    advance_run(clock, frames, curves, models, props, run);
+    SceneRun bodies(s, sim);
+    label_run(bodies, run);
+    advance_run(clock, frames, curves, models, bodies, run);
     runs.push_back(std::move(run));
   }
   return runs;

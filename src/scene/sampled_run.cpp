@@ -1,41 +1,44 @@
 #include "scene/sampled_run.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
-
-#include "core/dynamics.hpp"
-#include "core/propagator.hpp"
 
 namespace tumble::scene {
 
-namespace {
-
-void append(std::vector<double>& to, const Eigen::Vector3d& x) { to.insert(to.end(), {x.x(), x.y(), x.z()}); }
-
-}  // namespace
-
-/// The columns of io::append_trajectory_row and `simulate`'s extra ω_body, from the same functions.
-void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const BodyState& s) {
-  const Eigen::Quaterniond q = cloud_orientation(m, s);
-  tr.t.push_back(t);
-  append(tr.c, s.c);
-  tr.q.insert(tr.q.end(), {q.w(), q.x(), q.y(), q.z()});
-  append(tr.v, velocity(m, s));
-  append(tr.omega_world, omega_world(m, s));
-  append(tr.omega_body, omega_body(m, s));
-  append(tr.L, s.L);
-  tr.energy.push_back(total_energy(m, s));
+const std::vector<const Observable*>& python_arrays() {
+  static const std::vector<const Observable*> list = [] {
+    std::vector<const Observable*> v;
+    for (const Observable& o : observables())
+      if (o.use & kPythonArray) v.push_back(&o);
+    return v;
+  }();
+  return list;
 }
 
-BodyRun::BodyRun(const SimulationConfig& sim, const Body& body)
-    : body_(&body), plan_(plan_method(sim, body)), p_(body.model, body.initial, plan_.config) {}
+const std::vector<double>& Trajectory::operator[](std::string_view name) const {
+  for (std::size_t i = 0; i < python_arrays().size(); ++i)
+    if (python_arrays()[i]->name == name) return arrays.at(i);
+  throw std::out_of_range("scene::Trajectory: no array named " + std::string(name));
+}
 
-Trajectory BodyRun::header() const {
+/// Every array's components, from the observables table (as the CSV's columns).
+void append_sample(Trajectory& tr, double t, const RigidBodyModel& m, const BodyState& s) {
+  tr.t.push_back(t);
+  double v[kMaxComponents];
+  for (std::size_t i = 0; i < python_arrays().size(); ++i) {
+    const Observable& o = *python_arrays()[i];
+    o.value(m, s, 0, v);
+    tr.arrays[i].insert(tr.arrays[i].end(), v, v + o.size);
+  }
+}
+
+Trajectory trajectory_header(const BodyRun& run) {
   Trajectory tr;
-  tr.body = body_->name;
-  tr.method = std::string(method_name(plan_.config.method));
-  tr.step = step_label(plan_.config, body_->model);
-  tr.auto_reason = plan_.reason;
+  tr.body = run.body().name;
+  tr.method = std::string(method_name(run.plan().config.method));
+  tr.step = step_label(run.plan().config, run.model());
+  tr.auto_reason = run.plan().reason;
   return tr;
 }
 
@@ -50,25 +53,20 @@ void check_sample_times(std::span<const double> times) {
   }
 }
 
-std::optional<std::string> BodyRun::warning() const {
-  return coarse_step_warning(body_->model, body_->initial, plan_.config);
-}
-
 std::vector<Trajectory> sample_run(const Scene& s, const SimulationConfig& sim, std::span<const double> times,
                                    const std::function<void()>& poll, const std::function<void(const std::string&)>& warn) {
   check_sample_times(times);
+  SceneRun run(s, sim);
   std::vector<Trajectory> out;
-  for (const Body& b : s.bodies) {
-    BodyRun run(sim, b);
-    if (const auto w = run.warning(); w && warn) warn(*w);
-    Trajectory tr = run.header();
-    for (double t : times) {
-      append_sample(tr, t, b.model, run.at(t));
-      if (poll) poll();
-    }
-    tr.steps = run.steps();
-    out.push_back(std::move(tr));
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (const auto w = run.body(i).warning(); w && warn) warn(*w);
+    out.push_back(trajectory_header(run.body(i)));
   }
+  run.sample(times, [&](const Sample& x) {
+    append_sample(out[x.body], x.t, x.model, x.state);
+    if (poll) poll();
+  });
+  for (std::size_t i = 0; i < run.size(); ++i) out[i].steps = run.body(i).steps();
   return out;
 }
 

@@ -29,10 +29,10 @@ std::pair<double, double> worst_between_keys(const scene::Scene& s, const fs::pa
   const scene::Trajectory sim = scene::sample_run(s, s.simulation, times).at(0);  // an independent run
   double angle = 0, dist = 0;
   for (std::size_t k = 0; k < sim.size(); ++k) {
-    const Eigen::Quaterniond q(sim.q[4 * k], sim.q[4 * k + 1], sim.q[4 * k + 2], sim.q[4 * k + 3]);
+    const Eigen::Quaterniond q(sim["q"][4 * k], sim["q"][4 * k + 1], sim["q"][4 * k + 2], sim["q"][4 * k + 3]);
     const Eigen::Quaterniond want(Eigen::Matrix3d(y_up() * q.toRotationMatrix()));
     angle = std::max(angle, angle_between(slerp_at(rot, sim.t[k]), want));
-    const Eigen::Vector3d c = y_up() * Eigen::Vector3d(sim.c[3 * k], sim.c[3 * k + 1], sim.c[3 * k + 2]);
+    const Eigen::Vector3d c = y_up() * Eigen::Vector3d(sim["c"][3 * k], sim["c"][3 * k + 1], sim["c"][3 * k + 2]);
     dist = std::max(dist, (lerp_at(pos, sim.t[k]) - c).norm());
   }
   return {angle, dist};

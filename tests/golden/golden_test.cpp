@@ -158,7 +158,7 @@ tumble::io::Image flat(int w, int h, std::uint8_t v) {
 // The comparison itself on synthetic images: compare_test.cpp.
 
 TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
-  const std::string h = std::string(tumble::io::kTrajectoryHeader) + "\n";
+  const std::string h = std::string(tumble::io::trajectory_header()) + "\n";
   const std::string e = h + "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5\n";
   EXPECT_TRUE(tumble::golden::compare_trajectories(h + "0,b,1.0000001,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5\n", e).pass);
   const auto bad = tumble::golden::compare_trajectories(h + "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5.0001\n", e);
@@ -172,8 +172,8 @@ TEST(Trajectory, WithinToleranceAndPhysicsChanged) {
 // trajectory, so it compares equal to the LF file the run writes.
 TEST(Trajectory, AWindowsEditedFileWithCrlfLineEndingsIsTheSameTrajectory) {
   const std::string row = "0,b,1,2,3,1,0,0,0,0,0,0,0,0,0,0,0,0,5";
-  const std::string lf = std::string(tumble::io::kTrajectoryHeader) + "\n" + row + "\n";
-  const std::string crlf = std::string(tumble::io::kTrajectoryHeader) + "\r\n" + row + "\r\n";
+  const std::string lf = std::string(tumble::io::trajectory_header()) + "\n" + row + "\n";
+  const std::string crlf = std::string(tumble::io::trajectory_header()) + "\r\n" + row + "\r\n";
   const auto r = tumble::golden::compare_trajectories(lf, crlf);
   EXPECT_TRUE(r.pass) << r.summary;
   EXPECT_EQ(r.rows, 1);

@@ -4,10 +4,11 @@
 // frame shares it.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
-#include "core/dynamics.hpp"
+#include "core/observables.hpp"
 #include "scene/frame_clock.hpp"
 #include "viz/palette.hpp"
 #include "viz/strip_chart.hpp"
@@ -17,36 +18,41 @@ namespace tumble::compose {
 
 namespace {
 
-// How the plot shows each series of scene::plot_series_names(): its name in
-// the key and its colour (viz/palette.hpp: principal components and angles
-// take their axis' colour; the cloud-axis components, which are no principal
-// axis, greys).
+// How the plot shows each series (the components of the kPlotSeries rows of
+// core/observables.hpp): its name in the key and its colour (viz/palette.hpp:
+// principal components and angles take their axis' colour; the cloud-axis
+// components, which are no principal axis, greys).
 struct SeriesLook {
-  const char* name;
-  const char* shown;
+  std::string name;
+  std::string shown;
   viz::Color color;
 };
-const std::vector<SeriesLook>& series_looks() {
+
+viz::Color hue_color(PlotHue hue, std::size_t component) {
   using viz::Meaning;
-  static const std::vector<SeriesLook> looks = {
-      {"w1", "\u03c9\u2081", viz::color_of(Meaning::axis1)},
-      {"w2", "\u03c9\u2082", viz::color_of(Meaning::axis2)},
-      {"w3", "\u03c9\u2083", viz::color_of(Meaning::axis3)},
-      {"wbx", "\u03c9x (cloud axes)", {0.30f, 0.30f, 0.34f, 1}},
-      {"wby", "\u03c9y (cloud axes)", {0.50f, 0.50f, 0.55f, 1}},
-      {"wbz", "\u03c9z (cloud axes)", {0.68f, 0.68f, 0.72f, 1}},
-      {"|w|", "|\u03c9|", viz::color_of(Meaning::omega)},
-      {"energy_error", "\u0394E/E", viz::color_of(Meaning::ink)},
-      {"axis1_L", "\u2220(e\u2081, L)", viz::color_of(Meaning::axis1)},
-      {"axis2_L", "\u2220(e\u2082, L)", viz::color_of(Meaning::axis2)},
-      {"axis3_L", "\u2220(e\u2083, L)", viz::color_of(Meaning::axis3)}};
-  return looks;
+  static const viz::Color greys[] = {{0.30f, 0.30f, 0.34f, 1}, {0.50f, 0.50f, 0.55f, 1}, {0.68f, 0.68f, 0.72f, 1}};
+  switch (hue) {
+    case PlotHue::axes: return viz::color_of(static_cast<Meaning>(static_cast<int>(Meaning::axis1) + static_cast<int>(component)));
+    case PlotHue::greys: return greys[component];
+    case PlotHue::omega: return viz::color_of(Meaning::omega);
+    case PlotHue::ink:
+    case PlotHue::none: break;
+  }
+  return viz::color_of(Meaning::ink);
 }
 
 const SeriesLook& series_look(const std::string& name) {
-  for (const SeriesLook& l : series_looks())
+  static const std::vector<SeriesLook> looks = [] {
+    std::vector<SeriesLook> v;
+    for (const Observable& o : observables())
+      if (o.use & kPlotSeries)
+        for (std::size_t i = 0; i < o.size; ++i) v.push_back({std::string(o.columns[i]), std::string(o.shown[i]), hue_color(o.hue, i)});
+    return v;
+  }();
+  static const SeriesLook unknown{"", "?", viz::color_of(viz::Meaning::ink)};
+  for (const SeriesLook& l : looks)
     if (name == l.name) return l;
-  return series_looks()[7];
+  return unknown;  // the scene loader lets no other name through
 }
 
 class PlotPanel : public Panel {
@@ -106,12 +112,12 @@ class PlotPanel : public Panel {
 }  // namespace
 
 double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0) {
-  if (name == "w1" || name == "w2" || name == "w3") return omega_principal(m, s)[name[1] - '1'];
-  if (name == "wbx" || name == "wby" || name == "wbz") return omega_body(m, s)[name[2] - 'x'];
-  if (name == "|w|") return omega_world(m, s).norm();
-  if (name == "energy_error") return (total_energy(m, s) - e0) / std::max(std::abs(e0), 1e-300);
-  if (name.size() == 7 && name.rfind("axis", 0) == 0) return principal_axis_angles_to_L(s)[name[4] - '1'];
-  return 0;
+  std::size_t i = 0;
+  const Observable* o = find_column(name, &i);
+  if (!o || !(o->use & kPlotSeries)) return 0;
+  double v[kMaxComponents];
+  o->value(m, s, e0, v);
+  return v[i];
 }
 
 std::unique_ptr<Panel> make_plot(const PanelContext& ctx, std::size_t index) {
