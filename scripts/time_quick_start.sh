@@ -21,6 +21,12 @@ printf '%s\n' "deb http://deb.debian.org/debian bookworm main" \
   "deb http://deb.debian.org/debian bookworm-updates main" \
   "deb http://deb.debian.org/debian-security bookworm-security main" >"$run/etc/apt/sources.list"
 cp /etc/resolv.conf "$run/etc/resolv.conf"
+# A machine behind an intercepting proxy trusts its CA through NODE_EXTRA_CA_CERTS;
+# the chroot gets the same trust, so npm reaches the registry as the host does.
+extra_ca=
+if [ -n "${NODE_EXTRA_CA_CERTS:-}" ] && [ -f "$NODE_EXTRA_CA_CERTS" ]; then
+  cp "$NODE_EXTRA_CA_CERTS" "$run/root/extra-ca.pem" && extra_ca="NODE_EXTRA_CA_CERTS=/root/extra-ca.pem"
+fi
 mount -t proc proc "$run/proc"
 mount --rbind /dev "$run/dev"
 mount -t sysfs sys "$run/sys"
@@ -29,7 +35,7 @@ mkdir -p "$logs"
 time_in_chroot() {  # NAME: times ./scripts/NAME.sh in the clone
   echo "before $1: $(uptime)" >>"$logs/load.txt"
   local status=0
-  chroot "$run" /bin/bash -c "cd /root/tumble && export HOME=/root LANG=C.UTF-8 PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+  chroot "$run" /bin/bash -c "cd /root/tumble && export $extra_ca HOME=/root LANG=C.UTF-8 PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
     && TIMEFORMAT='TIMING $1 wall %R s user %U s sys %S s' && time ./scripts/$1.sh" >"$logs/$1.log" 2>&1 || status=$?
   echo "after $1: $(uptime)" >>"$logs/load.txt"
   echo "$1 exit status $status" | tee -a "$logs/$1.log"
