@@ -45,7 +45,7 @@ std::string trajectory_doc() {
   std::string d = "One body's samples in the CSV's units and frames (read-only numpy views): t (n,) s";
   for (const Observable* o : scene::python_arrays())
     d += "; " + std::string(o->name) + (o->size == 1 ? " (n,)" : " (n, " + std::to_string(o->size) + ")") +
-         (o->unit.empty() ? "" : " ") + std::string(o->unit);
+         (o->unit.empty() ? "" : " ") + std::string(o->unit) + (o->note.empty() ? "" : " ") + std::string(o->note);
   return d + ".";
 }
 

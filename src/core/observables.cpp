@@ -20,7 +20,8 @@ constexpr Observable kTable[] = {
      [](const RigidBodyModel& m, const BodyState& s, double, double* o) {
        const Eigen::Quaterniond q = cloud_orientation(m, s);  // world ← cloud
        o[0] = q.w(), o[1] = q.x(), o[2] = q.y(), o[3] = q.z();
-     }},
+     },
+     PlotHue::none, {}, "world \u2190 cloud (w, x, y, z)"},
     {"v", "m/s", ObservableFrame::world, 3, {"vx", "vy", "vz"}, kTrajectoryColumns | kPythonArray,
      [](const RigidBodyModel& m, const BodyState& s, double, double* o) { put(velocity(m, s), o); }},
     {"omega_world", "rad/s", ObservableFrame::world, 3, {"wx", "wy", "wz"}, kTrajectoryColumns | kPythonArray,

@@ -34,7 +34,7 @@ inline constexpr std::size_t kMaxComponents = 4;
 
 struct Observable {
   std::string_view name;  ///< the Python array's name and the docs'
-  std::string_view unit;  ///< SI: "m", "rad/s", "J", "1" (a ratio), "" (q: world ← cloud, w x y z)
+  std::string_view unit;  ///< SI: "m", "rad/s", "J", "1" (a ratio), "" (none: q)
   ObservableFrame frame;
   std::size_t size;                                   ///< components
   std::array<std::string_view, kMaxComponents> columns;  ///< per component: CSV column and plot series name
@@ -43,6 +43,7 @@ struct Observable {
   void (*value)(const RigidBodyModel& m, const BodyState& s, double e0, double* out);
   PlotHue hue = PlotHue::none;
   std::array<std::string_view, kMaxComponents> shown = {};  ///< per component: the plot key's text
+  std::string_view note = {};  ///< for people (Python's docstring): what the unit and frame do not say
 };
 
 /// Every observable, in CSV column order (the trajectory's, then simulate's)
