@@ -111,6 +111,7 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.omega = r.boolean("omega").value_or(d.omega);
   d.trail_seconds = r.number("trails", Range::closed(0, 1e4)).value_or(d.trail_seconds);
   d.grid = r.boolean("grid").value_or(d.grid);
+  d.arrow_width = r.number("arrow_width", Range::closed(0.25, 4)).value_or(d.arrow_width);
   if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
     // A list of the overlay's items: only those are shown.
     d.overlay_items = {false, false, false, false};
@@ -176,7 +177,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
                   {"box", "surface", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key",
-                   "flips"});
+                   "flips", "arrow_width"});
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {

@@ -18,6 +18,7 @@ struct DrawOptions {
   bool omega = false;             ///< ω_world as an arrow
   double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
   bool grid = false;
+  double arrow_width = 1;         ///< the arrows' (axes, L, ω) thickness, times their usual
 };
 
 }  // namespace tumble::viz

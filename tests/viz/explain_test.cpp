@@ -311,3 +311,75 @@ TEST(StripChart, SlowedStretchesAreShadedBandsWithTheirSpeed) {
 
 }  // namespace
 }  // namespace tumble::viz
+
+namespace tumble::viz {
+namespace {
+
+TEST(StripChart, ALogAxisIsTickedAtItsDecades) {
+  StripChartInput in;
+  in.times = {0, 1, 2};
+  in.series = {{"euler", {-3.0, -2.0, -1.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 4, in.lo = -10, in.hi = 1, in.playhead = 2;
+  in.log10 = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  const ChartMap m(in, 600, 200, 12.0f);
+  std::vector<std::string> ticks;
+  for (const TextItem& t : v.texts)
+    if (t.name == "tick" && t.position_px.x < 10) {
+      ticks.push_back(t.text);
+      if (t.text == "10\u207b\u2074") { EXPECT_NEAR(t.position_px.y + 6.0f, m.pixel(m.at(0, -4)).y, 1e-3); }
+    }
+  // Eleven decades, every second named: 10⁻¹⁰ … 10⁰, no linear end values.
+  EXPECT_EQ(ticks, (std::vector<std::string>{"10\u207b\u00b9\u2070", "10\u207b\u2078", "10\u207b\u2076", "10\u207b\u2074",
+                                             "10\u207b\u00b2", "10\u2070"}));
+}
+
+TEST(StripChart, DirectLabelsNameEachCurveAtItsHeadApart) {
+  StripChartInput in;
+  in.times = {0, 1, 2};
+  // Two heads a hair apart and one far below; the third stopped a sample early.
+  in.series = {{"euler", {-1.0, -0.5, 0.0}, {1, 0, 0, 1}},
+               {"rk4", {-1.0, -0.5, -0.01}, {0, 1, 0, 1}},
+               {"splitting", {-8.0, -9.0, std::nan("")}, {0, 0, 1, 1}}};
+  in.t0 = 0, in.t1 = 2, in.lo = -10, in.hi = 1, in.playhead = 2;
+  in.direct_labels = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  const ChartMap m(in, 600, 200, 12.0f);
+  std::vector<const TextItem*> labels;
+  for (const TextItem& t : v.texts) {
+    EXPECT_NE(t.name, "key") << "no key row: the curves are named where they are";
+    if (t.name == "series_label") labels.push_back(&t);
+  }
+  ASSERT_EQ(labels.size(), 3u);
+  for (const TextItem* t : labels) {
+    const std::size_t i = t->text == "euler" ? 0 : t->text == "rk4" ? 1 : 2;
+    EXPECT_EQ(t->color, in.series[i].color) << t->text;
+    const glm::vec2 head = m.pixel(m.at(i == 2 ? 1 : 2, in.series[i].values[i == 2 ? 1 : 2]));
+    EXPECT_GT(t->position_px.x, head.x) << t->text;                                   // just right of its head
+    EXPECT_LT(t->position_px.x + text_width(t->text, 12.0f), 600.0f) << t->text;      // inside the view
+    EXPECT_NEAR(t->position_px.y + 6.0f, head.y, i == 2 ? 1e-3 : 13.2) << t->text;   // at its height, or pushed apart
+  }
+  EXPECT_GE(std::abs(labels[0]->position_px.y - labels[1]->position_px.y), 1.1f * 12.0f - 1e-3f);
+}
+
+TEST(Keys, ArrowsAndTrailsNeverShareASwatch) {
+  DrawOptions d;
+  d.angular_momentum = d.omega = true;
+  d.trail_seconds = 1;
+  const std::vector<KeyEntry> plain = bodies_key(d, {}), arrows = bodies_key(d, {}, true);
+  ASSERT_EQ(arrows.size(), 4u);
+  EXPECT_TRUE(same_entry(plain[0], KeyEntry{Swatch::line, plain[0].colors, plain[0].text}));  // as before
+  EXPECT_EQ(arrows[0].swatch, Swatch::arrow);  // e₁ e₂ e₃
+  EXPECT_EQ(arrows[1].swatch, Swatch::line);   // their trails, faded
+  for (const Color& c : arrows[1].colors) EXPECT_LT(c.a, 0.5f);
+  EXPECT_EQ(arrows[2].swatch, Swatch::arrow);  // L
+  EXPECT_EQ(arrows[3].swatch, Swatch::arrow);  // ω
+  View v;
+  add_key(v, arrows, {0, 0}, 12.0f);
+  EXPECT_EQ(v.texts[0].text, "\u2192");
+}
+
+}  // namespace
+}  // namespace tumble::viz
