@@ -113,6 +113,8 @@ std::string FrameBuilder::status(long k) const {
   const std::string speed = clock.in_hold(k) ? kPaused
                             : rate == 1      ? ""
                                              : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
+  // Held at a flip: a deliberate stop, named ("paused at flip 1").
+  if (clock.in_hold(k) && !out.empty()) return std::string(kPaused) + " at " + out;
   if (!speed.empty()) out += (out.empty() ? "" : "  \u00b7  ") + speed;
   return out;
 }

@@ -48,7 +48,14 @@ std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pa
   // The arrows carry their names at their tips; the key says what the names mean, briefly.
   const std::vector<Color> axes{kAxisColors[0], kAxisColors[1], kAxisColors[2]};
   if (d.axes) out.push_back({Swatch::line, axes, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"});
-  if (d.axes && d.trail_seconds > 0) out.push_back({Swatch::line, axes, "trails of their tips"});
+  static const char* const kTrailOf[3] = {"trail of e\u2081's tip", "trail of e\u2082's tip", "trail of e\u2083's tip"};
+  std::vector<Color> trailed;
+  for (std::size_t i = 0; i < 3; ++i)
+    if (d.trail_axes[i]) trailed.push_back(kAxisColors[i]);
+  if (d.axes && d.trail_seconds > 0 && !trailed.empty()) {
+    const auto one = std::find(d.trail_axes.begin(), d.trail_axes.end(), true) - d.trail_axes.begin();
+    out.push_back({Swatch::line, trailed, trailed.size() == 1 ? kTrailOf[one] : "trails of their tips"});
+  }
   if (d.angular_momentum) out.push_back(key_entry(Meaning::L, "L: angular momentum (direction)"));
   if (d.omega) out.push_back(key_entry(Meaning::omega, "\u03c9: angular velocity (direction)"));
   for (const auto& [name, color] : bodies) out.push_back({Swatch::block, {Color(glm::vec3(color), 1.0f)}, name});
