@@ -142,7 +142,7 @@ void add_direct_label(View& view, const ViewportProjection& project, const glm::
 }
 
 // The polhode, the herpolhode and the plane named on the picture, not in a key:
-// each curve at its oldest point, the plane at its corner nearest the bottom of the view.
+// each curve at its oldest point, the plane at a corner clear of the ellipsoid.
 void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h);
@@ -152,15 +152,19 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   if (in.omega_world_history.size() >= 2)
     add_direct_label(view, project, to_glm(in.omega_world_history.front() * f.scale - kHerpolhodeLift * f.p.normal),
                      "herpolhode", color_of(Meaning::herpolhode), size, "label_herpolhode");
+  // The plane at the corner in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
+  glm::vec2 foot;
+  if (!project(to_glm(f.foot), foot)) return;
   glm::dvec3 corner(0);
-  float lowest = -1e30f;
+  float farthest = -1;
   for (double a : {-1.0, 1.0})
     for (double b : {-1.0, 1.0}) {
       const glm::dvec3 c = to_glm(f.foot + 1.2 * (a * f.u + b * f.v));
       glm::vec2 px;
-      if (project(c, px) && px.y < in.height_px && px.x > 0 && px.x < in.width_px && px.y > lowest) lowest = px.y, corner = c;
+      const bool shown = project(c, px) && px.x > 0 && px.x < in.width_px && px.y > 0 && px.y < in.height_px;
+      if (shown && glm::length(px - foot) > farthest) farthest = glm::length(px - foot), corner = c;
     }
-  if (lowest > -1e30f) add_direct_label(view, project, corner, "invariable plane", color_of(Meaning::plane), size, "label_plane");
+  if (farthest >= 0) add_direct_label(view, project, corner, "invariable plane", color_of(Meaning::plane), size, "label_plane");
 }
 
 }  // namespace
