@@ -52,6 +52,7 @@ class FrameBuilder {
   std::vector<std::string> titles_;
   FramePlan plan_;
   std::vector<double> flip_video_;  // video s at which each marked flip is first shown
+  std::vector<double> flip_t_;      // simulated s of each marked flip
 };
 
 }  // namespace tumble::compose

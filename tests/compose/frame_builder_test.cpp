@@ -48,7 +48,9 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   long k = 0;
   while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 1.7)) ++k;
   ASSERT_TRUE(clock.in_hold(k));
-  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  long last = k;  // the hold's last frame: still named, however long the hold
+  while (last + 1 < clock.count() && clock.in_hold(last + 1)) ++last;
+  const auto runs = tumble::scene::simulate_runs(s, last + 1, fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 320, 240);
   auto has = [](const tumble::viz::DrawList& dl, const std::string& text) {
     for (const tumble::viz::TextItem& t : dl.texts)
@@ -56,6 +58,7 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
     return false;
   };
   EXPECT_TRUE(has(fb.build(k), "paused at flip 1"));
+  EXPECT_TRUE(has(fb.build(last), "paused at flip 1"));
   // A hold elsewhere (the introduction) stays "paused".
   long intro = 0;
   while (intro + 1 < clock.count() && !(clock.in_hold(intro) && clock.time(intro) > 0.1)) ++intro;
