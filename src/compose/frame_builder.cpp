@@ -115,6 +115,7 @@ void FrameBuilder::mark_flips() {
   const scene::FrameClock& clock = world_.clock();
   long k = 0;
   for (double flip : scene::body_flip_times(scene_, *scene_.render.explain.flip_marks)) {
+    flip_t_.push_back(flip);
     while (k < clock.count() && clock.time(k) < flip - 1e-9) ++k;
     if (k < clock.count()) flip_video_.push_back(static_cast<double>(k) / clock.fps());
   }
@@ -131,6 +132,9 @@ std::string FrameBuilder::status(long k) const {
   const std::string speed = clock.in_hold(k) ? kPaused
                             : rate == 1      ? ""
                                              : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
+  // Held at a flip, the whole hold: a deliberate stop, named ("paused at flip 1").
+  for (std::size_t i = 0; i < flip_t_.size(); ++i)
+    if (clock.in_hold(k) && std::abs(clock.time(k) - flip_t_[i]) < 1e-6) return std::string(kPaused) + " at flip " + std::to_string(i + 1);
   if (!speed.empty()) out += (out.empty() ? "" : "  \u00b7  ") + speed;
   return out;
 }

@@ -54,6 +54,7 @@ class FrameBuilder {
   std::size_t cells_ = 0;  // panels of runs first (a classic view or a [compare] grid), then the [[views]]
   FramePlan plan_;
   std::vector<double> flip_video_;  // video s at which each marked flip is first shown
+  std::vector<double> flip_t_;      // simulated s of each marked flip
 };
 
 }  // namespace tumble::compose

@@ -123,16 +123,27 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
                                 std::string* written = nullptr);
 
-// Keys only some kinds take: energy_ellipsoid (momentum_sphere), y_scale and y_range (plot).
+// A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels.
+void read_sphere_options(TableReader& r, ViewConfig& v) {
+  for (std::string_view key : {"energy_ellipsoid", "path", "line_scale", "levels"})
+    if (r.has(key) && v.kind != ViewKind::momentum_sphere) r.error(key, "only a momentum_sphere view takes " + std::string(key));
+  if (v.kind != ViewKind::momentum_sphere) return;
+  v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
+  if (const auto path = r.string("path")) {
+    if (*path != "polhode" && *path != "trail") r.error("path", "expected \"polhode\" or \"trail\", found " + quote_token(*path));
+    v.path_trail = *path == "trail";
+  }
+  v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
+  v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
+}
+
+// Keys only some kinds take: the sphere's (above), y_scale and y_range (plot).
 void read_kind_options(TableReader& r, ViewConfig& v) {
+  read_sphere_options(r, v);
   if (const auto scale = r.string("y_scale")) {
     if (v.kind != ViewKind::plot) r.error("y_scale", "only a plot view has a y_scale");
     else if (*scale == "log") v.y_log = true;
     else if (*scale != "linear") r.error("y_scale", "expected \"linear\" or \"log\", found " + quote_token(*scale));
-  }
-  if (r.has("energy_ellipsoid")) {
-    if (v.kind != ViewKind::momentum_sphere) r.error("energy_ellipsoid", "only a momentum_sphere view has an energy ellipsoid");
-    v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
   }
   if (const toml::node* n = r.node("y_range")) {
     if (v.kind != ViewKind::plot) {
@@ -158,7 +169,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
-                   "key"});
+                   "key", "path", "line_scale", "levels"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {

@@ -48,12 +48,13 @@ void TrailRecorder::record(double t, const std::vector<BodySnapshot>& bodies) {
   samples_.push_back(std::move(s));
 }
 
-std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds) const {
+std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds, std::array<bool, 3> axes) const {
   std::vector<PolylineItem> out;
   if (samples_.empty() || seconds <= 0) return out;
   const size_t nbodies = samples_.back().tips.size();
   for (size_t b = 0; b < nbodies; ++b)
     for (int i = 0; i < 3; ++i) {
+      if (!axes[static_cast<std::size_t>(i)]) continue;
       PolylineItem p{{}, kAxisColors[i], 2.0f};
       for (const Sample& s : samples_)
         if (s.t <= t + 1e-12 && s.t >= t - seconds - 1e-12 && b < s.tips.size()) p.points.push_back(s.tips[b][i]);
@@ -145,7 +146,7 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     }
   }
   if (trails && opt.trail_seconds > 0)
-    for (PolylineItem& p : trails->polylines(t, opt.trail_seconds)) view.polylines.push_back(std::move(p));
+    for (PolylineItem& p : trails->polylines(t, opt.trail_seconds, opt.trail_axes)) view.polylines.push_back(std::move(p));
 }
 
 Camera auto_camera(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii, double fov_y_deg,

@@ -34,8 +34,8 @@ const GoldenScene kScenes[] = {
     // The explanatory scenes' clocks have a title card and slow motion anchored
     // to flips: their goldens are frames (`tumble info` lists what each shows):
     // the title card, the hold at the first flip, and after it.
-    {"dzhanibekov_explained", "40,500,900", "--frames"}, {"poinsot", "0.5,3,7"},
-    {"tennis_racket", "40,300,480", "--frames"},
+    {"dzhanibekov_explained", "40,1400,2030", "--frames"}, {"poinsot", "0.5,3,7"},
+    {"tennis_racket", "40,1000,1250", "--frames"},
 };
 
 bool updating() {

@@ -154,6 +154,9 @@ y_range = [-10, 10]
 kind = "momentum_sphere"
 energy_ellipsoid = false
 key = false
+path = "trail"
+line_scale = 1.5
+levels = 6
 [[captions]]
 text = "Up here."
 position = "top"
@@ -167,6 +170,11 @@ position = "top"
   EXPECT_EQ((*v[1].y_range)[0], -10);
   EXPECT_FALSE(v[2].energy_ellipsoid);
   EXPECT_FALSE(v[2].key);
+  EXPECT_TRUE(v[2].path_trail);
+  EXPECT_EQ(v[2].line_scale, 1.5);
+  EXPECT_EQ(v[2].levels, 6);
+  EXPECT_FALSE(v[1].path_trail);
+  EXPECT_EQ(v[1].line_scale, 1);
   EXPECT_TRUE(v[1].key);
   EXPECT_EQ(s.render.explain.captions[0].position, CaptionPosition::top);
 }
@@ -176,6 +184,11 @@ TEST(StorySettings, MisplacedOrBadValuesAreErrorsAtTheirPlace) {
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ny_range = [2, 1]\n").find("story.toml:14:11: error: views[1].y_range: expected low < high"),
             std::string::npos);
   EXPECT_NE(error_of("energy_ellipsoid = false\n").find("only a momentum_sphere view"), std::string::npos);
+  EXPECT_NE(error_of("path = \"trail\"\n").find("only a momentum_sphere view takes path"), std::string::npos);
+  EXPECT_NE(error_of("line_scale = 2\n").find("only a momentum_sphere view takes line_scale"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npath = \"all\"\n").find("views[1].path: expected \"polhode\" or \"trail\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[draw]\ntrail_axes = [\"e4\"]\n").find("draw.trail_axes: expected items from"), std::string::npos);
   EXPECT_NE(error_of("camera = { target = [0, 0, 0] }\n").find("views[0].camera.position: missing"), std::string::npos);
   EXPECT_NE(error_of("[[captions]]\ntext = \"x\"\nposition = \"middle\"\n").find("story.toml:14:12: error: captions[0].position"),
             std::string::npos);
