@@ -139,7 +139,7 @@ void open_folder(Job& j) {
   // A shard removes only its own: the others' in-flight temp files look the same.
   for (const fs::path& t : list_dir(j.req.dir, is_stale_temp)) {
     const std::string target(io::temp_target_name(t.filename().string()));
-    const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
+    const long k = io::frame_index(target).value_or(-1);
     if (!j.shard || target == j.own || (k >= j.first && k <= j.last)) remove_file(t);
   }
 }

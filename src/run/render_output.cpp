@@ -176,7 +176,7 @@ void remove_stale(const fs::path& dir, const Existing& ex, const std::string& se
     else if (p.file != own) remove_file(dir / p.file);
   }
   for (const fs::path& f : list_dir(dir, io::is_frame_file)) {
-    const long k = std::atol(f.filename().string().c_str() + 6);
+    const long k = *io::frame_index(f.filename().string());
     if (std::none_of(keep.begin(), keep.end(), [k](const auto& r) { return k >= r.first && k <= r.second; }))
       remove_file(f);
   }
