@@ -336,7 +336,7 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
   } catch (const std::invalid_argument& e) {  // --gpu / TUMBLE_EGL_DEVICE past the last device
     throw InputError(e.what());
   }
-  render::Renderer renderer(*ctx, out.width, out.height, out.samples(), out.fxaa());
+  render::Renderer renderer(*ctx, out.width, out.height, out.aa, out.msaa);
   const VideoEncoder encoder = out.video == scene::VideoFormat::mp4
                                    ? choose_video_encoder(ctx->vendor(), render::usable_cores())
                                    : VideoEncoder{};
