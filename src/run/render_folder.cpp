@@ -164,7 +164,7 @@ void describe(Job& j, const std::vector<scene::Run>& runs, const render::GlConte
   man.gl_vendor = ctx.vendor();
   man.gl_device = ctx.display();
   man.hardware_gpu = ctx.hardware_gpu();
-  if (s.render.output.video == scene::VideoFormat::mp4) man.video_encoder = encoder.codec + " " + encoder.preset;
+  if (scene::video_format(s.render.output.video).h264) man.video_encoder = encoder.codec + " " + encoder.preset;
   man.frames_out = j.req.stream ? "none" : "png";
 }
 
@@ -337,7 +337,7 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
     throw InputError(e.what());
   }
   render::Renderer renderer(*ctx, out.width, out.height, out.aa, out.msaa);
-  const VideoEncoder encoder = out.video == scene::VideoFormat::mp4
+  const VideoEncoder encoder = scene::video_format(out.video).h264
                                    ? choose_video_encoder(ctx->vendor(), render::usable_cores())
                                    : VideoEncoder{};
   describe(j, runs, *ctx, renderer.samples(), encoder);
