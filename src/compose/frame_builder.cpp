@@ -46,32 +46,19 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
       world_(s, runs, scene::frame_clock(s, fps), viz::text_px(viz::TextRole::label, height)),
       context_{s, runs, world_, height} {
   const auto& views = s.render.explain.views;
-  FrameNeeds needs;
-  needs.width = width, needs.height = height;
-  if (views.empty()) {
-    needs.columns = grid_columns(runs.size());
+  // A [compare] grid's cells, in one row above the plots of its runs when it has any.
+  if (views.empty() || !s.render.compare_methods.empty()) {
     for (std::size_t r = 0; r < runs.size(); ++r) {
       panels_.push_back(make_run_panel(context_, r));
       titles_.push_back(runs.size() > 1 ? runs[r].title : "");
     }
-    needs.frame_key = legend();
-  } else {
-    for (std::size_t i = 0; i < views.size(); ++i) {
-      panels_.push_back(make_panel(context_, i));
-      titles_.push_back(views[i].title);
-    }
+    cells_ = panels_.size();
   }
-  for (std::size_t i = 0; i < panels_.size(); ++i) {
-    ViewNeeds v;
-    if (!views.empty()) v.viewport = views[i].viewport;
-    v.kind = panels_[i]->name();
-    v.title = titles_[i];
-    v.overlay_lines = panels_[i]->overlay_lines();
-    if (views.empty() || views[i].key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
-    v.edge_to_edge = !views.empty() && views[i].kind == scene::ViewKind::plot;
-    needs.views.push_back(std::move(v));
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    panels_.push_back(make_panel(context_, i));
+    titles_.push_back(views[i].title);
   }
-  for (const scene::Caption& c : s.render.explain.captions) needs.captions.push_back(c.text);
+  FrameNeeds needs = frame_needs();
   mark_flips();
   // One caption strip; the scene reader makes every caption agree on where it goes.
   const auto& captions = s.render.explain.captions;
@@ -82,13 +69,44 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   // A [compare] grid's cells differ by a pixel or two (rounding, overlay
   // lines); fitted to one size, they share one camera and so one scale.
   glm::vec2 common{1e9f, 1e9f};
-  for (const ViewPlan& v : plan_.views)
-    common = glm::min(common, glm::vec2(v.content.x1 - v.content.x0, v.content.y1 - v.content.y0));
+  for (std::size_t i = 0; i < cells_; ++i) {
+    const viz::Box& c = plan_.views[i].content;
+    common = glm::min(common, glm::vec2(c.x1 - c.x0, c.y1 - c.y0));
+  }
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
-    const glm::vec2 size = views.empty() ? common : glm::vec2(c.x1 - c.x0, c.y1 - c.y0);
+    const glm::vec2 size = i < cells_ ? common : glm::vec2(c.x1 - c.x0, c.y1 - c.y0);
     panels_[i]->fit(glm::max(size, glm::vec2(1.0f)));
   }
+}
+
+// What the layout needs: each panel's title, overlay lines, key and place.
+FrameNeeds FrameBuilder::frame_needs() const {
+  const auto& views = scene_.render.explain.views;
+  FrameNeeds needs;
+  needs.width = width_, needs.height = height_;
+  needs.columns = views.empty() ? grid_columns(cells_) : std::max<int>(1, static_cast<int>(cells_));
+  if (cells_ > 0) needs.frame_key = legend();
+  // Plots under a [compare] grid: the cells share the band above the highest plot.
+  double band = 1;
+  if (cells_ > 0)
+    for (const scene::ViewConfig& v : views) band = std::min(band, v.viewport ? (*v.viewport)[1] : 1.0);
+  for (std::size_t i = 0; i < panels_.size(); ++i) {
+    ViewNeeds v;
+    const scene::ViewConfig* vc = i < cells_ ? nullptr : &views[i - cells_];
+    if (vc) v.viewport = vc->viewport;
+    else if (!views.empty())
+      v.viewport = std::array<double, 4>{double(i) / double(cells_), 0, 1.0 / double(cells_), band};
+    v.kind = panels_[i]->name();
+    v.title = titles_[i];
+    v.large_overlay = i < cells_ && cells_ > 1;  // a comparison's readouts are what it compares
+    v.overlay_lines = panels_[i]->overlay_lines();
+    if (!vc || vc->key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
+    v.edge_to_edge = vc && vc->kind == scene::ViewKind::plot;
+    needs.views.push_back(std::move(v));
+  }
+  for (const scene::Caption& c : scene_.render.explain.captions) needs.captions.push_back(c.text);
+  return needs;
 }
 
 // The video times at which the marked body's flips are first shown.
@@ -97,6 +115,7 @@ void FrameBuilder::mark_flips() {
   const scene::FrameClock& clock = world_.clock();
   long k = 0;
   for (double flip : scene::body_flip_times(scene_, *scene_.render.explain.flip_marks)) {
+    flip_t_.push_back(flip);
     while (k < clock.count() && clock.time(k) < flip - 1e-9) ++k;
     if (k < clock.count()) flip_video_.push_back(static_cast<double>(k) / clock.fps());
   }
@@ -113,6 +132,9 @@ std::string FrameBuilder::status(long k) const {
   const std::string speed = clock.in_hold(k) ? kPaused
                             : rate == 1      ? ""
                                              : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
+  // Held at a flip, the whole hold: a deliberate stop, named ("paused at flip 1").
+  for (std::size_t i = 0; i < flip_t_.size(); ++i)
+    if (clock.in_hold(k) && std::abs(clock.time(k) - flip_t_[i]) < 1e-6) return std::string(kPaused) + " at flip " + std::to_string(i + 1);
   if (!speed.empty()) out += (out.empty() ? "" : "  \u00b7  ") + speed;
   return out;
 }
@@ -132,10 +154,10 @@ std::string FrameBuilder::widest_status() const {
 std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   const viz::DrawOptions& draw = world_.draw();
   if (!scene_.render.draw.legend) return {};
-  std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt);
+  std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
   if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
     const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 1.0f)}, "box: extent along e\u2081 e\u2082 e\u2083"});
+    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box: extent along e\u2081 e\u2082 e\u2083"});
   }
   return key;
 }
@@ -153,12 +175,16 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);
   v.viewport = p.viewport;
-  if (!p.title.empty()) v.texts.push_back({p.title, p.title_at, p.title_px, viz::color_of(viz::Meaning::ink, 0.95f), "view_title"});
+  // A comparison's cells name their methods, and give their readouts, in the method's colour (as its plot curve).
+  const bool method = i < cells_ && cells_ > 1;
+  const viz::Color ink = method ? run_color(runs_[i]) : kInk;
+  const viz::Color title_ink = method ? ink : viz::color_of(viz::Meaning::ink, 0.95f);
+  if (!p.title.empty()) v.texts.push_back({p.title, p.title_at, p.title_px, title_ink, "view_title"});
   const std::vector<std::string> lines = panels_[i]->overlay(k);
   for (std::size_t j = 0; j < lines.size(); ++j) {
     const bool diverged = lines[j].rfind("diverged", 0) == 0;
     v.texts.push_back({lines[j], {p.title_at.x > 0 ? p.title_at.x : c.x0, p.overlay_y + static_cast<float>(j) * p.overlay_px},
-                       p.overlay_px, diverged ? kDiverged : kInk, diverged ? "diverged" : "overlay"});
+                       p.overlay_px, diverged ? kDiverged : ink, diverged ? "diverged" : "overlay"});
   }
   if (p.key_at) viz::add_key(v, p.key, *p.key_at, p.key_px);
   return v;
@@ -218,7 +244,8 @@ viz::DrawList FrameBuilder::build(long k) const {
   const double t = world_.clock().time(k);
   const auto& views = scene_.render.explain.views;
   for (std::size_t i = 0; i < panels_.size(); ++i)
-    if (views.empty() || t >= views[i].appear) dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
+    if (i < cells_ || t >= views[i - cells_].appear)
+      dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
   add_frame_text(dl, k);
   return dl;
 }

@@ -39,6 +39,7 @@ class FrameBuilder {
   void add_frame_text(viz::DrawList& dl, long k) const;
   bool title_card(viz::DrawList& dl, long k) const;
   std::vector<viz::KeyEntry> legend() const;
+  FrameNeeds frame_needs() const;
   void mark_flips();
   std::string status(long k) const;
   std::string widest_status() const;
@@ -50,8 +51,10 @@ class FrameBuilder {
   PanelContext context_;
   std::vector<std::unique_ptr<Panel>> panels_;
   std::vector<std::string> titles_;
+  std::size_t cells_ = 0;  // panels of runs first (a classic view or a [compare] grid), then the [[views]]
   FramePlan plan_;
   std::vector<double> flip_video_;  // video s at which each marked flip is first shown
+  std::vector<double> flip_t_;      // simulated s of each marked flip
 };
 
 }  // namespace tumble::compose

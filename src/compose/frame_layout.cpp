@@ -160,7 +160,7 @@ glm::dvec4 view_fractions(const FrameNeeds& n, const viz::Box& area, std::size_t
 // The title strip: the title wrapped to the view, then the overlay lines.
 float plan_title(const ViewNeeds& v, int frame_h, float pad, ViewPlan& vp) {
   vp.title_px = viz::text_px(viz::TextRole::view_title, frame_h);
-  vp.overlay_px = viz::text_px(viz::TextRole::label, frame_h);
+  vp.overlay_px = viz::text_px(v.large_overlay ? viz::TextRole::view_title : viz::TextRole::label, frame_h);
   float bottom = 0;
   if (!v.title.empty()) {
     vp.title = viz::wrap_text(v.title, vp.title_px, static_cast<float>(vp.width) - 2 * pad);

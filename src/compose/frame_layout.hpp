@@ -26,6 +26,7 @@ struct ViewNeeds {
   int overlay_lines = 0;                           ///< lines under the title (the overlay)
   std::vector<viz::KeyEntry> key;                  ///< its key (none: no key strip)
   bool edge_to_edge = false;                       ///< content without side margins (a plot draws its own)
+  bool large_overlay = false;                      ///< overlay lines at the title's size (a comparison's readouts)
 };
 
 struct FrameNeeds {

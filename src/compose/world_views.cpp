@@ -16,7 +16,7 @@ namespace tumble::compose {
 
 namespace {
 
-constexpr float kGhostAlpha = 0.3f;  // the exact solution, faint, in the other methods' cells
+constexpr float kGhostAlpha = 0.45f;  // the exact solution, faint, in the other methods' cells
 
 viz::Color rgba(const Eigen::Vector3d& c, float a) {
   return {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()), a};

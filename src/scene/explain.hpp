@@ -74,8 +74,12 @@ struct ViewConfig {
   std::string title;                ///< drawn in the view's corner
   ViewCamera camera;
   bool energy_ellipsoid = true;     ///< momentum_sphere: the energy ellipsoid (when it fits)
+  bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
+  double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot, times this
+  int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range
+  bool y_log = false;               ///< plot: log10 of |value| (y_scale = "log"), for errors over decades
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")
 };

@@ -123,11 +123,27 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
                                 std::string* written = nullptr);
 
-// Keys only some kinds take: energy_ellipsoid (momentum_sphere), y_range (plot).
+// A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels.
+void read_sphere_options(TableReader& r, ViewConfig& v) {
+  for (std::string_view key : {"energy_ellipsoid", "path", "line_scale", "levels"})
+    if (r.has(key) && v.kind != ViewKind::momentum_sphere) r.error(key, "only a momentum_sphere view takes " + std::string(key));
+  if (v.kind != ViewKind::momentum_sphere) return;
+  v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
+  if (const auto path = r.string("path")) {
+    if (*path != "polhode" && *path != "trail") r.error("path", "expected \"polhode\" or \"trail\", found " + quote_token(*path));
+    v.path_trail = *path == "trail";
+  }
+  v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
+  v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
+}
+
+// Keys only some kinds take: the sphere's (above), y_scale and y_range (plot).
 void read_kind_options(TableReader& r, ViewConfig& v) {
-  if (r.has("energy_ellipsoid")) {
-    if (v.kind != ViewKind::momentum_sphere) r.error("energy_ellipsoid", "only a momentum_sphere view has an energy ellipsoid");
-    v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
+  read_sphere_options(r, v);
+  if (const auto scale = r.string("y_scale")) {
+    if (v.kind != ViewKind::plot) r.error("y_scale", "only a plot view has a y_scale");
+    else if (*scale == "log") v.y_log = true;
+    else if (*scale != "linear") r.error("y_scale", "expected \"linear\" or \"log\", found " + quote_token(*scale));
   }
   if (const toml::node* n = r.node("y_range")) {
     if (v.kind != ViewKind::plot) {
@@ -143,6 +159,7 @@ void read_kind_options(TableReader& r, ViewConfig& v) {
       r.error("y_range", "expected [low, high] in the series' units, found " + describe(*n));
     }
     if (lo && hi && !(*hi > *lo)) r.error("y_range", "expected low < high, found [" + format_number(*lo) + ", " + format_number(*hi) + "]");
+    else if (lo && v.y_log && !(*lo > 0)) r.error("y_range", "a log scale needs low > 0, found " + format_number(*lo));
     else if (lo && hi) v.y_range = std::array<double, 2>{*lo, *hi};
   }
 }
@@ -151,7 +168,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
-                  {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "appear", "key"});
+                  {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
+                   "key", "path", "line_scale", "levels"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -181,11 +199,16 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     v.key = r.boolean("key").value_or(true);
     if (v.kind != ViewKind::plot && r.has("series")) r.error("series", "only a plot view has series");
     const std::size_t body = v.body.empty() || !s.find_body(v.body) ? 0 : static_cast<std::size_t>(s.find_body(v.body) - s.bodies.data());
-    v.appear = read_time(r, "appear", s, body, &v.appear_text).value_or(0);
+    // A view that would appear past the run's end (a shorter --duration) never does.
+    v.appear = read_time(r, "appear", s, body, &v.appear_text).value_or(r.has("appear") ? 1e300 : 0);
     s.render.explain.views.push_back(std::move(v));
   }
-  if (!s.render.explain.views.empty() && !s.render.compare_methods.empty())
-    root.error("views", "[[views]] and [compare] do not combine; a comparison lays out its own grid");
+  // A comparison lays out its own grid of cells; plots of its runs may go beside it.
+  const bool only_plots = std::all_of(s.render.explain.views.begin(), s.render.explain.views.end(),
+                                      [](const ViewConfig& v) { return v.kind == ViewKind::plot && v.viewport; });
+  if (!s.render.compare_methods.empty() && !only_plots)
+    root.error("views", "with [compare], [[views]] may only add plots, each with its viewport; the comparison lays out "
+                        "its own grid of cells in the rest of the frame");
 }
 
 // The body named by `body` (checked), else the first.
@@ -198,15 +221,22 @@ std::size_t read_body_index(TableReader& r, const LoadContext& ctx, const Scene&
 }
 
 // `key` as simulated seconds or an event of body `body` (scene/events.hpp),
-// clamped to [0, duration]; `written` gets the text as the file has it.
+// clamped to [0, duration]; `written` gets the text as the file has it. A
+// time in seconds past the run's end (a shorter --duration, to preview the
+// start) is none, with a warning: what it places is left out (an end, the run's end).
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
                                 std::string* written) {
   const toml::node* n = r.node(key);
   if (!n) return std::nullopt;
   const double duration = s.simulation.duration;
   if (n->is_number()) {
-    auto v = read_number(*n, r.key_path(key), Range::closed(0, duration), r.diag());
+    auto v = read_number(*n, r.key_path(key), Range::non_negative(), r.diag());
     if (v && written) *written = format_number(*v);
+    if (v && *v > duration) {
+      r.diag().warning(n->source(), r.key_path(key), format_number(*v) + " s is past the run's end (" +
+                                                        format_number(duration) + " s): left out");
+      return std::nullopt;
+    }
     return v;
   }
   const auto* str = n->as_string();
@@ -234,7 +264,9 @@ void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body", "position"});
     Caption c;
     c.body = read_body_index(r, ctx, s);
-    c.start = read_time(r, "start", s, c.body, &c.start_text).value_or(0);
+    const auto start = read_time(r, "start", s, c.body, &c.start_text);
+    if (!start && r.has("start")) continue;  // said why: past the run's end, or an error
+    c.start = start.value_or(0);
     c.end = read_time(r, "end", s, c.body, &c.end_text).value_or(s.simulation.duration);
     if (c.end <= c.start && ctx.diag.ok())
       r.error("end", "expected end > start (simulated s); found start " + format_number(c.start) + " s, end " +
@@ -323,7 +355,7 @@ void read_explain_config(TableReader& root, LoadContext& ctx, Scene& s) {
   read_holds(root, ctx, s);
   read_title(root, ctx, s);
   auto& e = s.render.explain;
-  if (!e.views.empty()) {
+  if (!e.views.empty() && s.render.compare_methods.empty()) {
     // The axis legend belongs to the classic single view; [[views]] have keys.
     const toml::table* draw = root.subtable("draw");
     const toml::node* legend = draw ? draw->get("legend") : nullptr;

@@ -110,7 +110,15 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.angular_momentum = r.boolean("L").value_or(d.angular_momentum);
   d.omega = r.boolean("omega").value_or(d.omega);
   d.trail_seconds = r.number("trails", Range::closed(0, 1e4)).value_or(d.trail_seconds);
+  if (const auto axes = r.strings("trail_axes")) {
+    d.trail_axes = {false, false, false};
+    for (const std::string& a : *axes) {
+      if (a == "e1" || a == "e2" || a == "e3") d.trail_axes[static_cast<std::size_t>(a[1] - '1')] = true;
+      else r.error("trail_axes", "expected items from \"e1\", \"e2\", \"e3\", found " + quote_token(a));
+    }
+  }
   d.grid = r.boolean("grid").value_or(d.grid);
+  d.arrow_width = r.number("arrow_width", Range::closed(0.25, 4)).value_or(d.arrow_width);
   if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
     // A list of the overlay's items: only those are shown.
     d.overlay_items = {false, false, false, false};
@@ -175,8 +183,8 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   }
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
-                  {"box", "surface", "axes", "particles", "L", "omega", "trails", "grid", "overlay", "legend", "labels", "key",
-                   "flips"});
+                  {"box", "surface", "axes", "particles", "L", "omega", "trails", "trail_axes", "grid", "overlay", "legend", "labels", "key",
+                   "flips", "arrow_width"});
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {

@@ -2,6 +2,7 @@
 // (scene::DrawConfig, `[draw]`) and the command line fill them by name.
 #pragma once
 
+#include <array>
 #include <optional>
 
 namespace tumble::viz {
@@ -17,7 +18,9 @@ struct DrawOptions {
   bool angular_momentum = false;  ///< world L as an arrow
   bool omega = false;             ///< ω_world as an arrow
   double trail_seconds = 0;       ///< trails of the axis tips over the last N s (0 = off)
+  std::array<bool, 3> trail_axes = {true, true, true};  ///< which axes' tips leave a trail (e1, e2, e3)
   bool grid = false;
+  double arrow_width = 1;         ///< the arrows' (axes, L, ω) thickness, times their usual
 };
 
 }  // namespace tumble::viz

@@ -15,6 +15,7 @@ const char* swatch_glyphs(Swatch s) {
     case Swatch::line: return "\u2501";        // ━
     case Swatch::dot: return "\u25CF";         // ●
     case Swatch::block: return "\u25A0";       // ■
+    case Swatch::arrow: return "\u2192";       // →
   }
   return "?";
 }
@@ -43,14 +44,23 @@ KeyEntry key_entry(Meaning m, std::string text) {
   return {s, {color_of(m)}, std::move(text)};
 }
 
-std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pair<std::string, Color>>& bodies) {
+std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pair<std::string, Color>>& bodies,
+                                 bool arrows) {
   std::vector<KeyEntry> out;
   // The arrows carry their names at their tips; the key says what the names mean, briefly.
   const std::vector<Color> axes{kAxisColors[0], kAxisColors[1], kAxisColors[2]};
-  if (d.axes) out.push_back({Swatch::line, axes, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"});
-  if (d.axes && d.trail_seconds > 0) out.push_back({Swatch::line, axes, "trails of their tips"});
-  if (d.angular_momentum) out.push_back(key_entry(Meaning::L, "L: angular momentum (direction)"));
-  if (d.omega) out.push_back(key_entry(Meaning::omega, "\u03c9: angular velocity (direction)"));
+  const Swatch arrow = arrows ? Swatch::arrow : Swatch::line;
+  if (d.axes) out.push_back({arrow, axes, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"});
+  static const char* const kTrailOf[3] = {"trail of e\u2081's tip", "trail of e\u2082's tip", "trail of e\u2083's tip"};
+  std::vector<Color> trailed;  // the trails, drawn fading
+  for (std::size_t i = 0; i < 3; ++i)
+    if (d.trail_axes[i]) trailed.push_back(Color(glm::vec3(kAxisColors[i]), arrows ? 0.4f : kAxisColors[i].a));
+  if (d.axes && d.trail_seconds > 0 && !trailed.empty()) {
+    const auto one = std::find(d.trail_axes.begin(), d.trail_axes.end(), true) - d.trail_axes.begin();
+    out.push_back({Swatch::line, trailed, trailed.size() == 1 ? kTrailOf[one] : "trails of their tips"});
+  }
+  if (d.angular_momentum) out.push_back({arrow, {color_of(Meaning::L)}, "L: angular momentum (direction)"});
+  if (d.omega) out.push_back({arrow, {color_of(Meaning::omega)}, "\u03c9: angular velocity (direction)"});
   for (const auto& [name, color] : bodies) out.push_back({Swatch::block, {Color(glm::vec3(color), 1.0f)}, name});
   return out;
 }

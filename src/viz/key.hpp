@@ -12,8 +12,8 @@
 
 namespace tumble::viz {
 
-/// How an element looks in the key: a line (curves, arrows), a dot or a block (bodies).
-enum class Swatch { line, dot, block };
+/// How an element looks in the key: a line (curves, arrows), a dot, a block (bodies) or an arrow.
+enum class Swatch { line, dot, block, arrow };
 
 struct KeyEntry {
   Swatch swatch;
@@ -28,7 +28,10 @@ struct DrawOptions;
 
 /// The key of a view of bodies: the axes, L and ω as drawn (`d`), then each
 /// body by name in its colour.
-std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pair<std::string, Color>>& bodies);
+/// `arrows`: arrows (the axes, L, ω) keyed by arrows and the trails by faded
+/// lines, so the two never share a swatch (else both by lines, as before).
+std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pair<std::string, Color>>& bodies,
+                                 bool arrows = false);
 
 /// Size of the key's backdrop for `entries` at `size_px`, px.
 glm::vec2 key_size(const std::vector<KeyEntry>& entries, float size_px);

@@ -152,12 +152,12 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   };
   // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
   const double lo = L * L / I[2], hi = L * L / I[0];
-  constexpr int kLevels = 10;
-  for (int j = 1; j < kLevels; ++j) {
-    const double two_E = lo + (hi - lo) * j / kLevels;
+  const float w = in.line_scale;
+  for (int j = 1; j < in.levels; ++j) {
+    const double two_E = lo + (hi - lo) * j / in.levels;
     if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
     for (const auto& c : polhodes(I, L, two_E, 96)) {
-      view.polylines.push_back({scaled(c), color_of(Meaning::other_levels, 0.55f), 1.2f, false});
+      view.polylines.push_back({scaled(c), color_of(Meaning::other_levels, 0.55f), 1.2f * w, false});
       add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
     }
   }
@@ -166,17 +166,23 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
   // The body's own polhode, wide, then the separatrix dashed over it: where
   // the two run together both stay visible (magenta edges, sky-blue dashes).
-  const auto own = own_polhode(I, in.momentum, 192);
+  const auto own = in.trail ? std::vector<Eigen::Vector3d>{} : own_polhode(I, in.momentum, 192);
   if (!own.empty()) {
-    view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f, false, "polhode"});
+    view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
   }
   for (const auto& circle : separatrix(I, L, 192))
     for (auto& dash : dashed(scaled(circle), 0.07, 0.045))
-      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f, false, "separatrix"});
+      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f * w, false, "separatrix"});
+  // The path so far, a hair outside the sphere: over the dashes it runs beside.
+  if (in.trail && in.history.size() >= 2) {
+    PolylineItem path{scaled(in.history), color_of(Meaning::polhode), 4.5f * w, false, "polhode"};
+    for (glm::dvec3& x : path.points) x *= 1.006;
+    view.polylines.push_back(std::move(path));
+  }
   add_saddles(view);
   // Π now: a large dot standing out of the sphere, over every curve.
-  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.072, color_of(Meaning::momentum_point), "momentum_point"});
+  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.072 * w, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
 }
 

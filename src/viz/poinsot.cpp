@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "viz/captions.hpp"
 #include "viz/key.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/surfaces.hpp"
@@ -37,14 +38,12 @@ PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vecto
 }
 
 std::vector<KeyEntry> poinsot_key() {
-  // The axes, L and ω as every view of bodies names them (one entry each in a frame's key).
+  // The axes, L and ω as every view of bodies names them (one entry each in a
+  // frame's key); the plane and the two curves carry their names beside them.
   return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
           key_entry(Meaning::L, "L: angular momentum"),
           key_entry(Meaning::omega, "\u03c9: angular velocity"),
-          key_entry(Meaning::ellipsoid, "inertia ellipsoid, turns with the body"),
-          key_entry(Meaning::plane, "invariable plane, fixed"),
-          key_entry(Meaning::polhode, "polhode: \u03c9's tip on the ellipsoid"),
-          key_entry(Meaning::herpolhode, "herpolhode: \u03c9's tip on the plane")};
+          key_entry(Meaning::ellipsoid, "inertia ellipsoid, turns with the body")};
 }
 
 namespace {
@@ -132,6 +131,42 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
 }
 
+// A name beside the point `at` (settle_labels keeps it next to it, clear of other text).
+void add_direct_label(View& view, const ViewportProjection& project, const glm::dvec3& at, const char* text, Color color,
+                      float size, const char* name) {
+  glm::vec2 px;
+  if (!project(at, px)) return;
+  TextItem t{text, {centred_x(text, size, px.x), px.y - 0.5f * size}, size, color, name};
+  t.subject_px = {px.x - 4, px.y - 4, px.x + 4, px.y + 4};
+  view.texts.push_back(std::move(t));
+}
+
+// The polhode, the herpolhode and the plane named on the picture, not in a key:
+// each curve at its oldest point, the plane at a corner clear of the ellipsoid.
+void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
+  const ViewportProjection project(view.camera, in.width_px, in.height_px);
+  const float size = text_px(TextRole::label, in.frame_h);
+  if (in.omega_principal_history.size() >= 2)
+    add_direct_label(view, project, to_glm(in.q * in.omega_principal_history.front() * f.scale * 1.006), "polhode",
+                     color_of(Meaning::polhode), size, "label_polhode");
+  if (in.omega_world_history.size() >= 2)
+    add_direct_label(view, project, to_glm(in.omega_world_history.front() * f.scale - kHerpolhodeLift * f.p.normal),
+                     "herpolhode", color_of(Meaning::herpolhode), size, "label_herpolhode");
+  // The plane at the corner in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
+  glm::vec2 foot;
+  if (!project(to_glm(f.foot), foot)) return;
+  glm::dvec3 corner(0);
+  float farthest = -1;
+  for (double a : {-1.0, 1.0})
+    for (double b : {-1.0, 1.0}) {
+      const glm::dvec3 c = to_glm(f.foot + 1.2 * (a * f.u + b * f.v));
+      glm::vec2 px;
+      const bool shown = project(c, px) && px.x > 0 && px.x < in.width_px && px.y > 0 && px.y < in.height_px;
+      if (shown && glm::length(px - foot) > farthest) farthest = glm::length(px - foot), corner = c;
+    }
+  if (farthest >= 0) add_direct_label(view, project, corner, "invariable plane", color_of(Meaning::plane), size, "label_plane");
+}
+
 }  // namespace
 
 void build_poinsot(View& view, const PoinsotInput& in) {
@@ -143,6 +178,7 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   add_inertia_ellipsoid(view, f);
   add_invariable_plane(view, f);
   add_motion(view, f, in);
+  add_direct_labels(view, f, in);
 }
 
 }  // namespace tumble::viz

@@ -48,12 +48,13 @@ void TrailRecorder::record(double t, const std::vector<BodySnapshot>& bodies) {
   samples_.push_back(std::move(s));
 }
 
-std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds) const {
+std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds, std::array<bool, 3> axes) const {
   std::vector<PolylineItem> out;
   if (samples_.empty() || seconds <= 0) return out;
   const size_t nbodies = samples_.back().tips.size();
   for (size_t b = 0; b < nbodies; ++b)
     for (int i = 0; i < 3; ++i) {
+      if (!axes[static_cast<std::size_t>(i)]) continue;
       PolylineItem p{{}, kAxisColors[i], 2.0f};
       for (const Sample& s : samples_)
         if (s.t <= t + 1e-12 && s.t >= t - seconds - 1e-12 && b < s.tips.size()) p.points.push_back(s.tips[b][i]);
@@ -81,6 +82,7 @@ BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt) {
     const double grow = 0.01 * std::max(half.maxCoeff(), 1e-6);
     Color none = b.color;
     none.a = 0.0f;
+    edge.a = 0.35f;  // an outline recedes behind the surface it frames
     return {to_glm(s.c + s.q * centre), rotation_of(s.q), to_glm(half) + glm::dvec3(grow), none, edge};
   }
   // Around the particle spheres when they are drawn, so its edges and faces are not buried in them.
@@ -112,8 +114,8 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     static const char* const kAxisNames[3] = {"e\u2081", "e\u2082", "e\u2083"};
     if (opt.axes)
       for (int i = 0; i < 3; ++i)
-        view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * size, kAxisColors[i],
-                               std::string("e") + char('1' + i), kAxisNames[i], 2});
+        view.arrows.push_back({to_glm(s.c), axis_tip(m, s, i) - to_glm(s.c), 0.03 * opt.arrow_width * size,
+                               kAxisColors[i], std::string("e") + char('1' + i), kAxisNames[i], 2});
     const Eigen::Quaterniond qc = cloud_orientation(m, s);
     const glm::dmat4 model = cloud_to_world(s.c - qc * m.com_cloud, qc);
     if (has_surface(b, opt))
@@ -133,18 +135,18 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     // space: the line stays put while the body turns about it), ω past the axes.
     if (opt.angular_momentum && s.L.norm() > 0) {
       const glm::dvec3 l = to_glm(s.L.normalized());
-      view.arrows.push_back({to_glm(s.c) - kLBehind * size * l, (kLBehind + kLReach) * size * l, 0.025 * size, kLColor,
-                             "L", "L", 0});
+      view.arrows.push_back({to_glm(s.c) - kLBehind * size * l, (kLBehind + kLReach) * size * l,
+                             0.025 * opt.arrow_width * size, kLColor, "L", "L", 0});
     }
     if (opt.omega) {
       const Eigen::Vector3d w = omega_world(m, s);
       if (w.norm() > 0)
-        view.arrows.push_back({to_glm(s.c), to_glm(kOmegaReach * size * w.normalized()), 0.02 * size, kOmegaColor,
-                               "omega", "\u03c9", 1});
+        view.arrows.push_back({to_glm(s.c), to_glm(kOmegaReach * size * w.normalized()), 0.02 * opt.arrow_width * size,
+                               kOmegaColor, "omega", "\u03c9", 1});
     }
   }
   if (trails && opt.trail_seconds > 0)
-    for (PolylineItem& p : trails->polylines(t, opt.trail_seconds)) view.polylines.push_back(std::move(p));
+    for (PolylineItem& p : trails->polylines(t, opt.trail_seconds, opt.trail_axes)) view.polylines.push_back(std::move(p));
 }
 
 Camera auto_camera(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii, double fov_y_deg,

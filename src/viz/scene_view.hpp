@@ -48,7 +48,7 @@ class TrailRecorder {
  public:
   void record(double t, const std::vector<BodySnapshot>& bodies);
   /// Polylines of the last `seconds` before and including `t`.
-  std::vector<PolylineItem> polylines(double t, double seconds) const;
+  std::vector<PolylineItem> polylines(double t, double seconds, std::array<bool, 3> axes = {true, true, true}) const;
 
  private:
   struct Sample {

@@ -39,11 +39,12 @@ Head head_layout(const StripChartInput& in, int width_px, float font_px) {
   const float f = font_px, w = static_cast<float>(width_px);
   const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h) : f;
   h.key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h) : f;
-  for (const Series& s : in.series) h.key_w += text_width(s.name, h.key_px) + 1.2f * h.key_px;
+  if (!in.direct_labels)
+    for (const Series& s : in.series) h.key_w += text_width(s.name, h.key_px) + 1.2f * h.key_px;
   for (const std::string& b : band_names(in)) h.key_w += text_width(b, h.key_px) + 1.2f * h.key_px;
-  h.key_y = h.key_w + 2 * title_px < w ? 0.35f * title_px : 0.0f;
+  h.key_y = h.key_w > 0 && h.key_w + 2 * title_px < w ? 0.35f * title_px : 0.0f;
   // The plot starts below it, with room for the top value tick (half a tick above it).
-  h.top_px = h.key_y + 1.3f * h.key_px + 0.7f * f;
+  h.top_px = h.key_w > 0 ? h.key_y + 1.3f * h.key_px + 0.7f * f : 0.7f * f;
   return h;
 }
 
@@ -55,7 +56,10 @@ ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float
   // Margins in pixels turned into world units (half height = 1 world unit).
   const double px = 2.0 / std::max(height_px, 1);
   x0_ = -aspect_ + 5.5 * font_px * px;
-  x1_ = aspect_ - 1.2 * font_px * px;
+  double labels = 0;  // the widest head label and its gap, px
+  if (in.direct_labels)
+    for (const Series& s : in.series) labels = std::max(labels, double(text_width(s.name, font_px)) + 0.6 * font_px);
+  x1_ = aspect_ - std::max(1.2 * font_px, labels) * px;
   y0_ = -1 + 2.4 * font_px * px;
   y1_ = 1 - head_layout(in, width_px, static_cast<float>(font_px)).top_px * px;
 }
@@ -100,6 +104,9 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
   const double step = time_step(in.t1 - in.t0);
   for (double t = std::ceil(in.t0 / step + 1e-9) * step; t < in.t1 - 1e-9; t += step)
     line({m.at(t, in.lo), m.at(t, in.hi)}, {0.55f, 0.57f, 0.62f, 0.3f}, 1.0f, "");
+  if (in.log10)  // and at the decades
+    for (int d = static_cast<int>(std::ceil(in.lo - 1e-9)); d <= in.hi + 1e-9; ++d)
+      line({m.at(in.t0, d), m.at(in.t1, d)}, {0.55f, 0.57f, 0.62f, 0.3f}, 1.0f, "");
   for (const Series& s : in.series) {
     std::vector<glm::dvec3> pts;
     for (std::size_t i = 0; i < in.times.size() && i < s.values.size(); ++i)
@@ -107,6 +114,63 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
     if (pts.size() >= 2) line(std::move(pts), s.color, 3.0f, "series");
   }
   line({m.at(in.playhead, in.lo), m.at(in.playhead, in.hi)}, {0.2f, 0.2f, 0.25f, 0.8f}, 1.5f, "playhead");
+}
+
+// "10⁻⁸": a decade written as a power of ten.
+std::string decade(int d) {
+  static const char* const kSup[10] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                       "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string out = d < 0 ? "10\u207b" : "10";
+  const std::string digits = std::to_string(std::abs(d));
+  for (char c : digits) out += kSup[c - '0'];
+  return out;
+}
+
+// A log axis: its decades named on the left (at most about six, evenly
+// spaced, apart; add_chart_lines draws a faint gridline at each decade).
+void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  const int first = static_cast<int>(std::ceil(in.lo - 1e-9)), last = static_cast<int>(std::floor(in.hi + 1e-9));
+  // Every n-th decade, so that names keep a third of a line apart.
+  const float per_decade = std::abs(m.pixel(m.at(in.t0, 0)).y - m.pixel(m.at(in.t0, 1)).y);
+  const int step = std::max({1, (last - first + 5) / 6, static_cast<int>(std::ceil(1.35f * f / std::max(per_decade, 1e-3f)))});
+  for (int d = first; d <= last; ++d) {
+    if ((d - first) % step != 0) continue;
+    const float y = m.pixel(m.at(in.t0, d)).y;
+    view.texts.push_back({decade(d), {4.0f, y - 0.5f * f}, f, color_of(Meaning::ink), "tick"});
+  }
+}
+
+// Each curve named at its head (its last point drawn), in its colour; names
+// that would touch are pushed apart, keeping their order up the chart.
+void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  struct Head {
+    float y;
+    std::size_t series;
+    glm::vec2 at;
+  };
+  std::vector<Head> heads;
+  for (std::size_t i = 0; i < in.series.size(); ++i) {
+    const Series& s = in.series[i];
+    for (std::size_t j = std::min(in.times.size(), s.values.size()); j-- > 0;)
+      if (std::isfinite(s.values[j])) {
+        const glm::vec2 p = m.pixel(m.at(in.times[j], std::clamp(s.values[j], in.lo, in.hi)));
+        heads.push_back({p.y - 0.5f * f, i, p});
+        break;
+      }
+  }
+  std::sort(heads.begin(), heads.end(), [](const Head& a, const Head& b) { return a.y < b.y; });
+  // Inside the chart's height: clear of the title above and the time ticks below.
+  const float top = m.pixel(m.at(in.t0, in.hi)).y - 0.5f * f, bottom = m.pixel(m.at(in.t0, in.lo)).y - 1.2f * f;
+  for (std::size_t i = 0; i < heads.size(); ++i) {
+    heads[i].y = std::clamp(heads[i].y, top, bottom);
+    if (i > 0) heads[i].y = std::max(heads[i].y, heads[i - 1].y + 1.1f * f);
+  }
+  if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
+  for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
+  for (const Head& h : heads) {
+    const Series& s = in.series[h.series];
+    view.texts.push_back({s.name, {h.at.x + 0.4f * f, h.y}, f, s.color, "series_label"});
+  }
 }
 
 // Ticks (value range on the left, time range below), the series' key.
@@ -117,9 +181,13 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   };
   const glm::vec2 top_left = m.pixel(m.at(in.t0, in.hi)), bottom_left = m.pixel(m.at(in.t0, in.lo));
   const glm::vec2 bottom_right = m.pixel(m.at(in.t1, in.lo));
-  text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
-  text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
-  if (in.lo < 0 && in.hi > 0) {
+  if (in.log10) {
+    add_decade_ticks(view, in, m, f);
+  } else {
+    text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
+    text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
+  }
+  if (!in.log10 && in.lo < 0 && in.hi > 0) {
     const float y0 = m.pixel(m.at(in.t0, 0)).y - 0.5f * f;
     // Only where it clears the range's ends.
     if (y0 > top_left.y + 0.5f * f && y0 + f < bottom_left.y - 0.5f * f) text("0", {4.0f, y0}, ink);
@@ -137,7 +205,8 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
     if (x - half > left_end && x + half < right_end) text(label, {centred_x(label, f, x), bottom_left.y + 0.3f * f}, ink);
   }
   float x = w - head.key_w;
-  for (const Series& s : in.series) {
+  if (in.direct_labels) add_head_labels(view, in, m, f);
+  for (const Series& s : in.direct_labels ? std::vector<Series>{} : in.series) {
     TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};
     k.key = true;
     view.texts.push_back(std::move(k));

@@ -39,4 +39,30 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
   EXPECT_EQ(overlays, 2);  // the two world views (the poinsot views have none)
 }
 
+// A stop at a flip reads as a deliberate hold, named: "paused at flip 1", not a bare "paused".
+TEST(Badge, AHoldAtAFlipIsNamed) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov_explained.toml");
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k = 0;
+  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 1.7)) ++k;
+  ASSERT_TRUE(clock.in_hold(k));
+  long last = k;  // the hold's last frame: still named, however long the hold
+  while (last + 1 < clock.count() && clock.in_hold(last + 1)) ++last;
+  const auto runs = tumble::scene::simulate_runs(s, last + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 320, 240);
+  auto has = [](const tumble::viz::DrawList& dl, const std::string& text) {
+    for (const tumble::viz::TextItem& t : dl.texts)
+      if (t.text == text) return true;
+    return false;
+  };
+  EXPECT_TRUE(has(fb.build(k), "paused at flip 1"));
+  EXPECT_TRUE(has(fb.build(last), "paused at flip 1"));
+  // A hold elsewhere (the introduction) stays "paused".
+  long intro = 0;
+  while (intro + 1 < clock.count() && !(clock.in_hold(intro) && clock.time(intro) > 0.1)) ++intro;
+  EXPECT_TRUE(has(fb.build(intro), "paused"));
+}
+
 }  // namespace

@@ -5,6 +5,7 @@
 // a comparison grid share one camera. GL-free: plans and draw lists.
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -158,7 +159,7 @@ TEST(LayoutFill, WorldViewsComeCloseEnoughForTheBodiesToFillTheirContent) {
   // A comparison grid's automatic camera, every cell.
   const scene::Scene mc = shipped("methods_compare.toml");
   double widest = 0;
-  for (std::size_t i = 0; i < 4; ++i) widest = std::max(widest, fill(mc, i, 320, 240));
+  for (std::size_t i = 0; i < 4; ++i) widest = std::max(widest, fill(mc, i, 960, 540));  // one row above the plot
   EXPECT_GT(widest, 0.8);
   EXPECT_LE(widest, 1.0);
 }
@@ -172,6 +173,7 @@ TEST(LayoutFill, ComparisonCellsShareOneCamera) {
   const compose::FrameBuilder fb(s, runs, fps, 320, 240);
   const viz::DrawList dl = fb.build(count / 2);
   for (const viz::View& v : dl.views) {
+    if (v.name != "world") continue;  // the plot under the cells has a chart's camera
     EXPECT_EQ(v.camera.position, dl.views[0].camera.position);
     EXPECT_EQ(v.camera.target, dl.views[0].camera.target);
   }
@@ -186,7 +188,7 @@ TEST(LayoutFill, ComparisonCellsShowTheExactBodyFaintly) {
   ASSERT_EQ(runs.size(), 4u);
   const compose::FrameBuilder fb(s, runs, fps, 320, 240);
   const viz::DrawList dl = fb.build(count / 2);
-  ASSERT_EQ(dl.views.size(), 4u);
+  ASSERT_EQ(dl.views.size(), 5u);  // four cells, the plot
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const auto& sf = dl.views[r].surfaces;
     const auto ghosts = std::count_if(sf.begin(), sf.end(), [](const viz::SurfaceItem& x) { return x.name == "ghost"; });
@@ -261,3 +263,51 @@ TEST(LayoutFill, EveryCaptionBackdropLiesInsideTheCaptionStrip) {
     EXPECT_LE(views_span(p).second, p.captions.y0 + 1) << caption;
   }
 }
+
+namespace {
+
+TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour) {
+  const scene::Scene s = shipped("methods_compare.toml");
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  ASSERT_EQ(runs.size(), 4u);
+  const compose::FrameBuilder fb(s, runs, fps, 1920, 1080);
+  const FramePlan& p = fb.plan();
+  ASSERT_EQ(p.views.size(), 5u);
+  for (std::size_t r = 0; r < 4; ++r) {  // one row of cells, left to right, above the plot
+    EXPECT_EQ(p.views[r].y, p.views[0].y) << r;
+    if (r > 0) { EXPECT_GT(p.views[r].x, p.views[r - 1].x) << r; }
+    EXPECT_LE(p.views[r].y + p.views[r].height, p.views[4].y + 1) << r;
+  }
+  EXPECT_GE(p.views[4].width, 1900);
+  const viz::DrawList dl = fb.build(count - 1);
+  ASSERT_EQ(dl.views.size(), 5u);
+  std::map<std::string, viz::Color> cell_colour;  // each cell's title and readout share its method's colour
+  for (std::size_t r = 0; r < 4; ++r) {
+    const viz::TextItem* title = nullptr;
+    for (const viz::TextItem& t : dl.views[r].texts) {
+      if (t.name == "view_title") title = &t;
+      if (t.name == "overlay") {
+        ASSERT_NE(title, nullptr);
+        EXPECT_EQ(t.color, title->color) << runs[r].label;
+        EXPECT_GE(t.size_px, viz::text_px(viz::TextRole::view_title, 1080) - 1e-3f) << "a readout a hall can read";
+      }
+    }
+    ASSERT_NE(title, nullptr);
+    cell_colour[runs[r].label] = title->color;
+  }
+  EXPECT_NE(cell_colour["euler"], cell_colour["rk4"]);
+  EXPECT_NE(cell_colour["rk4"], cell_colour["splitting"]);
+  // The plot: a curve per stepping method, named at its head in its cell's colour; no curve for the exact solution.
+  std::vector<std::string> named;
+  for (const viz::TextItem& t : dl.views[4].texts)
+    if (t.name == "series_label") {
+      named.push_back(t.text);
+      EXPECT_EQ(t.color, cell_colour[t.text]) << t.text;
+    }
+  EXPECT_EQ(named.size(), 3u);
+  EXPECT_EQ(std::count(named.begin(), named.end(), "exact"), 0);
+}
+
+}  // namespace

@@ -154,6 +154,9 @@ y_range = [-10, 10]
 kind = "momentum_sphere"
 energy_ellipsoid = false
 key = false
+path = "trail"
+line_scale = 1.5
+levels = 6
 [[captions]]
 text = "Up here."
 position = "top"
@@ -167,6 +170,11 @@ position = "top"
   EXPECT_EQ((*v[1].y_range)[0], -10);
   EXPECT_FALSE(v[2].energy_ellipsoid);
   EXPECT_FALSE(v[2].key);
+  EXPECT_TRUE(v[2].path_trail);
+  EXPECT_EQ(v[2].line_scale, 1.5);
+  EXPECT_EQ(v[2].levels, 6);
+  EXPECT_FALSE(v[1].path_trail);
+  EXPECT_EQ(v[1].line_scale, 1);
   EXPECT_TRUE(v[1].key);
   EXPECT_EQ(s.render.explain.captions[0].position, CaptionPosition::top);
 }
@@ -176,11 +184,71 @@ TEST(StorySettings, MisplacedOrBadValuesAreErrorsAtTheirPlace) {
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ny_range = [2, 1]\n").find("story.toml:14:11: error: views[1].y_range: expected low < high"),
             std::string::npos);
   EXPECT_NE(error_of("energy_ellipsoid = false\n").find("only a momentum_sphere view"), std::string::npos);
+  EXPECT_NE(error_of("path = \"trail\"\n").find("only a momentum_sphere view takes path"), std::string::npos);
+  EXPECT_NE(error_of("line_scale = 2\n").find("only a momentum_sphere view takes line_scale"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npath = \"all\"\n").find("views[1].path: expected \"polhode\" or \"trail\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[draw]\ntrail_axes = [\"e4\"]\n").find("draw.trail_axes: expected items from"), std::string::npos);
   EXPECT_NE(error_of("camera = { target = [0, 0, 0] }\n").find("views[0].camera.position: missing"), std::string::npos);
   EXPECT_NE(error_of("[[captions]]\ntext = \"x\"\nposition = \"middle\"\n").find("story.toml:14:12: error: captions[0].position"),
             std::string::npos);
   EXPECT_NE(error_of("[draw]\nlegend = true\n").find("story.toml:13:10: error: draw.legend"), std::string::npos);
   EXPECT_FALSE(load("").render.draw.legend);  // not drawn over the views' keys
+}
+
+TEST(StorySettings, ALogScaleOnPlotsOnly) {
+  const Scene s = load("[[views]]\nkind = \"plot\"\nseries = [\"energy_error\"]\ny_scale = \"log\"\ny_range = [1e-10, 1.0]\n");
+  ASSERT_EQ(s.render.explain.views.size(), 2u);
+  EXPECT_TRUE(s.render.explain.views[1].y_log);
+  EXPECT_FALSE(load("[[views]]\nkind = \"plot\"\ny_scale = \"linear\"\n").render.explain.views[1].y_log);
+  EXPECT_NE(error_of("y_scale = \"log\"\n").find("story.toml:12:11: error: views[0].y_scale: only a plot view"), std::string::npos)
+      << error_of("y_scale = \"log\"\n");
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ny_scale = \"ln\"\n").find("expected \"linear\" or \"log\", found \"ln\""),
+            std::string::npos)
+      << error_of("[[views]]\nkind = \"plot\"\ny_scale = \"ln\"\n");
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ny_scale = \"log\"\ny_range = [0, 1]\n").find("a log scale needs low > 0"),
+            std::string::npos);
+}
+
+// The same T-handle as a [compare] of two methods, without views.
+std::string compare_scene(const std::string& extra) {
+  std::string base = kBase;
+  base.resize(base.find("[[views]]"));
+  return base + "[compare]\nmethods = [\"euler\", \"exact\"]\n[draw]\nlegend = true\n" + extra;
+}
+
+TEST(StorySettings, AComparisonTakesPlotViewsWithViewportsOnly) {
+  const Scene s = load_scene_from_string(
+      compare_scene("[[views]]\nkind = \"plot\"\nviewport = [0, 0.7, 1, 0.3]\nseries = [\"energy_error\"]\n"), "cmp.toml");
+  ASSERT_EQ(s.render.explain.views.size(), 1u);
+  EXPECT_EQ(s.render.compare_methods.size(), 2u);
+  EXPECT_TRUE(s.render.draw.legend);  // the cells' legend stays: the plot has its own key
+  for (const char* view : {"[[views]]\nkind = \"world\"\nviewport = [0, 0, 1, 0.5]\n", "[[views]]\nkind = \"plot\"\n"})
+    EXPECT_NE(scene_error(compare_scene(view), "cmp.toml").find("with [compare], [[views]] may only add plots, each with its viewport"),
+              std::string::npos)
+        << view;
+}
+
+TEST(StorySettings, TimesPastTheRunsEndLeaveOutWhatTheyStart) {
+  // As with --duration shorter than the scene's: the later text is left out, not an error.
+  const Scene s = load(R"(
+[[captions]]
+start = 0.5
+end = 9.0
+text = "Up to the end."
+[[captions]]
+start = 7.0
+text = "After the end."
+[[holds]]
+at = 6.5
+hold = 1.0
+)");
+  ASSERT_EQ(s.render.explain.captions.size(), 1u);
+  EXPECT_EQ(s.render.explain.captions[0].end, 6.0);
+  EXPECT_TRUE(s.render.explain.holds.empty());
+  EXPECT_EQ(count_with(s.warnings, "past the run's end (6 s): left out"), 3u);
+  EXPECT_EQ(count_with(s.warnings, "story.toml:18:9: warning: captions[1].start: 7 s is past"), 1u)
+      << (s.warnings.empty() ? "" : s.warnings[0]);
 }
 
 }  // namespace

@@ -116,11 +116,19 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   // The camera looks down on the plane from at least 30° above it.
   const glm::dvec3 eye = glm::normalize(v.camera.position - v.camera.target);
   EXPECT_GT(glm::dot(eye, -n), std::sin(30.0 * 3.14159265 / 180));
-  // Its key names every element (the plane's included); the layout draws it beside the view.
+  // Its key names the arrows and the ellipsoid (the layout draws it beside the
+  // view); the plane and the two curves are named on the picture, inside the view.
   const std::vector<KeyEntry> key = poinsot_key();
-  for (const std::string name : {"L:", "ω:", "polhode:", "herpolhode:", "invariable plane"})
+  for (const std::string name : {"L:", "ω:", "inertia ellipsoid"})
     EXPECT_TRUE(std::any_of(key.begin(), key.end(), [&](const KeyEntry& e) { return e.text.rfind(name, 0) == 0; }))
         << name;
+  EXPECT_EQ(key.size(), 4u);
+  for (const std::string name : {"polhode", "herpolhode", "invariable plane"}) {
+    const auto t = std::find_if(v.texts.begin(), v.texts.end(), [&](const TextItem& x) { return x.text == name; });
+    ASSERT_NE(t, v.texts.end()) << name;
+    EXPECT_GT(t->subject_px.z, t->subject_px.x) << name;  // kept beside what it names
+    EXPECT_TRUE(t->subject_px.x >= 0 && t->subject_px.z <= 640 && t->subject_px.y >= 0 && t->subject_px.w <= 360) << name;
+  }
 }
 
 TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
@@ -307,6 +315,78 @@ TEST(StripChart, SlowedStretchesAreShadedBandsWithTheirSpeed) {
   bool label = false;
   for (const TextItem& t : v.texts) label = label || (t.key && t.text.find("×1/8 slow motion") != std::string::npos);
   EXPECT_TRUE(label);
+}
+
+}  // namespace
+}  // namespace tumble::viz
+
+namespace tumble::viz {
+namespace {
+
+TEST(StripChart, ALogAxisIsTickedAtItsDecades) {
+  StripChartInput in;
+  in.times = {0, 1, 2};
+  in.series = {{"euler", {-3.0, -2.0, -1.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 4, in.lo = -10, in.hi = 1, in.playhead = 2;
+  in.log10 = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  const ChartMap m(in, 600, 200, 12.0f);
+  std::vector<std::string> ticks;
+  for (const TextItem& t : v.texts)
+    if (t.name == "tick" && t.position_px.x < 10) {
+      ticks.push_back(t.text);
+      if (t.text == "10\u207b\u2074") { EXPECT_NEAR(t.position_px.y + 6.0f, m.pixel(m.at(0, -4)).y, 1e-3); }
+    }
+  // Eleven decades, every second named: 10⁻¹⁰ … 10⁰, no linear end values.
+  EXPECT_EQ(ticks, (std::vector<std::string>{"10\u207b\u00b9\u2070", "10\u207b\u2078", "10\u207b\u2076", "10\u207b\u2074",
+                                             "10\u207b\u00b2", "10\u2070"}));
+}
+
+TEST(StripChart, DirectLabelsNameEachCurveAtItsHeadApart) {
+  StripChartInput in;
+  in.times = {0, 1, 2};
+  // Two heads a hair apart and one far below; the third stopped a sample early.
+  in.series = {{"euler", {-1.0, -0.5, 0.0}, {1, 0, 0, 1}},
+               {"rk4", {-1.0, -0.5, -0.01}, {0, 1, 0, 1}},
+               {"splitting", {-8.0, -9.0, std::nan("")}, {0, 0, 1, 1}}};
+  in.t0 = 0, in.t1 = 2, in.lo = -10, in.hi = 1, in.playhead = 2;
+  in.direct_labels = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  const ChartMap m(in, 600, 200, 12.0f);
+  std::vector<const TextItem*> labels;
+  for (const TextItem& t : v.texts) {
+    EXPECT_NE(t.name, "key") << "no key row: the curves are named where they are";
+    if (t.name == "series_label") labels.push_back(&t);
+  }
+  ASSERT_EQ(labels.size(), 3u);
+  for (const TextItem* t : labels) {
+    const std::size_t i = t->text == "euler" ? 0 : t->text == "rk4" ? 1 : 2;
+    EXPECT_EQ(t->color, in.series[i].color) << t->text;
+    const glm::vec2 head = m.pixel(m.at(i == 2 ? 1 : 2, in.series[i].values[i == 2 ? 1 : 2]));
+    EXPECT_GT(t->position_px.x, head.x) << t->text;                                   // just right of its head
+    EXPECT_LT(t->position_px.x + text_width(t->text, 12.0f), 600.0f) << t->text;      // inside the view
+    EXPECT_NEAR(t->position_px.y + 6.0f, head.y, i == 2 ? 1e-3 : 13.2) << t->text;   // at its height, or pushed apart
+  }
+  EXPECT_GE(std::abs(labels[0]->position_px.y - labels[1]->position_px.y), 1.1f * 12.0f - 1e-3f);
+}
+
+TEST(Keys, ArrowsAndTrailsNeverShareASwatch) {
+  DrawOptions d;
+  d.angular_momentum = d.omega = true;
+  d.trail_seconds = 1;
+  const std::vector<KeyEntry> plain = bodies_key(d, {}), arrows = bodies_key(d, {}, true);
+  ASSERT_EQ(arrows.size(), 4u);
+  EXPECT_TRUE(same_entry(plain[0], KeyEntry{Swatch::line, plain[0].colors, plain[0].text}));  // as before
+  EXPECT_EQ(arrows[0].swatch, Swatch::arrow);  // e₁ e₂ e₃
+  EXPECT_EQ(arrows[1].swatch, Swatch::line);   // their trails, faded
+  for (const Color& c : arrows[1].colors) EXPECT_LT(c.a, 0.5f);
+  EXPECT_EQ(arrows[2].swatch, Swatch::arrow);  // L
+  EXPECT_EQ(arrows[3].swatch, Swatch::arrow);  // ω
+  View v;
+  add_key(v, arrows, {0, 0}, 12.0f);
+  EXPECT_EQ(v.texts[0].text, "\u2192");
 }
 
 }  // namespace

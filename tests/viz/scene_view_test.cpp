@@ -99,6 +99,10 @@ TEST(SceneView, TrailsKeepOnlyTheWindow) {
   const auto lines = rec.polylines(1.0, 0.35);
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0].points.size(), 4u);  // t = 0.7, 0.8, 0.9, 1.0
+  // Only the chosen axes' tips (the T-handle's stem, e2) leave a trail.
+  const auto stem = rec.polylines(1.0, 0.35, {false, true, false});
+  ASSERT_EQ(stem.size(), 1u);
+  EXPECT_EQ(stem[0].color, kAxisColors[1]);
 }
 
 TEST(SceneView, AutoCameraSeesEverything) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "viz/momentum_sphere.hpp"
@@ -131,6 +132,49 @@ TEST(SphereFigure, EnergyEllipsoidHasItsOwnColourAndCanBeTurnedOff) {
   build_momentum_sphere(off, in);
   EXPECT_TRUE(off.surfaces.empty());
   for (const KeyEntry& e : sphere_key(in)) EXPECT_EQ(e.text.find("energy ellipsoid"), std::string::npos);
+}
+
+// A lesson's sphere: Π's path so far (history) instead of its whole polhode,
+// thicker curves, a larger Π dot and fewer other levels, each when asked.
+TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  in.energy_ellipsoid = false;
+  View plain;
+  build_momentum_sphere(plain, in);
+  in.trail = true, in.line_scale = 2, in.levels = 4;
+  in.history = {pi, Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()) * pi, Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ()) * pi};
+  View lesson;
+  build_momentum_sphere(lesson, in);
+  auto named = [](const View& v, const std::string& name) {
+    std::vector<const PolylineItem*> out;
+    for (const PolylineItem& p : v.polylines)
+      if (p.name == name) out.push_back(&p);
+    return out;
+  };
+  // The whole polhode (closed, many points) becomes the history's three points, a hair outside the sphere.
+  ASSERT_FALSE(named(plain, "polhode").empty());
+  EXPECT_GT(named(plain, "polhode")[0]->points.size(), 50u);
+  const auto path = named(lesson, "polhode");
+  ASSERT_EQ(path.size(), 1u);
+  ASSERT_EQ(path[0]->points.size(), 3u);
+  EXPECT_NEAR(glm::length(path[0]->points[0]), 1.006, 1e-9);
+  EXPECT_FLOAT_EQ(named(lesson, "separatrix")[0]->width_px, 2 * named(plain, "separatrix")[0]->width_px);
+  auto dot = [](const View& v) {
+    for (const PointItem& p : v.points)
+      if (p.name == "momentum_point") return p.radius;
+    return 0.0;
+  };
+  EXPECT_DOUBLE_EQ(dot(lesson), 2 * dot(plain));
+  // Other levels: unnamed grey curves behind the ball's front (fewer with fewer levels).
+  auto grey = [](const View& v) {
+    int n = 0;
+    for (const PolylineItem& p : v.polylines) n += p.name.empty() && glm::vec3(p.color) == glm::vec3(color_of(Meaning::other_levels));
+    return n;
+  };
+  EXPECT_LT(grey(lesson), grey(plain));
+  EXPECT_GT(grey(lesson), 0);
 }
 
 }  // namespace

@@ -19,10 +19,15 @@ std::unique_ptr<Panel> make_plot(const PanelContext& ctx, std::size_t index);
 std::unique_ptr<Panel> make_poinsot(const PanelContext& ctx, std::size_t index);
 
 /// The key of a view of bodies: axes, L and ω as drawn, then each body (or `only` that one) by name.
-std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only);
+/// `arrows`: arrows keyed by arrow swatches, trails by faded lines (viz::bodies_key).
+std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only, bool arrows = false);
 
 /// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).
 double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0);
+
+/// A method's colour in a comparison (its cell's title and readout, its plot
+/// curve): none of the axes', L's or ω's; ink for the exact solution and others.
+viz::Color run_color(const scene::Run& run);
 
 /// The index of the body `[[views]]` table `index` names (the first when it names none).
 std::size_t view_body(const PanelContext& ctx, std::size_t index);

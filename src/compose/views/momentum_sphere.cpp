@@ -68,8 +68,9 @@ class SpherePanel : public Panel {
     viz::MomentumSphereInput in = input(kk);
     const scene::Run& run = ctx_.runs[0];
     const double now = run.path_t[run.path_end(kk) - 1];
+    const double since = in.trail ? -1e300 : now - kPiTailSeconds;  // a trail: from t = 0
     for (std::size_t j = 0; j < run.path_end(kk); ++j)
-      if (run.path_t[j] >= now - kPiTailSeconds) in.history.push_back(momentum_body(run.path[j][body_]));
+      if (run.path_t[j] >= since) in.history.push_back(momentum_body(run.path[j][body_]));
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
     viz::build_momentum_sphere(v, in);
     return v;
@@ -88,7 +89,11 @@ class SpherePanel : public Panel {
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     in.fit_radius = kFitRadius;
-    in.energy_ellipsoid = ctx_.scene.render.explain.views[index_].energy_ellipsoid;
+    const scene::ViewConfig& view = ctx_.scene.render.explain.views[index_];
+    in.energy_ellipsoid = view.energy_ellipsoid;
+    in.trail = view.path_trail;
+    in.line_scale = static_cast<float>(view.line_scale);
+    in.levels = view.levels;
     return in;
   }
 

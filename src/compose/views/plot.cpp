@@ -55,47 +55,56 @@ const SeriesLook& series_look(const std::string& name) {
   return unknown;  // the scene loader lets no other name through
 }
 
+// A plot of one body's run, or in a [compare] scene of every stepping run
+// (the exact solution has no error to plot), one curve per run and series.
 class PlotPanel : public Panel {
  public:
   PlotPanel(const PanelContext& ctx, std::size_t index)
       : ctx_(ctx), vc_(ctx.scene.render.explain.views[index]), body_(view_body(ctx, index)) {
-    if (ctx.runs.empty()) return;
+    const bool compare = !ctx.scene.render.compare_methods.empty();
+    for (std::size_t r = 0; r < ctx.runs.size() && (compare || r == 0); ++r)
+      if (!compare || ctx.runs[r].label != "exact") runs_.push_back(r);
     double lo = 1e300, hi = -1e300;
-    const scene::Run& run = ctx.runs[0];
-    const RigidBodyModel& m = ctx.scene.bodies[body_].model;
-    for (const auto& states : run.frames)
-      for (const std::string& name : vc_.series) {
-        const double v = series_value(name, m, states[body_], run.energy0[body_]);
-        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-      }
+    for (std::size_t r : runs_)
+      for (const auto& states : ctx.runs[r].frames)
+        for (const std::string& name : vc_.series) {
+          const double v = value(name, r, states);
+          if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+        }
     if (!(hi >= lo)) lo = -1, hi = 1;
     const double pad = 0.08 * std::max(hi - lo, 1e-12 + 1e-9 * std::abs(hi));
     lo_ = lo - pad, hi_ = hi + pad;
     if (vc_.y_range) lo_ = (*vc_.y_range)[0], hi_ = (*vc_.y_range)[1];  // the scene's own value axis
+    if (vc_.y_range && vc_.y_log) lo_ = std::log10(lo_), hi_ = std::log10(hi_);
   }
   std::string name() const override { return "plot"; }
   void fit(glm::vec2 size) override { size_ = size; }
 
   viz::View content(long k) const override {
     viz::View v;
-    if (ctx_.runs.empty()) return v;
-    const scene::Run& run = ctx_.runs[0];
+    if (runs_.empty()) return v;
     const scene::FrameClock& clock = ctx_.world.clock();
-    const long kk = last_frame(run, k);
-    const RigidBodyModel& m = ctx_.scene.bodies[body_].model;
     viz::StripChartInput in;
     in.t0 = 0, in.t1 = ctx_.scene.simulation.duration, in.lo = lo_, in.hi = hi_;
     in.playhead = clock.time(k);
+    in.log10 = vc_.y_log;
+    in.direct_labels = ctx_.runs.size() > 1;
     for (const scene::SlowMotion& sm : ctx_.scene.render.explain.slow_motion)
       in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.frame_h = ctx_.frame_h;
-    for (long j = 0; j <= kk; ++j) in.times.push_back(clock.time(j));
-    for (const std::string& name : vc_.series) {
-      const SeriesLook& look = series_look(name);
-      viz::Series series{look.shown, {}, look.color};
-      for (long j = 0; j <= kk; ++j)
-        series.values.push_back(series_value(name, m, run.frames[static_cast<std::size_t>(j)][body_], run.energy0[body_]));
-      in.series.push_back(std::move(series));
+    for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
+    for (std::size_t r : runs_) {
+      const scene::Run& run = ctx_.runs[r];
+      const long kk = last_frame(run, k);
+      for (const std::string& name : vc_.series) {
+        const SeriesLook& look = series_look(name);
+        viz::Series series{look.shown, {}, look.color};
+        if (ctx_.runs.size() > 1)  // one curve per method, in its colour
+          series = {vc_.series.size() > 1 ? run.label + " " + look.shown : run.label, {}, run_color(run)};
+        for (long j = 0; j <= k; ++j)
+          series.values.push_back(j <= kk ? value(name, r, run.frames[static_cast<std::size_t>(j)]) : std::nan(""));
+        in.series.push_back(std::move(series));
+      }
     }
     viz::build_strip_chart(v, in, int(size_.x), int(size_.y), viz::text_px(viz::TextRole::tick, ctx_.frame_h));
     return v;
@@ -105,8 +114,16 @@ class PlotPanel : public Panel {
   const PanelContext& ctx_;
   const scene::ViewConfig& vc_;
   std::size_t body_;
+  std::vector<std::size_t> runs_;  // the runs plotted
   double lo_ = -1, hi_ = 1;
   glm::vec2 size_{1, 1};
+
+  // A series' value at a frame of run r; on a log scale log10 |value| (none at 0).
+  double value(const std::string& name, std::size_t r, const std::vector<BodyState>& states) const {
+    const double v = series_value(name, ctx_.scene.bodies[body_].model, states[body_], ctx_.runs[r].energy0[body_]);
+    if (!vc_.y_log) return v;
+    return std::abs(v) > 0 ? std::log10(std::abs(v)) : std::nan("");
+  }
 };
 
 }  // namespace

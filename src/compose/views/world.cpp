@@ -8,6 +8,7 @@
 #include "compose/camera_fit.hpp"
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
+#include "viz/palette.hpp"
 #include "viz/text_layout.hpp"
 
 namespace tumble::compose {
@@ -44,7 +45,7 @@ class WorldPanel : public Panel {
     }
     // The cells of a [compare] grid share one camera, fitted to every run, so
     // the methods' bodies are drawn at one scale side by side.
-    const bool grid = ctx_.scene.render.explain.views.empty() && ctx_.runs.size() > 1;
+    const bool grid = !ctx_.scene.render.compare_methods.empty() && ctx_.runs.size() > 1 && run_ < ctx_.runs.size();
     std::vector<Shot> shots;
     const long n = ctx_.world.clock().count();
     for (std::size_t r = 0; r < ctx_.runs.size(); ++r) {
@@ -114,7 +115,7 @@ class WorldPanel : public Panel {
 
 }  // namespace
 
-std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only) {
+std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only, bool arrows) {
   std::vector<std::pair<std::string, viz::Color>> bodies;
   // A body is named beside it (labels), or by the view's title: the key names bodies only when neither does.
   const bool named = ctx.scene.render.explain.labels || only || ctx.scene.bodies.size() == 1;
@@ -124,7 +125,16 @@ std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std
     bodies.emplace_back(ctx.scene.bodies[i].label.empty() ? ctx.scene.bodies[i].name : ctx.scene.bodies[i].label,
                         viz::Color(c.x(), c.y(), c.z(), 1.0f));  // the display name
   }
-  return viz::bodies_key(ctx.world.draw(), bodies);
+  return viz::bodies_key(ctx.world.draw(), bodies, arrows);
+}
+
+viz::Color run_color(const scene::Run& run) {
+  // Crimson, ochre and violet: apart from the axes' vermillion, green and blue, L's black and each other.
+  static const std::pair<const char*, viz::Color> kColors[] = {
+      {"euler", {0.80f, 0.08f, 0.22f, 1}}, {"rk4", {0.72f, 0.50f, 0.0f, 1}}, {"splitting", {0.50f, 0.22f, 0.72f, 1}}};
+  for (const auto& [label, color] : kColors)
+    if (run.label == label) return color;
+  return viz::color_of(viz::Meaning::ink);
 }
 
 std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index) {
