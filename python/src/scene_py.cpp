@@ -188,7 +188,7 @@ void add_output(py::module_& m) {
   key_property<OutputView, long long>(c, "msaa", "output.msaa", [out](const OutputView& v) { return out(v).msaa; }, "0, 2 or 4");
   key_property<OutputView, std::string>(c, "video", "output.video", [out](const OutputView& v) {
     return std::string(scene::video_format_name(out(v).video));
-  }, "'mp4', 'gif' or 'none'");
+  }, scene::video_format_choices('\'').c_str());
   c.def("__repr__", [out](const OutputView& v) {
     const scene::OutputConfig& o = out(v);
     return py::str("OutputConfig(width={!r}, height={!r}, fps={!r}, aa={!r}, msaa={!r}, video={!r})")

@@ -34,7 +34,7 @@ void add_assemble_command(CLI::App& app, Action& action) {
                                     "Check that the shards of a render (tumble render --frames A:B) cover every "
                                     "frame, then write manifest.json and the video", run_assemble);
   cmd->add_option("dir", o->dir, "The output folder the shards rendered into")->required()->check(kPath);
-  cmd->add_option("--video", o->video, "mp4, gif or none (default: the video the shards were rendered for)");
+  cmd->add_option("--video", o->video, scene::video_format_choices() + " (default: the video the shards were rendered for)");
   cmd->add_option("--progress", o->progress, "auto (a bar on a terminal) or none");
 }
 

@@ -156,7 +156,7 @@ void add_render_command(CLI::App& app, Action& action) {
   cmd->add_option("-o,--out", o->out_dir, "Output folder (default out/<scene name>)")->check(kPath);
   add_frame_override_options(cmd, o->frame, true);
   cmd->add_option("--frames", o->frames, "Render only frames A:B (inclusive); pixels equal a full run's");
-  cmd->add_option("--video", o->video, "mp4, gif or none (default: the scene's [output] video)");
+  cmd->add_option("--video", o->video, scene::video_format_choices() + " (default: the scene's [output] video)");
   cmd->add_option("--frames-out", o->frames_out,
                   "png (default: frame files, then the video from them) or none (frames piped to ffmpeg as raw "
                   "RGB, only the video is written; an interrupted run keeps nothing)");

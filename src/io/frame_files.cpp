@@ -16,4 +16,11 @@ bool is_frame_file(const std::string& name) {
          std::all_of(name.begin() + 6, name.begin() + 12, [](char c) { return c >= '0' && c <= '9'; });
 }
 
+std::optional<long> frame_index(const std::string& name) {
+  if (!is_frame_file(name)) return std::nullopt;
+  long k = 0;
+  for (auto c = name.begin() + 6; c != name.begin() + 12; ++c) k = 10 * k + (*c - '0');
+  return k;
+}
+
 }  // namespace tumble::io

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace tumble::io {
@@ -15,5 +16,8 @@ std::filesystem::path frame_path(const std::filesystem::path& dir, long k);
 
 /// Whether `name` (a file name, no folder) is a frame file.
 bool is_frame_file(const std::string& name);
+
+/// k of a frame file's name "frame_<k, six digits>.png" (no folder); nothing for any other name.
+std::optional<long> frame_index(const std::string& name);
 
 }  // namespace tumble::io

@@ -100,9 +100,10 @@ class Renderer::Impl {
   long queued_index_[2] = {-1, -1};  // frame numbers of the overlapped reads, oldest first
 };
 
-Renderer::Renderer(GlContext& context, int width, int height, int msaa, bool fxaa,
+Renderer::Renderer(GlContext& context, int width, int height, scene::Antialias aa, int msaa,
                    const std::filesystem::path& resource_dir)
-    : impl_(std::make_unique<Impl>(context, width, height, msaa, fxaa, resource_dir)) {}
+    : impl_(std::make_unique<Impl>(context, width, height, aa == scene::Antialias::msaa ? msaa : 0,
+                                   aa == scene::Antialias::fxaa, resource_dir)) {}
 
 Renderer::~Renderer() = default;
 

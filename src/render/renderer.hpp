@@ -11,6 +11,7 @@
 #include "render/gl_context.hpp"
 #include "io/image.hpp"
 #include "render/resource_dir.hpp"
+#include "scene/frame_settings.hpp"
 #include "viz/draw_list.hpp"
 
 namespace tumble::render {
@@ -35,13 +36,14 @@ GpuPaths parse_gpu_paths(std::string_view text, bool hardware_gpu);
 
 class Renderer {
  public:
-  /// `context` must outlive the renderer. `msaa` is 0 (off), 2 or 4 (clamped
-  /// to GL_MAX_SAMPLES); `fxaa` adds FXAA on the read-back frame and smooth
-  /// lines (text is left as drawn, already anti-aliased). Shaders come from
+  /// `context` must outlive the renderer. `aa` is the frame settings'
+  /// anti-aliasing: msaa with `msaa` samples (2 or 4, clamped to
+  /// GL_MAX_SAMPLES; 0 is none), fxaa (FXAA on the read-back frame and smooth
+  /// lines; text is left as drawn, already anti-aliased) or none. Shaders come from
   /// `resource_dir`/shaders, the font from `resource_dir`/fonts or the system
   /// DejaVu. Throws std::runtime_error on missing resources, shader errors or
   /// an incomplete framebuffer.
-  Renderer(GlContext& context, int width, int height, int msaa = 4, bool fxaa = false,
+  Renderer(GlContext& context, int width, int height, scene::Antialias aa = scene::Antialias::msaa, int msaa = 4,
            const std::filesystem::path& resource_dir = find_resource_dir());
   ~Renderer();
   Renderer(const Renderer&) = delete;

@@ -1,7 +1,6 @@
 #include "run/assemble.hpp"
 
 #include <cmath>
-#include <cstdlib>
 
 #include "core/error.hpp"
 #include "core/format.hpp"
@@ -117,7 +116,7 @@ Outcome assemble(const fs::path& dir, std::optional<scene::VideoFormat> video, L
   const long count = ref.frame_count;
   // An earlier, longer render's frames past the end are not part of this one.
   for (const fs::path& f : list_dir(dir, io::is_frame_file))
-    if (std::atol(f.filename().string().c_str() + 6) >= count) remove_file(f);
+    if (*io::frame_index(f.filename().string()) >= count) remove_file(f);
 
   io::Json man = ref.json;
   man["frames"] = {0, count - 1};

@@ -23,7 +23,7 @@ SceneFrames::SceneFrames(const scene::Scene& s, long last_needed)
 std::vector<io::Image> SceneFrames::render(render::GlContext& ctx, const std::vector<long>& ks,
                                            const scene::FrameSettings& f, int* samples_used) const {
   const compose::FrameBuilder builder(scene_, runs_, fps_, f.width, f.height);
-  render::Renderer renderer(ctx, f.width, f.height, f.samples(), f.fxaa());
+  render::Renderer renderer(ctx, f.width, f.height, f.aa, f.msaa);
   if (samples_used) *samples_used = renderer.samples();
   std::vector<io::Image> out;
   for (long k : ks) {

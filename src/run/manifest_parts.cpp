@@ -56,7 +56,7 @@ Part read_part(const std::filesystem::path& path) {
       p.written < 0 || p.written > p.last - p.first + 1)
     p.bad_field = "frames, frame_count or frames_written out of range";
   else if (!scene::parse_video_format(p.video_format))
-    p.bad_field = "video_format '" + p.video_format + "' is not none, mp4 or gif";
+    p.bad_field = "video_format '" + p.video_format + "' is not " + scene::video_format_choices();
   else if (p.crf < 0 || p.crf > 51)
     p.bad_field = "crf " + std::to_string(p.crf) + " is not in 0..51";
   else if (!(p.fps >= 1e-3 && p.fps <= 1000))

@@ -139,7 +139,7 @@ void open_folder(Job& j) {
   // A shard removes only its own: the others' in-flight temp files look the same.
   for (const fs::path& t : list_dir(j.req.dir, is_stale_temp)) {
     const std::string target(io::temp_target_name(t.filename().string()));
-    const long k = io::is_frame_file(target) ? std::atol(target.c_str() + 6) : -1;
+    const long k = io::frame_index(target).value_or(-1);
     if (!j.shard || target == j.own || (k >= j.first && k <= j.last)) remove_file(t);
   }
 }
@@ -164,7 +164,7 @@ void describe(Job& j, const std::vector<scene::Run>& runs, const render::GlConte
   man.gl_vendor = ctx.vendor();
   man.gl_device = ctx.display();
   man.hardware_gpu = ctx.hardware_gpu();
-  if (s.render.output.video == scene::VideoFormat::mp4) man.video_encoder = encoder.codec + " " + encoder.preset;
+  if (scene::video_format(s.render.output.video).h264) man.video_encoder = encoder.codec + " " + encoder.preset;
   man.frames_out = j.req.stream ? "none" : "png";
 }
 
@@ -336,8 +336,8 @@ Outcome render_scene(const RenderRequest& r, Listener& l) {
   } catch (const std::invalid_argument& e) {  // --gpu / TUMBLE_EGL_DEVICE past the last device
     throw InputError(e.what());
   }
-  render::Renderer renderer(*ctx, out.width, out.height, out.samples(), out.fxaa());
-  const VideoEncoder encoder = out.video == scene::VideoFormat::mp4
+  render::Renderer renderer(*ctx, out.width, out.height, out.aa, out.msaa);
+  const VideoEncoder encoder = scene::video_format(out.video).h264
                                    ? choose_video_encoder(ctx->vendor(), render::usable_cores())
                                    : VideoEncoder{};
   describe(j, runs, *ctx, renderer.samples(), encoder);

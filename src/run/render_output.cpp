@@ -37,15 +37,21 @@ std::optional<std::string> string_field(const io::Json& j, const char* key) {
   if (it == j.end() || !it->is_string()) return std::nullopt;
   return it->get<std::string>();
 }
+
+/// A name ending in a video format's suffix ("x.mp4", "x.gif").
+bool is_video_name(const std::string& name) {
+  const auto ends = [&](std::string_view e) {
+    return name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
+  };
+  const auto formats = scene::video_formats();
+  return std::any_of(formats.begin(), formats.end(), [&](const auto& f) { return !f.suffix.empty() && ends(f.suffix); });
+}
 }  // namespace
 
 bool is_stale_temp(const std::string& name) {
   const std::string_view target = io::temp_target_name(name);
-  const auto ends_with = [&](std::string_view ext) {
-    return target.size() > ext.size() && target.substr(target.size() - ext.size()) == ext;
-  };
   return io::is_frame_file(std::string(target)) || target == "manifest.json" ||
-         is_part_manifest(std::string(target)) || ends_with(".mp4") || ends_with(".gif");
+         is_part_manifest(std::string(target)) || is_video_name(std::string(target));
 }
 
 std::vector<fs::path> list_dir(const fs::path& dir, bool (*pred)(const std::string&)) {
@@ -74,13 +80,6 @@ std::string settings_hash(const scene::Scene& s, const std::string& method) {
 }
 
 namespace {
-
-bool is_video_name(const std::string& name) {
-  const auto ends = [&](std::string_view e) {
-    return name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
-  };
-  return ends(".mp4") || ends(".gif");
-}
 
 /// The manifest's scene is this one's file: the same path (after resolving
 /// links and ..) or the same scene name.
@@ -176,7 +175,7 @@ void remove_stale(const fs::path& dir, const Existing& ex, const std::string& se
     else if (p.file != own) remove_file(dir / p.file);
   }
   for (const fs::path& f : list_dir(dir, io::is_frame_file)) {
-    const long k = std::atol(f.filename().string().c_str() + 6);
+    const long k = *io::frame_index(f.filename().string());
     if (std::none_of(keep.begin(), keep.end(), [k](const auto& r) { return k >= r.first && k <= r.second; }))
       remove_file(f);
   }
@@ -197,7 +196,7 @@ std::string video_file_name(const std::string& scene_name, scene::VideoFormat f)
   // The loader restricts names to [A-Za-z0-9_.-]; still, never leave the folder.
   std::string base = scene_name;
   if (base.empty() || fs::path(base).filename() != base || base == "." || base == "..") base = "video";
-  return base + "." + std::string(scene::video_format_name(f));
+  return base + std::string(scene::video_format(f).suffix);
 }
 
 std::string video_file_name(const scene::Scene& s, scene::VideoFormat f) { return video_file_name(s.name, f); }

@@ -57,7 +57,7 @@ void draw_tiles(const StoryboardRequest& r, render::GlContext& ctx, const compos
                 const compose::SheetPlan& plan, const std::vector<compose::StoryTile>& tiles, io::Image& sheet,
                 Listener& l) {
   const scene::OutputConfig& out = r.scene.render.output;
-  render::Renderer renderer(ctx, out.width, out.height, out.samples(), out.fxaa());
+  render::Renderer renderer(ctx, out.width, out.height, out.aa, out.msaa);
   compose::LayoutNotes notes;
   l.begin(static_cast<long>(tiles.size()), "drawing " + std::to_string(tiles.size()) + " frames");
   for (std::size_t i = 0; i < tiles.size(); ++i) {
@@ -109,13 +109,13 @@ StoryboardSummary write_storyboard(const StoryboardRequest& r, Listener& l) {
   io::Image sheet = io::filled(plan.width, plan.height, 247, 247, 250);
   draw_tiles(r, *ctx, builder, plan, m.tiles, sheet, l);
   {  // the labels, then the header: text drawn by the same renderer as the frames' text
-    render::Renderer labels(*ctx, plan.tile_w, plan.label_h, 0, false);
+    render::Renderer labels(*ctx, plan.tile_w, plan.label_h, scene::Antialias::none);
     for (std::size_t i = 0; i < texts.size(); ++i) {
       const glm::ivec2 at = plan.tile_at(i);
       io::paste(sheet, labels.render(compose::tile_label(plan, texts[i])), at.x, at.y + plan.tile_h);
     }
   }
-  render::Renderer header(*ctx, plan.width, plan.header_h, 0, false);
+  render::Renderer header(*ctx, plan.width, plan.header_h, scene::Antialias::none);
   io::paste(sheet, header.render(compose::sheet_header(plan, title)), 0, 0);
   io::write_png_atomic(r.out, sheet);
   return m;

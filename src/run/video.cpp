@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
@@ -124,7 +125,7 @@ std::string verify_video(const std::filesystem::path& video, long frames, int fp
   if (field("codec_type") != "video") return "no video stream";
   const long n = std::atol(field("nb_read_frames").c_str());
   // GIF merges identical consecutive frames: fewer is fine there, never more.
-  if (format == VideoFormat::mp4 ? n != frames : (n < 1 || n > frames))
+  if (scene::video_format(format).every_frame ? n != frames : (n < 1 || n > frames))
     return std::to_string(n) + " frames, expected " + std::to_string(frames);
   const double d = std::atof(field("duration").c_str()), want = static_cast<double>(frames) / fps;
   if (!(std::abs(d - want) <= 0.1 * want + 2.0 / fps))
@@ -175,10 +176,10 @@ std::string refused_target(const std::filesystem::path& video) {
 
 std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp,
                                             const VideoEncoder& encoder) {
-  if (format == VideoFormat::mp4) {
-    // yuv420p needs even sizes; +faststart puts the index first for streaming.
-    std::vector<std::string> args = {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", encoder.codec, "-pix_fmt",
-                                     "yuv420p"};
+  const scene::VideoFormatRow& row = scene::video_format(format);
+  std::vector<std::string> args = {"-vf", std::string(row.filter)};
+  if (row.h264) {
+    args.insert(args.end(), {"-c:v", encoder.codec, "-pix_fmt", "yuv420p"});
     if (encoder.codec == "h264_nvenc") {
       // NVENC's constant-quality mode at the CRF's number: not the same
       // scale as x264's CRF, close at 18 (unmeasured here: no NVIDIA GPU).
@@ -188,13 +189,11 @@ std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const s
       args.insert(args.end(), {"-crf", std::to_string(crf), "-threads", std::to_string(encoder.threads)});
     }
     if (!encoder.preset.empty()) args.insert(args.end(), {"-preset", encoder.preset});
-    for (const char* a : {"-fflags", "+bitexact", "-flags:v", "+bitexact", "-movflags", "+faststart", "-f", "mp4"})
-      args.emplace_back(a);
-    args.push_back(tmp.string());
-    return args;
   }
-  return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-fflags",
-          "+bitexact", "-f", "gif", tmp.string()};
+  std::istringstream flags{std::string(row.flags)};
+  for (std::string a; flags >> a;) args.push_back(a);
+  args.insert(args.end(), {"-f", std::string(row.name), tmp.string()});
+  return args;
 }
 
 VideoResult encode_video(const std::filesystem::path& frame_dir, int fps, VideoFormat format, int crf,

@@ -38,15 +38,16 @@ VideoEncoder default_video_encoder();
 /// can open it (a 16-frame trial encode), else x264_encoder(cores) (usable cores, not --jobs).
 VideoEncoder choose_video_encoder(const std::string& gl_vendor, int cores);
 
-/// ffmpeg's output options for `format` into `tmp`: H.264 yuv420p at CRF
-/// `crf`, +faststart, padded to even sizes; GIF by palettegen/paletteuse. The
-/// temp name has no video extension, so the container is named (-f).
-/// Bit-exact (no encoder version in the file): the same frames give the same bytes.
+/// ffmpeg's output options for `format` into `tmp`, from its row
+/// (scene::video_format): its filter (mp4: padded to even sizes; GIF:
+/// palettegen/paletteuse), H.264 yuv420p at CRF `crf` by `encoder` where the
+/// row says h264, its flags (bit-exact: the same frames give the same bytes).
+/// The temp name has no video extension, so the container is named (-f).
 std::vector<std::string> ffmpeg_output_args(VideoFormat format, int crf, const std::filesystem::path& tmp,
                                             const VideoEncoder& encoder = default_video_encoder());
 
-/// "" when `video` holds a video stream of `frames` frames (GIF: 1..frames,
-/// it merges repeats) lasting about frames / fps, as ffprobe counts them;
+/// "" when `video` holds a video stream of `frames` frames (a row not
+/// `every_frame`, GIF: 1..frames, it merges repeats) lasting about frames / fps, as ffprobe counts them;
 /// else what is wrong.
 std::string verify_video(const std::filesystem::path& video, long frames, int fps, VideoFormat format);
 /// Why `video` may not be written (io::check_output_target: an input of this

@@ -13,8 +13,14 @@ struct Name {
 };
 
 constexpr Name<Antialias> kAntialias[] = {{Antialias::fxaa, "fxaa"}, {Antialias::msaa, "msaa"}, {Antialias::none, "none"}};
-constexpr Name<VideoFormat> kVideoFormats[] = {
-    {VideoFormat::mp4, "mp4"}, {VideoFormat::gif, "gif"}, {VideoFormat::none, "none"}};
+// yuv420p needs even sizes; +faststart puts the index first for streaming.
+// +bitexact (no encoder version in the file): the same frames give the same bytes.
+constexpr VideoFormatRow kVideoFormats[] = {
+    {.value = VideoFormat::mp4, .name = "mp4", .suffix = ".mp4", .every_frame = true, .h264 = true,
+     .filter = "pad=ceil(iw/2)*2:ceil(ih/2)*2", .flags = "-fflags +bitexact -flags:v +bitexact -movflags +faststart"},
+    {.value = VideoFormat::gif, .name = "gif", .suffix = ".gif", .every_frame = false, .h264 = false,
+     .filter = "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", .flags = "-fflags +bitexact"},
+    {.value = VideoFormat::none, .name = "none", .suffix = "", .every_frame = false, .h264 = false, .filter = "", .flags = ""}};
 
 /// --quality: the MSAA cap (0: no anti-aliasing) and the CRF of each level.
 struct QualityRow {
@@ -90,6 +96,10 @@ void FrameSettings::apply_quality(Quality q, bool keep_aa) {
 
 std::string_view antialias_name(Antialias a) { return name_of(kAntialias, a); }
 std::string_view video_format_name(VideoFormat f) { return name_of(kVideoFormats, f); }
+std::span<const VideoFormatRow> video_formats() { return kVideoFormats; }
+const VideoFormatRow& video_format(VideoFormat f) {
+  return *std::find_if(std::begin(kVideoFormats), std::end(kVideoFormats), [&](const VideoFormatRow& r) { return r.value == f; });
+}
 std::string_view quality_name(Quality q) { return name_of(kQualities, q); }
 std::optional<Antialias> parse_antialias(std::string_view s) { return parse_name(kAntialias, s); }
 std::optional<VideoFormat> parse_video_format(std::string_view s) { return parse_name(kVideoFormats, s); }

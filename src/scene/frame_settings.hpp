@@ -5,12 +5,25 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
 namespace tumble::scene {
 
 enum class VideoFormat { mp4, gif, none };
+
+/// Everything tumble knows of a video format, in one row: the reader, the
+/// pipeline (file name, ffmpeg, ffprobe's check) and the manifest read it.
+struct VideoFormatRow {
+  VideoFormat value;
+  std::string_view name;    ///< scene key `video`, --video, the manifest's video_format; ffmpeg's muxer (-f)
+  std::string_view suffix;  ///< of the video file, "<scene name>.mp4"; "" for none
+  bool every_frame;         ///< ffprobe must count every frame (GIF merges repeats: 1..frames)
+  bool h264;                ///< encoded by the H.264 encoder (run::VideoEncoder: codec, CRF, preset)
+  std::string_view filter;  ///< ffmpeg's -vf
+  std::string_view flags;   ///< ffmpeg's output options after the encoder's, before -f (space-separated)
+};
 
 /// How frame edges are anti-aliased: FXAA (a post pass, one sample a pixel,
 /// smooth lines), MSAA with `FrameSettings::msaa` samples, or not at all.
@@ -44,6 +57,8 @@ struct FrameSettings {
 /// The name tables: every spelling of these settings comes from here.
 std::string_view antialias_name(Antialias a);  ///< "fxaa", "msaa", "none"
 std::string_view video_format_name(VideoFormat f);  ///< "mp4", "gif", "none"
+std::span<const VideoFormatRow> video_formats();     ///< one row per format, mp4 first
+const VideoFormatRow& video_format(VideoFormat f);
 std::string_view quality_name(Quality q);  ///< "low", "medium", "high"
 std::optional<Antialias> parse_antialias(std::string_view s);
 std::optional<VideoFormat> parse_video_format(std::string_view s);

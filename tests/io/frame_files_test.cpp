@@ -23,5 +23,16 @@ TEST(FrameFiles, OtherNamesAreNotFrames) {
     EXPECT_FALSE(is_frame_file(n)) << n;
 }
 
+TEST(FrameFiles, IndexIsReadBackFromTheName) {
+  for (long k : {0L, 7L, 120L, 999999L}) EXPECT_EQ(frame_index(frame_path("d", k).filename().string()), k) << k;
+  EXPECT_EQ(frame_index("frame_000042.png"), 42);
+}
+
+TEST(FrameFiles, IndexOfOtherNamesIsNothing) {
+  for (const char* n : {"frame_00001.png", "frame_0000001.png", "frame_00000a.png", "frame_-00001.png",
+                        "frame_000001.png.tmp-1", "frame_000001.jpg", "xframe_00001.png", "manifest.json", ""})
+    EXPECT_EQ(frame_index(n), std::nullopt) << n;
+}
+
 }  // namespace
 }  // namespace tumble::io

@@ -35,7 +35,8 @@ int soft_pixels(const io::Image& img) {
 
 TEST_F(AntialiasTest, FxaaAndMsaaBothSoftenWhatAliasedDrawsHard) {
   const viz::DrawList dl = test::axis_arrows();
-  Renderer none(*context_, 160, 120, 0, false), fxaa(*context_, 160, 120, 0, true), msaa(*context_, 160, 120, 4, false);
+  Renderer none(*context_, 160, 120, scene::Antialias::none), fxaa(*context_, 160, 120, scene::Antialias::fxaa),
+      msaa(*context_, 160, 120, scene::Antialias::msaa, 4);
   EXPECT_FALSE(none.fxaa());
   EXPECT_TRUE(fxaa.fxaa());
   EXPECT_EQ(fxaa.samples(), 0);
@@ -53,7 +54,7 @@ TEST_F(AntialiasTest, FxaaLeavesTextAsDrawn) {
   viz::DrawList dl;
   dl.background = {0.97f, 0.97f, 0.98f, 1.0f};
   dl.texts.push_back({"Illegible 1il|", {8.0f, 8.0f}, 14.0f, {0.1f, 0.1f, 0.1f, 1.0f}});
-  Renderer none(*context_, 160, 40, 0, false), fxaa(*context_, 160, 40, 0, true);
+  Renderer none(*context_, 160, 40, scene::Antialias::none), fxaa(*context_, 160, 40, scene::Antialias::fxaa);
   const io::Image a = none.render(dl), f = fxaa.render(dl);
   EXPECT_TRUE(a.rgb == f.rgb) << "FXAA changed the text";
   int dark = 0;

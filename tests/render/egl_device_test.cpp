@@ -41,12 +41,12 @@ TEST_F(EglDeviceTest, DeviceZeroDrawsWhatSurfacelessDraws) {
   EXPECT_FALSE(device_->renderer().empty());
   io::Image on_device, reference;
   {
-    Renderer r(*device_, 160, 120, 0, true);
+    Renderer r(*device_, 160, 120, scene::Antialias::fxaa);
     on_device = r.render(test::showcase());
   }
   // Automatic: surfaceless here, or device 0 itself where that is missing.
   const std::unique_ptr<GlContext> other = create_egl_context(std::nullopt);
-  Renderer r(*other, 160, 120, 0, true);
+  Renderer r(*other, 160, 120, scene::Antialias::fxaa);
   reference = r.render(test::showcase());
   ASSERT_EQ(on_device.rgb.size(), reference.rgb.size());
   if (device_->renderer() == other->renderer()) {

@@ -31,7 +31,7 @@ viz::DrawList frame(int k) {
 }
 
 TEST_F(GpuPathsTest, OverlappedReadbackGivesRenderBytesInOrder) {
-  Renderer plain(*context_, 200, 150, 0, true), overlapped(*context_, 200, 150, 0, true);
+  Renderer plain(*context_, 200, 150, scene::Antialias::fxaa), overlapped(*context_, 200, 150, scene::Antialias::fxaa);
   plain.set_gpu_paths({});
   overlapped.set_gpu_paths({true, false});
   std::vector<io::Image> expected, got(4);
@@ -63,7 +63,7 @@ TEST_F(GpuPathsTest, OverlappedReadbackGivesRenderBytesInOrder) {
 }
 
 TEST_F(GpuPathsTest, WithoutOverlapEachFrameComesBackAtOnce) {
-  Renderer r(*context_, 64, 48, 0, false);
+  Renderer r(*context_, 64, 48, scene::Antialias::none);
   r.set_gpu_paths({});
   RawFrame raw;
   ASSERT_TRUE(r.render_overlapped(frame(0), 7, raw));
@@ -87,7 +87,8 @@ std::pair<long, int> differing(const io::Image& a, const io::Image& b) {
 
 TEST_F(GpuPathsTest, GlFxaaMatchesCpuFxaaWithinGoldenTolerance) {
   constexpr int kW = 320, kH = 240;
-  Renderer cpu(*context_, kW, kH, 0, true), gpu(*context_, kW, kH, 0, true), none(*context_, kW, kH, 0, false);
+  Renderer cpu(*context_, kW, kH, scene::Antialias::fxaa), gpu(*context_, kW, kH, scene::Antialias::fxaa),
+      none(*context_, kW, kH, scene::Antialias::none);
   cpu.set_gpu_paths({});
   gpu.set_gpu_paths({false, true});
   const viz::DrawList dl = test::showcase();

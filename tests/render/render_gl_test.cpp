@@ -29,6 +29,7 @@ struct Case {
   GlBackend backend;
   int msaa;
   bool fxaa = false;
+  scene::Antialias aa() const { return fxaa ? scene::Antialias::fxaa : msaa ? scene::Antialias::msaa : scene::Antialias::none; }
 };
 
 std::string case_name(const testing::TestParamInfo<Case>& info) {
@@ -69,7 +70,7 @@ TEST_P(RenderTest, ReportsCoreContext) {
 
 TEST_P(RenderTest, AxisArrowsLandWhereProjected) {
   constexpr int kW = 160, kH = 120;
-  Renderer renderer(*context_, kW, kH, GetParam().msaa, GetParam().fxaa);
+  Renderer renderer(*context_, kW, kH, GetParam().aa(), GetParam().msaa);
   const viz::DrawList dl = test::axis_arrows();
   const Image img = renderer.render(dl);
   ASSERT_EQ(img.width, kW);
@@ -107,7 +108,7 @@ TEST_P(RenderTest, AxisArrowsLandWhereProjected) {
 }
 
 TEST_P(RenderTest, SameDrawListGivesIdenticalBytes) {
-  Renderer renderer(*context_, 320, 240, GetParam().msaa, GetParam().fxaa);
+  Renderer renderer(*context_, 320, 240, GetParam().aa(), GetParam().msaa);
   const viz::DrawList dl = test::showcase();
   const Image a = renderer.render(dl);
   const Image b = renderer.render(dl);
@@ -116,7 +117,7 @@ TEST_P(RenderTest, SameDrawListGivesIdenticalBytes) {
 }
 
 TEST_P(RenderTest, EmptyDrawListIsBackground) {
-  Renderer renderer(*context_, 64, 48, GetParam().msaa, GetParam().fxaa);
+  Renderer renderer(*context_, 64, 48, GetParam().aa(), GetParam().msaa);
   viz::DrawList dl;
   dl.background = {0.2f, 0.4f, 0.6f, 1.0f};
   const Image img = renderer.render(dl);
@@ -131,7 +132,7 @@ TEST_P(RenderTest, EmptyDrawListIsBackground) {
 // one by one in world coordinates: culling leaves no holes.
 TEST_P(RenderTest, CulledParticleSetLooksLikeTheWholeCloud) {
   constexpr int kW = 240, kH = 180;
-  Renderer renderer(*context_, kW, kH, GetParam().msaa, GetParam().fxaa);
+  Renderer renderer(*context_, kW, kH, GetParam().aa(), GetParam().msaa);
   const ParticleCloud cloud = make_box({0.8, 0.6, 0.5}, {16, 12, 10}, 1.0);  // spacing 0.05 m
   const float r = 0.0375f;  // 0.75 spacing: no gaps between neighbours to see deeper ones through
   std::vector<viz::Color> colors;
@@ -171,7 +172,7 @@ TEST_P(RenderTest, CulledParticleSetLooksLikeTheWholeCloud) {
 
 // Timing guard and a full-size frame for eyeballing (TUMBLE_RENDER_TEST_OUT).
 TEST_P(RenderTest, Showcase720pTiming) {
-  Renderer renderer(*context_, 1280, 720, GetParam().msaa, GetParam().fxaa);
+  Renderer renderer(*context_, 1280, 720, GetParam().aa(), GetParam().msaa);
   const viz::DrawList dl = test::showcase();
   Image img = renderer.render(dl);  // warm-up: shader JIT, buffer allocation
   constexpr int kFrames = 5;

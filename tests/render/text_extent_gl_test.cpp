@@ -50,7 +50,7 @@ viz::Box drawn_ink(Renderer& r, const viz::TextItem& t) {
 TEST(TextExtent, LayoutBoxIsTheDrawnInkWithinOnePixel) {
   auto context = context_or_skip();
   if (!context) GTEST_SKIP() << "no GL context";
-  Renderer renderer(*context, kW, kH, 0, false);
+  Renderer renderer(*context, kW, kH, scene::Antialias::none);
   const char* texts[] = {"Why a spinning T-handle flips", "\u03c9\u2081 \u2248 I\u2082 \u00d7 \u00bd", "e\u2081",
                          "Ljqy| (AVAW)", "t =   1.23 s   |dE/E| < 1e-13", "\u03a0: L in body axes"};
   // The text roles' sizes (viz::text_px) at 360p, 540p, 720p and 1080p, and the title at 1080p.
@@ -70,7 +70,7 @@ TEST(TextExtent, LayoutBoxIsTheDrawnInkWithinOnePixel) {
 TEST(TextExtent, CentredTextIsCentred) {
   auto context = context_or_skip();
   if (!context) GTEST_SKIP() << "no GL context";
-  Renderer renderer(*context, kW, kH, 0, false);
+  Renderer renderer(*context, kW, kH, scene::Antialias::none);
   for (const float size : {9.0f, 24.5f, 75.6f}) {
     const std::string text = "Why a spinning T-handle flips";
     const viz::TextItem t{text, {viz::centred_x(text, size, 0.5f * kW), 20.0f}, size, {0, 0, 0, 1}, "title"};

@@ -247,10 +247,10 @@ RenderBenchResult run_render_bench(const std::filesystem::path& scene_path, long
   for (const auto& f : std::filesystem::directory_iterator(out_dir))
     if (io::is_frame_file(f.path().filename().string())) std::filesystem::remove(f.path());
   auto ctx = render::create_gl_context(render::default_gl_backend());
-  render::Renderer high(*ctx, kW, kH, 0, true);  // --quality high: FXAA
-  render::Renderer msaa(*ctx, kW, kH, 4, false);
+  render::Renderer high(*ctx, kW, kH, scene::Antialias::fxaa);  // --quality high: FXAA
+  render::Renderer msaa(*ctx, kW, kH, scene::Antialias::msaa, 4);
   // The GPU paths the default leaves off (on llvmpipe: both), measured too.
-  render::Renderer other(*ctx, kW, kH, 0, true);
+  render::Renderer other(*ctx, kW, kH, scene::Antialias::fxaa);
   const render::GpuPaths chosen = high.gpu_paths();
   other.set_gpu_paths({!chosen.overlapped_readback, !chosen.gl_fxaa});
 
