@@ -157,7 +157,10 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
   if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
     const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box: extent along e\u2081 e\u2082 e\u2083"});
+    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)},
+                   "principal box: the body's extent along e\u2081 e\u2082 e\u2083"});
+    // With the box drawn, the axes' unequal lengths need a word: each reaches just past the box's face.
+    if (draw.axes && !key.empty()) key.front().text += ", each drawn just past the box";
   }
   return key;
 }
@@ -196,8 +199,13 @@ std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) con
   std::vector<std::pair<std::size_t, float>> out;
   const auto& captions = scene_.render.explain.captions;
   for (std::size_t i = 0; i < captions.size(); ++i) {
-    // Up from the first frame showing `start` to the last showing `end` (through a hold there).
-    const float a = viz::fade_alpha(tau, clock.video_time(captions[i].start), clock.video_time_last(captions[i].end));
+    // Up from the first frame showing `start` to the last showing `end` (through a hold there); a caption
+    // up to the run's end does not fade out, so the video's last frame still says what it shows.
+    const double start = clock.video_time(captions[i].start);
+    const bool to_end = captions[i].end >= scene_.simulation.duration;
+    const double last = clock.video_time_last(captions[i].end);
+    const double end = to_end ? last + 1e6 : last;
+    const float a = viz::fade_alpha(tau, start, end);
     if (a > 0) out.emplace_back(i, a);
   }
   return out;

@@ -130,9 +130,10 @@ std::string decade(int d) {
 // spaced, apart; add_chart_lines draws a faint gridline at each decade).
 void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   const int first = static_cast<int>(std::ceil(in.lo - 1e-9)), last = static_cast<int>(std::floor(in.hi + 1e-9));
-  // Every n-th decade, so that names keep a third of a line apart.
+  // Every n-th decade, so that names keep a tenth of a line apart (a value
+  // read off the axis needs names close together more than it needs air).
   const float per_decade = std::abs(m.pixel(m.at(in.t0, 0)).y - m.pixel(m.at(in.t0, 1)).y);
-  const int step = std::max({1, (last - first + 5) / 6, static_cast<int>(std::ceil(1.35f * f / std::max(per_decade, 1e-3f)))});
+  const int step = std::max({1, (last - first + 5) / 6, static_cast<int>(std::ceil(1.1f * f / std::max(per_decade, 1e-3f)))});
   for (int d = first; d <= last; ++d) {
     if ((d - first) % step != 0) continue;
     const float y = m.pixel(m.at(in.t0, d)).y;
@@ -141,24 +142,32 @@ void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, 
 }
 
 // Each curve named at its head (its last point drawn), in its colour; names
-// that would touch are pushed apart, keeping their order up the chart.
+// that would touch are pushed apart. They stack in the order of each curve's
+// highest value so far, not of its head, so that a curve dipping under
+// another for a moment (a signed error crossing zero on a log scale) does not
+// make the two names swap places.
 void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   struct Head {
     float y;
     std::size_t series;
     glm::vec2 at;
+    double highest;
   };
   std::vector<Head> heads;
   for (std::size_t i = 0; i < in.series.size(); ++i) {
     const Series& s = in.series[i];
-    for (std::size_t j = std::min(in.times.size(), s.values.size()); j-- > 0;)
+    const std::size_t n = std::min(in.times.size(), s.values.size());
+    double highest = -1e300;
+    for (std::size_t j = 0; j < n; ++j)
+      if (std::isfinite(s.values[j])) highest = std::max(highest, std::min(s.values[j], in.hi));
+    for (std::size_t j = n; j-- > 0;)
       if (std::isfinite(s.values[j])) {
         const glm::vec2 p = m.pixel(m.at(in.times[j], std::clamp(s.values[j], in.lo, in.hi)));
-        heads.push_back({p.y - 0.5f * f, i, p});
+        heads.push_back({p.y - 0.5f * f, i, p, highest});
         break;
       }
   }
-  std::sort(heads.begin(), heads.end(), [](const Head& a, const Head& b) { return a.y < b.y; });
+  std::stable_sort(heads.begin(), heads.end(), [](const Head& a, const Head& b) { return a.highest > b.highest; });
   // Inside the chart's height: clear of the title above and the time ticks below.
   const float top = m.pixel(m.at(in.t0, in.hi)).y - 0.5f * f, bottom = m.pixel(m.at(in.t0, in.lo)).y - 1.2f * f;
   for (std::size_t i = 0; i < heads.size(); ++i) {

@@ -297,10 +297,12 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
     }
     ASSERT_NE(title, nullptr);
     cell_colour[runs[r].label] = title->color;
+    cell_colour[runs[r].title.substr(0, runs[r].title.find(','))] = title->color;  // as the plot names it
   }
   EXPECT_NE(cell_colour["euler"], cell_colour["rk4"]);
   EXPECT_NE(cell_colour["rk4"], cell_colour["splitting"]);
-  // The plot: a curve per stepping method, named at its head in its cell's colour; no curve for the exact solution.
+  // The plot: a curve per stepping method, named at its head as its cell names it and in its colour; no curve for
+  // the exact solution.
   std::vector<std::string> named;
   for (const viz::TextItem& t : dl.views[4].texts)
     if (t.name == "series_label") {
@@ -309,6 +311,8 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
     }
   EXPECT_EQ(named.size(), 3u);
   EXPECT_EQ(std::count(named.begin(), named.end(), "exact"), 0);
+  EXPECT_EQ(std::count(named.begin(), named.end(), "explicit Euler"), 1);
+  EXPECT_EQ(std::count(named.begin(), named.end(), "RK4"), 1);
 }
 
 }  // namespace

@@ -372,6 +372,21 @@ TEST(StripChart, DirectLabelsNameEachCurveAtItsHeadApart) {
   EXPECT_GE(std::abs(labels[0]->position_px.y - labels[1]->position_px.y), 1.1f * 12.0f - 1e-3f);
 }
 
+TEST(StripChart, DirectLabelsKeepTheirOrderWhenACurveDipsForAMoment) {
+  StripChartInput in;
+  in.times = {0, 1, 2, 3};
+  // "splitting" lies above "rk4" but dips far under it at its head (a zero crossing of a signed error).
+  in.series = {{"rk4", {-9.0, -8.5, -8.2, -8.0}, {0, 1, 0, 1}}, {"splitting", {-6.0, -4.0, -5.0, -10.0}, {0, 0, 1, 1}}};
+  in.t0 = 0, in.t1 = 3, in.lo = -12, in.hi = 1, in.playhead = 3;
+  in.direct_labels = true;
+  View v;
+  build_strip_chart(v, in, 600, 300, 12.0f);
+  float rk4_y = 0, splitting_y = 0;
+  for (const TextItem& t : v.texts)
+    if (t.name == "series_label") (t.text == "rk4" ? rk4_y : splitting_y) = t.position_px.y;
+  EXPECT_LT(splitting_y + 1.1f * 12.0f - 1e-3f, rk4_y + 1e-3f) << "the higher curve's name stays above";
+}
+
 TEST(Keys, ArrowsAndTrailsNeverShareASwatch) {
   DrawOptions d;
   d.angular_momentum = d.omega = true;

@@ -55,6 +55,13 @@ const SeriesLook& series_look(const std::string& name) {
   return unknown;  // the scene loader lets no other name through
 }
 
+// A run's name as its cell titles it, less the order ("explicit Euler, order 1"
+// -> "explicit Euler"): the curve and the cell then read alike.
+std::string short_title(const scene::Run& run) {
+  const std::string& t = run.title.empty() ? run.label : run.title;
+  return t.substr(0, t.find(','));
+}
+
 // A plot of one body's run, or in a [compare] scene of every stepping run
 // (the exact solution has no error to plot), one curve per run and series.
 class PlotPanel : public Panel {
@@ -100,7 +107,7 @@ class PlotPanel : public Panel {
         const SeriesLook& look = series_look(name);
         viz::Series series{look.shown, {}, look.color};
         if (ctx_.runs.size() > 1)  // one curve per method, in its colour
-          series = {vc_.series.size() > 1 ? run.label + " " + look.shown : run.label, {}, run_color(run)};
+          series = {vc_.series.size() > 1 ? short_title(run) + " " + look.shown : short_title(run), {}, run_color(run)};
         for (long j = 0; j <= k; ++j)
           series.values.push_back(j <= kk ? value(name, r, run.frames[static_cast<std::size_t>(j)]) : std::nan(""));
         in.series.push_back(std::move(series));
