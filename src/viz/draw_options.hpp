@@ -21,6 +21,7 @@ struct DrawOptions {
   std::array<bool, 3> trail_axes = {true, true, true};  ///< which axes' tips leave a trail (e1, e2, e3)
   bool grid = false;
   double arrow_width = 1;         ///< the arrows' (axes, L, ω) thickness, times their usual
+  double arrow_length = 1;        ///< L's and ω's length, times their usual (kLReach, kOmegaReach)
 };
 
 }  // namespace tumble::viz

@@ -81,6 +81,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
+  out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
   out.push_back(key_entry(Meaning::other_levels, "other energies"));
   return out;
 }

@@ -135,13 +135,14 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
     // space: the line stays put while the body turns about it), ω past the axes.
     if (opt.angular_momentum && s.L.norm() > 0) {
       const glm::dvec3 l = to_glm(s.L.normalized());
-      view.arrows.push_back({to_glm(s.c) - kLBehind * size * l, (kLBehind + kLReach) * size * l,
+      const double len = opt.arrow_length * size;
+      view.arrows.push_back({to_glm(s.c) - kLBehind * len * l, (kLBehind + kLReach) * len * l,
                              0.025 * opt.arrow_width * size, kLColor, "L", "L", 0});
     }
     if (opt.omega) {
       const Eigen::Vector3d w = omega_world(m, s);
       if (w.norm() > 0)
-        view.arrows.push_back({to_glm(s.c), to_glm(kOmegaReach * size * w.normalized()), 0.02 * opt.arrow_width * size,
+        view.arrows.push_back({to_glm(s.c), to_glm(kOmegaReach * opt.arrow_length * size * w.normalized()), 0.02 * opt.arrow_width * size,
                                kOmegaColor, "omega", "\u03c9", 1});
     }
   }

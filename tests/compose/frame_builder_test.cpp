@@ -42,11 +42,11 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
 // A stop at a flip reads as a deliberate hold, named: "paused at flip 1", not a bare "paused".
 TEST(Badge, AHoldAtAFlipIsNamed) {
   const tumble::scene::Scene s =
-      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov_explained.toml");
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/tennis_racket.toml");
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
   long k = 0;
-  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 1.7)) ++k;
+  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 0.5)) ++k;
   ASSERT_TRUE(clock.in_hold(k));
   long last = k;  // the hold's last frame: still named, however long the hold
   while (last + 1 < clock.count() && clock.in_hold(last + 1)) ++last;
@@ -61,7 +61,7 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   EXPECT_TRUE(has(fb.build(last), "paused at flip 1"));
   // A hold elsewhere (the introduction) stays "paused".
   long intro = 0;
-  while (intro + 1 < clock.count() && !(clock.in_hold(intro) && clock.time(intro) > 0.1)) ++intro;
+  while (intro + 1 < clock.count() && !(clock.in_hold(intro) && clock.time(intro) > 0.0005)) ++intro;
   EXPECT_TRUE(has(fb.build(intro), "paused"));
 }
 

@@ -154,8 +154,9 @@ TEST(LayoutFill, WorldViewsComeCloseEnoughForTheBodiesToFillTheirContent) {
   // The scene's camera was set for a whole frame; in its view the T-handle fills the content.
   EXPECT_GT(fill(shipped("dzhanibekov_explained.toml"), 0, 960, 540), 0.8);
   EXPECT_LE(fill(shipped("dzhanibekov_explained.toml"), 0, 960, 540), 1.0);
-  // With name labels a label's line stays free above and below the bodies (here about a fifth of the half height).
-  EXPECT_GT(fill(shipped("tennis_racket.toml"), 0, 960, 540), 0.75);
+  // With name labels a label's line stays free above and below the bodies (here about a fifth of the half
+  // height, and more since the clock line shortens the content at 960x540).
+  EXPECT_GT(fill(shipped("tennis_racket.toml"), 0, 960, 540), 0.7);
   // A comparison grid's automatic camera, every cell.
   const scene::Scene mc = shipped("methods_compare.toml");
   double widest = 0;

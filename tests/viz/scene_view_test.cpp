@@ -88,6 +88,30 @@ TEST(SceneView, AxisArrowsStartAtComAndFollowPrincipalAxes) {
   EXPECT_NEAR(glm::length(v.arrows[0].vector), kAxisOvershoot * 0.875, 1e-12);
 }
 
+// arrow_length scales L's line and ω's arrow (both ends), and nothing else.
+TEST(SceneView, ArrowLengthScalesLAndOmegaOnly) {
+  ParticleCloud cloud = make_box({2.0, 1.0, 0.5}, {8, 4, 2}, 3.0);
+  RigidBodyModel model = make_model("b", compute_mass_properties(cloud, "b"), ForceSet{});
+  InitialConditions ic;
+  ic.omega = {0.3, 1.0, 2.0};
+  const BodyState state = make_state(model, ic);
+  DrawOptions usual;
+  usual.angular_momentum = usual.omega = true;
+  DrawOptions shorter = usual;
+  shorter.arrow_length = 0.5;
+  View a, b;
+  add_bodies(a, {{&model, &cloud, state}}, usual, nullptr, 0);
+  add_bodies(b, {{&model, &cloud, state}}, shorter, nullptr, 0);
+  ASSERT_EQ(a.arrows.size(), 5u);  // three axes, L, ω
+  ASSERT_EQ(b.arrows.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    const double k = a.arrows[i].name == "L" || a.arrows[i].name == "omega" ? 0.5 : 1.0;
+    EXPECT_NEAR(glm::length(b.arrows[i].vector), k * glm::length(a.arrows[i].vector), 1e-12) << a.arrows[i].name;
+    EXPECT_NEAR(glm::length(b.arrows[i].origin - glm::dvec3(0)), k * glm::length(a.arrows[i].origin - glm::dvec3(0)), 1e-12)
+        << a.arrows[i].name;
+  }
+}
+
 TEST(SceneView, TrailsKeepOnlyTheWindow) {
   Fixture f;
   TrailRecorder rec;
