@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
-#include "core/quote.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
+#include "base/quote.hpp"
 
 namespace tumble {
 

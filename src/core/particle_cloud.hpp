@@ -24,7 +24,7 @@ void append_cloud(ParticleCloud& dst, const ParticleCloud& src, const Eigen::Vec
 /// or CSV (commas) and/or a header line naming the columns x, y, z, m in any order
 /// (other named columns are ignored).
 /// Throws InputError naming `path:line` and what was expected.
-/// Only a regular file of at most `max_bytes` is read (core/input_file.hpp);
+/// Only a regular file of at most `max_bytes` is read (base/input_file.hpp);
 /// a file without particles is an InputError.
 ParticleCloud read_cloud_file(const std::filesystem::path& path, std::size_t max_bytes = std::size_t{1} << 30);
 

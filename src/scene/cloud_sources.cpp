@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
-#include "core/format.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/format.hpp"
+#include "base/input_file.hpp"
 #include "scene/internal.hpp"
 
 namespace tumble::scene::detail {

@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/particle_cloud.hpp"
 
 namespace tumble {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
 #include "scene/mesh_file.hpp"
