@@ -9,9 +9,9 @@
 #include <unistd.h>
 
 #include "base/error.hpp"
-#include "core/particle_cloud.hpp"
+#include "io/cloud_file.hpp"
 
-namespace tumble {
+namespace tumble::io {
 namespace {
 
 TEST(CloudFile, ParsesNumbersCommentsAndBlankLines) {
@@ -128,4 +128,4 @@ TEST(CloudFile, AHugeTokenIsQuotedShortInTheMessage) {
 }
 
 }  // namespace
-}  // namespace tumble
+}  // namespace tumble::io
