@@ -171,9 +171,9 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
     // With the box drawn, the axes' unequal lengths need a word: each reaches just past the box's face.
     if (draw.axes && !key.empty()) key.front().text += ", each drawn just past the box";
   }
-  // A [compare] grid's cells carry the exact body faintly (WorldViews::view).
+  // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
-  const bool ghosts = cells_ > 1 && exact != runs_.end() &&
+  const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
                       std::any_of(cell_runs_.begin(), cell_runs_.end(), [&](std::size_t r) { return runs_[r].label != "exact"; });
   if (ghosts) key.push_back({viz::Swatch::block, {kGhostColor}, "grey: the exact solution"});
   return key;
