@@ -26,6 +26,13 @@ int grid_columns(std::size_t runs) {
   return static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
 }
 
+// Whether a run gets a cell: every run, unless [compare] cells names some.
+bool has_cell(const scene::Scene& s, const scene::Run& run) {
+  const auto& cells = s.render.compare_cells;
+  if (cells.empty()) return true;
+  return std::any_of(cells.begin(), cells.end(), [&](Method m) { return method_name(m) == run.label; });
+}
+
 // How long a flip's mark stays up after the flip, video s (through a hold there).
 constexpr double kFlipMarkSeconds = 3.0;
 
@@ -50,6 +57,8 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   // A [compare] grid's cells, in one row above the plots of its runs when it has any.
   if (views.empty() || !s.render.compare_methods.empty()) {
     for (std::size_t r = 0; r < runs.size(); ++r) {
+      if (!has_cell(s, runs[r])) continue;
+      cell_runs_.push_back(r);
       panels_.push_back(make_run_panel(context_, r));
       titles_.push_back(runs.size() > 1 ? runs[r].title : "");
     }
@@ -168,6 +177,11 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
     // With the box drawn, the axes' unequal lengths need a word: each reaches just past the box's face.
     if (draw.axes && !key.empty()) key.front().text += ", each drawn just past the box";
   }
+  // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
+  const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
+  const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
+                      std::any_of(cell_runs_.begin(), cell_runs_.end(), [&](std::size_t r) { return runs_[r].label != "exact"; });
+  if (ghosts) key.push_back({viz::Swatch::block, {kGhostColor}, "grey: the exact solution"});
   return key;
 }
 
@@ -201,7 +215,7 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   v.viewport = p.viewport;
   // A comparison's cells name their methods, and give their readouts, in the method's colour (as its plot curve).
   const bool method = i < cells_ && cells_ > 1;
-  const viz::Color ink = method ? run_color(runs_[i]) : kInk;
+  const viz::Color ink = method ? run_color(runs_[cell_runs_[i]]) : kInk;
   const viz::Color title_ink = method ? ink : viz::color_of(viz::Meaning::ink, 0.95f);
   if (!p.title.empty()) v.texts.push_back({p.title, p.title_at, p.title_px, title_ink, "view_title"});
   const std::vector<std::string> lines = panels_[i]->overlay(k);

@@ -54,6 +54,7 @@ class FrameBuilder {
   std::vector<std::unique_ptr<Panel>> panels_;
   std::vector<std::string> titles_;
   std::size_t cells_ = 0;  // panels of runs first (a classic view or a [compare] grid), then the [[views]]
+  std::vector<std::size_t> cell_runs_;  // the run each cell draws ([compare] cells may leave runs to the plots)
   FramePlan plan_;
   std::vector<double> flip_video_;  // video s at which each marked flip is first shown
   std::vector<double> flip_t_;      // simulated s of each marked flip

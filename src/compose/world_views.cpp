@@ -16,8 +16,6 @@ namespace tumble::compose {
 
 namespace {
 
-constexpr float kGhostAlpha = 0.45f;  // the exact solution, faint, in the other methods' cells
-
 viz::Color rgba(const Eigen::Vector3d& c, float a) {
   return {static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(c.z()), a};
 }
@@ -236,7 +234,7 @@ viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& x) { return x.label == "exact"; });
   if (!only && runs_.size() > 1 && exact != runs_.end() && &*exact != &run) {
     const long ke = std::min(k, static_cast<long>(exact->frames.size()) - 1);
-    if (ke >= 0) viz::add_ghosts(v, snapshots(scene_, exact->frames[static_cast<size_t>(ke)], &looks_), kGhostAlpha);
+    if (ke >= 0) viz::add_ghosts(v, snapshots(scene_, exact->frames[static_cast<size_t>(ke)], &looks_), kGhostColor);
   }
   if (draw_.grid) v.grids.push_back(grid_);
   if (scene_.render.explain.labels) add_labels(v, snaps, draw_, width_px, height_px, font_px_);

@@ -32,6 +32,11 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<gl
 viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& L, int sign, double azimuth_deg,
                           double elevation_deg, double distance, double fov_y_deg);
 
+/// The exact solution's body in the other methods' cells of a [compare] grid:
+/// a pale, cool grey, faint, so it reads as "where the body should be" and not
+/// as a second body of the method's own colour.
+inline constexpr viz::Color kGhostColor{0.50f, 0.56f, 0.68f, 0.32f};
+
 class WorldViews {
  public:
   /// `font_px`: the overlay's and labels' text size. Keeps references to `s` and `runs`.

@@ -140,6 +140,28 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   read_flip_marks(r, ctx, s);
 }
 
+// Which of the compared methods get a cell: fewer, larger pictures; the
+// rest still run, and still show in the plots under the cells.
+void read_compare_cells(TableReader& r, Scene& s) {
+  if (!r.has("cells")) return;
+  auto names = r.strings("cells");
+  if (!names) return;
+  if (names->empty()) r.error("cells", "expected at least one of the compared methods");
+  for (const std::string& n : *names) {
+    const auto m = parse_method(n);
+    const auto& all = s.render.compare_methods;
+    if (!m || std::find(all.begin(), all.end(), *m) == all.end()) {
+      r.error("cells", "expected one of the methods listed in [compare] methods, found " + quote_token(n));
+      continue;
+    }
+    if (std::find(s.render.compare_cells.begin(), s.render.compare_cells.end(), *m) != s.render.compare_cells.end()) {
+      r.error("cells", "method \"" + n + "\" is listed twice");
+      continue;
+    }
+    s.render.compare_cells.push_back(*m);
+  }
+}
+
 void read_compare(TableReader& r, Scene& s) {
   auto names = r.strings("methods");
   if (!names) {
@@ -164,6 +186,7 @@ void read_compare(TableReader& r, Scene& s) {
     }
     s.render.compare_methods.push_back(*m);
   }
+  read_compare_cells(r, s);
 }
 
 }  // namespace
@@ -189,7 +212,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {
-    TableReader r(*t, "compare", ctx.diag, {"methods"});
+    TableReader r(*t, "compare", ctx.diag, {"methods", "cells"});
     read_compare(r, scene);
   }
 }

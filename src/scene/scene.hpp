@@ -103,6 +103,7 @@ struct RenderConfig {
   CameraConfig camera;
   DrawConfig draw;
   std::vector<Method> compare_methods;   ///< [compare] methods; empty = no comparison
+  std::vector<Method> compare_cells;     ///< [compare] cells: the methods drawn in a cell (others only plotted); empty = all
   ExplainConfig explain;                 ///< time_scale, slow motion, captions, title, views
 };
 

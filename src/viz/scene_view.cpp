@@ -91,16 +91,12 @@ BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt) {
           edge};
 }
 
-void add_ghosts(View& view, const std::vector<BodySnapshot>& bodies, float alpha) {
+void add_ghosts(View& view, const std::vector<BodySnapshot>& bodies, Color tint) {
   for (const BodySnapshot& b : bodies) {
     if (!b.look) continue;
     const Eigen::Quaterniond qc = cloud_orientation(*b.model, b.state);
     const glm::dmat4 model = cloud_to_world(b.state.c - qc * b.model->com_cloud, qc);
-    for (std::size_t i = 0; i < b.look->surfaces.size(); ++i) {
-      Color c = b.look->surface_colors[i];
-      c.a = alpha;
-      view.surfaces.push_back({b.look->surfaces[i], model, c, "ghost"});
-    }
+    for (std::size_t i = 0; i < b.look->surfaces.size(); ++i) view.surfaces.push_back({b.look->surfaces[i], model, tint, "ghost"});
   }
 }
 

@@ -66,9 +66,10 @@ BoxItem body_box(const BodySnapshot& b, const DrawOptions& opt);
 void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawOptions& opt,
                 const TrailRecorder* trails, double t);
 
-/// Adds a faint copy of each body's surfaces (alpha `alpha`, named "ghost"):
-/// where a reference solution has the body, so a departure from it shows.
-void add_ghosts(View& view, const std::vector<BodySnapshot>& bodies, float alpha);
+/// Adds a faint copy of each body's surfaces, every part in `tint` (its alpha
+/// too), named "ghost": where a reference solution has the body, so a
+/// departure from it shows.
+void add_ghosts(View& view, const std::vector<BodySnapshot>& bodies, Color tint);
 
 /// Radius of a body's particle spheres, m: a fixed fraction of its size.
 double particle_radius(const RigidBodyModel& m);

@@ -229,6 +229,21 @@ TEST(StorySettings, AComparisonTakesPlotViewsWithViewportsOnly) {
         << view;
 }
 
+TEST(StorySettings, AComparisonsCellsAreSomeOfItsMethods) {
+  auto with_cells = [](const std::string& cells) {  // into [compare], before [draw]
+    std::string text = compare_scene("");
+    return text.replace(text.find("[draw]"), 0, cells);
+  };
+  EXPECT_EQ(load_scene_from_string(with_cells("cells = [\"euler\"]\n"), "cmp.toml").render.compare_cells,
+            std::vector<Method>{Method::euler});
+  EXPECT_TRUE(load_scene_from_string(compare_scene(""), "cmp.toml").render.compare_cells.empty()) << "unset: every method";
+  for (const char* cells : {"cells = [\"rk4\"]\n", "cells = []\n", "cells = [\"euler\", \"euler\"]\n"}) {
+    const std::string error = scene_error(with_cells(cells), "cmp.toml");
+    EXPECT_NE(error.find("cmp.toml:"), std::string::npos) << cells;
+    EXPECT_NE(error.find("compare.cells"), std::string::npos) << cells << error;
+  }
+}
+
 TEST(StorySettings, TimesPastTheRunsEndLeaveOutWhatTheyStart) {
   // As with --duration shorter than the scene's: the later text is left out, not an error.
   const Scene s = load(R"(
