@@ -15,7 +15,7 @@
 #include <random>
 #include <vector>
 
-#include "core/jacobi_elliptic.hpp"
+#include "core/methods/jacobi_elliptic.hpp"
 
 namespace tumble {
 namespace {

@@ -1,6 +1,6 @@
 // Dormand–Prince 5(4) (HNW I, Table 5.2), FSAL, with the continuous extension
 // of HNW I §II.6 (Hairer's CONTD5); step control in embedded_rk_impl.hpp.
-#include "core/embedded_rk_impl.hpp"
+#include "core/methods/embedded_rk_impl.hpp"
 
 namespace tumble {
 

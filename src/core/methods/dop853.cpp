@@ -2,13 +2,13 @@
 // Hairer's code DOP853, HNW I §II.10): 12 stages, FSAL, an error estimate
 // blending the 5th- and 3rd-order embedded solutions, and a 7th-order dense
 // output from 3 extra stages (evaluated only for a step that holds a sample).
-#include "core/embedded_rk_impl.hpp"
+#include "core/methods/embedded_rk_impl.hpp"
 
 namespace tumble {
 
 namespace {
 
-#include "core/dop853_coefficients.inc"
+#include "core/methods/dop853_coefficients.inc"
 
 // The stages are kept as differences (FreeSystem::rate_delta): k[0] = f(y),
 // k[j] = f(y + Δj) − f(y) for j ≠ 12, and k[12] = f(y1) whole (FSAL). So

@@ -1,4 +1,4 @@
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 
 #include <cmath>
 #include <limits>
@@ -7,9 +7,9 @@
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 
-#include "core/jacobi_elliptic.hpp"
+#include "core/methods/jacobi_elliptic.hpp"
 #include "core/quaternion.hpp"
-#include "core/rotation_steps.hpp"
+#include "core/methods/rotation_steps.hpp"
 
 namespace tumble {
 

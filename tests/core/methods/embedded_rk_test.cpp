@@ -11,9 +11,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/embedded_rk.hpp"
-#include "core/embedded_rk_impl.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/embedded_rk.hpp"
+#include "core/methods/embedded_rk_impl.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/quaternion.hpp"
 #include "reference_problem.hpp"

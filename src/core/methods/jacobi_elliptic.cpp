@@ -1,4 +1,4 @@
-#include "core/jacobi_elliptic.hpp"
+#include "core/methods/jacobi_elliptic.hpp"
 
 #include <cmath>
 

@@ -12,7 +12,7 @@
 
 #include "core/body_frame.hpp"
 #include "core/dynamics.hpp"
-#include "core/embedded_rk.hpp"
+#include "core/methods/embedded_rk.hpp"
 #include "core/error.hpp"
 
 namespace tumble::erk {

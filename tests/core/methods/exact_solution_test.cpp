@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/dynamics.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/propagator.hpp"
 #include "core/quaternion.hpp"

@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 
 #include "core/fixed_stepper.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/quaternion.hpp"
-#include "core/rotation_steps.hpp"
-#include "core/splitting_kernel.hpp"
+#include "core/methods/rotation_steps.hpp"
+#include "core/methods/splitting_kernel.hpp"
 #include "reference_problem.hpp"
 #include "test_helpers.hpp"
 

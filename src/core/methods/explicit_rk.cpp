@@ -1,4 +1,4 @@
-#include "core/explicit_rk.hpp"
+#include "core/methods/explicit_rk.hpp"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "core/rotation_steps.hpp"
+#include "core/methods/rotation_steps.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include "core/dynamics.hpp"
 #include "core/quaternion.hpp"
-#include "core/splitting_kernel.hpp"
+#include "core/methods/splitting_kernel.hpp"
 
 namespace tumble {
 
