@@ -56,7 +56,10 @@ ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float
   // Margins in pixels turned into world units (half height = 1 world unit).
   const double px = 2.0 / std::max(height_px, 1);
   x0_ = -aspect_ + 5.5 * font_px * px;
-  x1_ = aspect_ - 1.2 * font_px * px;  // head labels go inside the chart's box: no margin for them
+  double labels = 0;  // the widest head label, its gap from the playhead and a margin, px
+  if (in.direct_labels)
+    for (const Series& s : in.series) labels = std::max(labels, double(text_width(s.name, font_px)) + 0.9 * font_px);
+  x1_ = aspect_ - std::max(1.2 * font_px, labels) * px;
   y0_ = -1 + 2.4 * font_px * px;
   y1_ = 1 - head_layout(in, width_px, static_cast<float>(font_px)).top_px * px;
 }
@@ -175,20 +178,11 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   }
   if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
   for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
-  // Beside the head and clear of the playhead: to its right where the name
-  // fits inside the box, else to its left (near the end of the run), on a
-  // pale backdrop where it lies over the curves drawn so far.
-  const float right = m.pixel(m.at(in.t1, in.lo)).x - 0.3f * f, gap = 0.5f * f;
+  // Right of the head, clear of the playhead: over the time still to come
+  // (no curve there yet), and past the box's right edge at the end.
   for (const Head& h : heads) {
     const Series& s = in.series[h.series];
-    const float w = text_width(s.name, f);
-    const bool fits_right = h.at.x + gap + w <= right;
-    TextItem t{s.name, {fits_right ? h.at.x + gap : h.at.x - gap - w, h.y}, f, s.color, "series_label"};
-    if (!fits_right) {
-      t.backdrop = {0.97f, 0.97f, 0.98f, 0.85f};
-      t.backdrop_px = {t.position_px.x - 0.15f * f, h.y - 0.05f * f, t.position_px.x + w + 0.15f * f, h.y + 1.1f * f};
-    }
-    view.texts.push_back(std::move(t));
+    view.texts.push_back({s.name, {h.at.x + 0.5f * f, h.y}, f, s.color, "series_label"});
   }
 }
 
