@@ -1,6 +1,7 @@
 #include "compose/frame_builder.hpp"
 
 #include "compose/views/kinds.hpp"
+#include "compose/label_pins.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +87,11 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     const viz::Box& c = plan_.views[i].content;
     const glm::vec2 size = i < cells_ ? common : glm::vec2(c.x1 - c.x0, c.y1 - c.y0);
     panels_[i]->fit(glm::max(size, glm::vec2(1.0f)));
+  }
+  // Names placed once for the whole run, clear of what the view shows in every frame.
+  for (std::size_t i = 0; i < panels_.size(); ++i) {
+    const viz::Box& c = plan_.views[i].content;
+    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0}, viz::text_px(viz::TextRole::label, height_)));
   }
 }
 
@@ -183,9 +189,24 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   // Arrows are named at their tips, then labels settle inside the content
   // rectangle, clear of its other text; then move with it into the view.
   viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_));
-  for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0))
+  // Pinned names go to their places for the run; the other labels settle clear of them.
+  std::vector<viz::TextItem> pinned;
+  std::vector<viz::Box> pinned_boxes;
+  for (auto t = v.texts.begin(); t != v.texts.end();) {
+    const auto pin = pins_[i].find(t->name);
+    if (pin == pins_[i].end()) {
+      ++t;
+      continue;
+    }
+    t->position_px = pin->second;
+    pinned_boxes.push_back(viz::text_box(*t));
+    pinned.push_back(std::move(*t));
+    t = v.texts.erase(t);
+  }
+  for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0, pinned_boxes))
     notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
                     "the view's other text, bodies, arrows and curves");
+  v.texts.insert(v.texts.end(), pinned.begin(), pinned.end());
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);
   v.viewport = p.viewport;

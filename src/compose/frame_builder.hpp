@@ -6,7 +6,9 @@
 // inspect it without GL.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -56,6 +58,7 @@ class FrameBuilder {
   FramePlan plan_;
   std::vector<double> flip_video_;  // video s at which each marked flip is first shown
   std::vector<double> flip_t_;      // simulated s of each marked flip
+  std::vector<std::map<std::string, glm::vec2>> pins_;  // per panel: its names placed once for the run (label_pins.hpp)
 };
 
 }  // namespace tumble::compose

@@ -115,7 +115,9 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
                                           : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow"});
   if (across) v.camera.across = read_across(c);
   v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
-  v.camera.elevation_deg = c.number("elevation", Range::closed(-89, 89));
+  // A sphere may be seen straight down an axis (its up is then the azimuth's direction); other views keep 1° off.
+  const double steepest = v.kind == ViewKind::momentum_sphere ? 90 : 89;
+  v.camera.elevation_deg = c.number("elevation", Range::closed(-steepest, steepest));
   v.camera.distance = c.number("distance", Range::closed(1.5, 100));
   v.camera.follow = c.boolean("follow");
 }

@@ -98,6 +98,73 @@ std::vector<glm::vec2> nearby(glm::vec2 at, glm::vec2 size, float line) {
 
 }  // namespace
 
+bool is_pinned_label(const TextItem& t) { return t.name.rfind("label", 0) == 0; }
+
+std::vector<Box> label_obstacles(const View& view, float w, float h) {
+  std::vector<Box> out = text_obstacles(view, w, h);
+  const std::vector<Box> solid = solid_obstacles(view, w, h);
+  out.insert(out.end(), solid.begin(), solid.end());
+  for (const TextItem& t : view.texts)
+    if (has_subject(t)) out.push_back({t.subject_px.x, t.subject_px.y, t.subject_px.z, t.subject_px.w});
+  return out;
+}
+
+Occupancy::Occupancy(int w, int h)
+    : w_(std::max(w, 1)), h_(std::max(h, 1)), n_(static_cast<std::size_t>(w_ + 1) * static_cast<std::size_t>(h_ + 1), 0) {}
+
+void Occupancy::add(const Box& b) {
+  // Whole pixels touched, clipped to the view; +1 at the top-left, -1 past the other corners.
+  const int x0 = std::clamp(static_cast<int>(std::floor(b.x0)), 0, w_), x1 = std::clamp(static_cast<int>(std::ceil(b.x1)), 0, w_);
+  const int y0 = std::clamp(static_cast<int>(std::floor(b.y0)), 0, h_), y1 = std::clamp(static_cast<int>(std::ceil(b.y1)), 0, h_);
+  if (x0 >= x1 || y0 >= y1) return;
+  const auto cell = [&](int x, int y) -> int& { return n_[static_cast<std::size_t>(y) * static_cast<std::size_t>(w_ + 1) + static_cast<std::size_t>(x)]; };
+  ++cell(x0, y0), --cell(x1, y0), --cell(x0, y1), ++cell(x1, y1);
+}
+
+void Occupancy::seal() {
+  const std::size_t row = static_cast<std::size_t>(w_ + 1);
+  // Coverage per pixel (prefix sums of the differences), then 1 where covered, then its summed area.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int y = 0; y <= h_; ++y)
+      for (int x = 1; x <= w_; ++x) n_[y * row + x] += n_[y * row + x - 1];
+    for (int y = 1; y <= h_; ++y)
+      for (int x = 0; x <= w_; ++x) n_[y * row + x] += n_[(y - 1) * row + x];
+    if (pass == 0)
+      for (int& c : n_) c = c > 0 ? 1 : 0;
+  }
+}
+
+bool Occupancy::clear(const Box& b) const {
+  if (b.x0 < 0 || b.y0 < 0 || b.x1 > static_cast<float>(w_) || b.y1 > static_cast<float>(h_)) return false;
+  const int x0 = static_cast<int>(std::floor(b.x0)), x1 = static_cast<int>(std::ceil(b.x1));
+  const int y0 = static_cast<int>(std::floor(b.y0)), y1 = static_cast<int>(std::ceil(b.y1));
+  // Summed area over pixels [x0, x1) × [y0, y1): entry (x, y) sums pixels left of x and above y, inclusive of x, y.
+  const auto sum = [&](int x, int y) { return x <= 0 || y <= 0 ? 0 : at(x - 1, y - 1); };
+  return sum(x1, y1) - sum(x0, y1) - sum(x1, y0) + sum(x0, y0) == 0;
+}
+
+std::optional<glm::vec2> clear_spot(const Box& near, glm::vec2 size, float gap, const Occupancy& taken,
+                                    const std::vector<Box>& also) {
+  const auto free = [&](glm::vec2 p) {
+    const Box b = grown({p.x, p.y, p.x + size.x, p.y + size.y}, gap);
+    return taken.clear(b) && std::none_of(also.begin(), also.end(), [&](const Box& o) { return o.overlaps(b); });
+  };
+  for (const glm::vec2 p : around({near.x0, near.y0, near.x1, near.y1}, size, gap))
+    if (free(p)) return p;
+  // Then a grid over the whole view, nearest to the subject first.
+  const glm::vec2 centre{0.5f * (near.x0 + near.x1 - size.x), 0.5f * (near.y0 + near.y1 - size.y)};
+  std::optional<glm::vec2> best;
+  float best_d = 1e30f;
+  const float step = std::max(2.0f, 0.25f * size.y);
+  for (float y = gap; y + size.y + gap <= taken.height(); y += step)
+    for (float x = gap; x + size.x + gap <= taken.width(); x += step) {
+      if (!free({x, y})) continue;
+      const float d = glm::dot(glm::vec2(x, y) - centre, glm::vec2(x, y) - centre);
+      if (d < best_d) best_d = d, best = glm::vec2(x, y);
+    }
+  return best;
+}
+
 std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());

@@ -74,7 +74,9 @@ Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s) {
     up = pose.up;
   } else {
     dir = {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
-    up = Eigen::Vector3d::UnitZ();
+    // Straight down ±e3 the azimuth's direction is up (elevation 90, azimuth 90: +e2 at the top).
+    const bool down_e3 = std::abs(std::abs(s.elevation_deg) - 90) < 1e-9;
+    up = down_e3 ? Eigen::Vector3d(std::cos(az), std::sin(az), 0) : Eigen::Vector3d::UnitZ();
   }
   Camera c;
   const Eigen::Vector3d eye = s.distance * dir.normalized();

@@ -28,15 +28,15 @@ struct SphereCameraSettings {
   double azimuth_deg = 25;     ///< around `up`, from the followed direction (or from +e1 when fixed)
   double elevation_deg = 20;   ///< above it, towards `up`
   double distance = 5.2;       ///< in sphere radii (|L|)
-  bool follow = true;          ///< false: fixed at azimuth/elevation in the principal frame, up = +e3
+  bool follow = true;          ///< false: fixed at azimuth/elevation in the principal frame, up = +e3 (at elevation ±90: the azimuth's direction)
   double follow_s = 0.15;      ///< time constant of the filter, simulated s
   double max_lag_deg = 35;     ///< the followed direction stays this close to Π̂
   double max_turn_deg = 60;    ///< ... and this close to where it started: the figure never turns round
   double reach = 1.5;          ///< half the view's height, in |L| (the momentum sphere: its axis labels)
 };
 
-/// Half the momentum sphere view's height, |L|: its axes (1.4) and their labels fit.
-inline constexpr double kSphereReach = 1.75;
+/// Half the momentum sphere view's height, |L|: its axes (1.22) and their labels fit.
+inline constexpr double kSphereReach = 1.5;
 
 /// The momentum sphere's default camera, a fixed textbook view for a body
 /// whose Π starts at `pi0` (principal moments `inertia`, ascending): it looks

@@ -117,9 +117,11 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       const InkSpan ink = text_ink(t.text, label_px);
       const glm::vec2 along = tip - base;
       const float len = glm::length(along);
-      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : glm::vec2(0, -1);
+      // An end pointing at the viewer: named beside the centre, where it is seen end-on (not at the rim, far from it).
+      const bool facing = len <= 0.25f * label_px && !hidden_by_ball(view.camera.position, end, 1.0);
+      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : facing ? glm::vec2(0.7071f, -0.7071f) : glm::vec2(0, -1);
       // An end in front of the ball (or behind it): its label at the ball's rim, off the curves on it.
-      const glm::vec2 from = len < ball_px ? base + ball_px * d0 : tip;
+      const glm::vec2 from = facing ? base : len < ball_px ? base + ball_px * d0 : tip;
       const float past = sign > 0 ? head_px : 1.0f;
       // Along the axis as drawn, else turned a little at a time until clear of the axes.
       for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f}) {

@@ -26,7 +26,7 @@ std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>&
                                    double tolerance);
 
 /// The axes' ends, |L| from the centre, and how far out their labels reach (about).
-inline constexpr double kAxisReach = 1.4, kAxisLabelReach = 1.55;
+inline constexpr double kAxisReach = 1.22, kAxisLabelReach = 1.37;
 
 /// Adds the axes through the sphere (+e_i arrows, −e_i lines) and a label at
 /// each end the ball does not hide and the view shows ("e₁" named

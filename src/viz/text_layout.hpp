@@ -72,6 +72,38 @@ bool is_label(const TextItem& t);
 /// up or down by up to two lines, then sideways. Returns the labels left out.
 std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear = {});
 
+/// True for a label placed once for a whole run (viz::clear_spot): a body's
+/// name ("label:<body>") and a curve's or plane's ("label_polhode", ...), not an axis end's.
+bool is_pinned_label(const TextItem& t);
+
+/// What a label placed for a whole run keeps clear of in one frame of `view`:
+/// what settle_labels keeps every label clear of, and every label's subject.
+std::vector<Box> label_obstacles(const View& view, float width_px, float height_px);
+
+/// Which pixels of a width × height view any of many boxes cover (a run's
+/// obstacles, frame after frame): boxes are added, then `seal` counts them
+/// once, and `clear` answers for a box in constant time.
+class Occupancy {
+ public:
+  Occupancy(int width_px, int height_px);
+  void add(const Box& b);
+  void seal();
+  bool clear(const Box& b) const;  ///< inside the view and no added box overlaps it
+  float width() const { return static_cast<float>(w_); }
+  float height() const { return static_cast<float>(h_); }
+
+ private:
+  int w_, h_;
+  std::vector<int> n_;  // a difference grid, then the summed area of covered pixels
+  int at(int x, int y) const { return n_[static_cast<std::size_t>(y) * static_cast<std::size_t>(w_ + 1) + static_cast<std::size_t>(x)]; }
+};
+
+/// The first place for a `size` label around `near` (above, below, right,
+/// left, corners, stepping out), then anywhere in the view nearest to it,
+/// whose box grown by `gap` is clear in `taken` and overlaps none of `also`.
+std::optional<glm::vec2> clear_spot(const Box& near, glm::vec2 size, float gap, const Occupancy& taken,
+                                    const std::vector<Box>& also = {});
+
 /// Names each arrow of `view` that has a `tip` text at its tip (text named
 /// "tip:<arrow name>", in the arrow's colour, `label_px` high): just past its
 /// head along the arrow as drawn, else turned a little at a time, clear of

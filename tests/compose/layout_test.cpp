@@ -4,8 +4,9 @@
 // the title card, which covers the animation on purpose), no two
 // visible text boxes overlap, no text under 1.8 % of the frame height, and
 // text at 1080p twice its 540p height (± 15 %), no key over a body or Π, and
-// no body label on a body.
+// no body label on a body, and each body's or curve's name in one place for the whole run.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -224,6 +225,33 @@ void body_labels_clear_of_bodies() {
   EXPECT_GT(labels, 1000) << "body labels drawn over all frames";
 }
 
+// A name placed once per run: each body's name and each curve's name
+// ("polhode", "herpolhode") has one box in every frame it shows in, so it never
+// jumps while the body moves (nor when the other labels settle round it).
+void names_pinned_once_per_run() {
+  int pinned = 0;
+  for (const auto& [scene, sizes] : all_layouts())
+    for (const auto& [h, layouts] : sizes) {
+      std::map<std::string, std::vector<tumble::viz::Box>> boxes;  // per view and name: each distinct box
+      for (const auto& frame : layouts.frames)
+        for (const LayoutItem& l : frame) {
+          if (l.name.rfind("label", 0) != 0 || !l.visible) continue;
+          auto& seen = boxes[l.view + " " + l.name];
+          const auto same = [&](const tumble::viz::Box& b) {
+            return std::abs(b.x0 - l.box.x0) < 0.01f && std::abs(b.y0 - l.box.y0) < 0.01f &&
+                   std::abs(b.x1 - l.box.x1) < 0.01f && std::abs(b.y1 - l.box.y1) < 0.01f;
+          };
+          if (std::none_of(seen.begin(), seen.end(), same)) seen.push_back(l.box);
+        }
+      for (const auto& [label, seen] : boxes) {
+        ++pinned;
+        EXPECT_EQ(seen.size(), 1u) << scene << " at " << h << "p: " << label << " is drawn at " << seen.size()
+                                   << " places over the run";
+      }
+    }
+  EXPECT_GE(pinned, 3 * 9) << "names checked (poinsot's nine: polhode, herpolhode and the plane in each Poinsot view, the bodies' names below; at three sizes)";
+}
+
 // Layout by construction: every reported 3D item (arrow whole, marker, body
 // box corners, curve points) lies inside its view's content rectangle, in
 // every frame: nothing is clipped at a view's edge or reaches a title or key.
@@ -305,6 +333,7 @@ TEST(Layout, ShippedExplanatoryScenesReadAsAViewerNeeds) {
   text_at_1080p_twice_its_540p_height();
   keys_cover_no_body_or_momentum_point();
   body_labels_clear_of_bodies();
+  names_pinned_once_per_run();
   no_3d_item_leaves_its_content();
   no_text_on_a_3d_item();
 }

@@ -33,9 +33,10 @@ const GoldenScene kScenes[] = {
     {"stable_spin", "0.5,5,11"},   {"symmetric_top", "0.5,4,9"},    {"thrown_box", "0.2,0.9,1.6"},
     // The explanatory scenes' clocks have a title card and slow motion anchored
     // to flips: their goldens are frames (`tumble info` lists what each shows):
-    // the title card, the hold at the first flip, and after it.
-    {"dzhanibekov_explained", "40,1400,2030", "--frames"}, {"poinsot", "0.5,3,7"},
-    {"tennis_racket", "40,1000,1250", "--frames"},
+    // the title card, the stop at (or just after) the first flip, and a later
+    // moment (dzhanibekov_explained: the stop after flip 2; tennis_racket: at real speed).
+    {"dzhanibekov_explained", "40,1000,1700", "--frames"}, {"poinsot", "0.5,3,7"},
+    {"tennis_racket", "40,700,1250", "--frames"},
 };
 
 bool updating() {

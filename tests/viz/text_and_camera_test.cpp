@@ -229,3 +229,27 @@ TEST(MomentumSphere, AxesLabelledWhereTheyCanBeSeen) {
 
 }  // namespace
 }  // namespace tumble::viz
+
+namespace tumble::viz {
+namespace {
+
+// Straight down +e3 (elevation 90), a fixed sphere camera has the azimuth's
+// direction at the top of the picture (azimuth 90: +e2, so the saddles ±e2
+// sit at the top and bottom of the rim; azimuth 0: +e1), not the fallback up
+// of a camera looking along its up (always +e2).
+TEST(SphereCamera, StraightDownE3PutsTheAzimuthAtTheTop) {
+  for (const double az : {90.0, 0.0}) {
+    SphereCameraSettings s;
+    s.follow = false;
+    s.azimuth_deg = az;
+    s.elevation_deg = 90;
+    const Camera c = sphere_camera({}, s);
+    const glm::dvec3 dir = glm::normalize(c.position - c.target);
+    EXPECT_NEAR(dir.z, 1, 1e-9);
+    const double a = az * std::numbers::pi / 180;
+    EXPECT_NEAR(glm::dot(view_up(c), glm::dvec3(std::cos(a), std::sin(a), 0)), 1, 1e-9) << "azimuth " << az;
+  }
+}
+
+}  // namespace
+}  // namespace tumble::viz

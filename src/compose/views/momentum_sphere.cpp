@@ -14,8 +14,8 @@ namespace tumble::compose {
 
 namespace {
 
-// What the content must show whole: the axes (1.4 |L|), their labels past them and a margin.
-constexpr double kFitRadius = 1.65;
+// What the content must show whole: the axes (1.22 |L|), their labels past them and a margin (the ball 70 % of it).
+constexpr double kFitRadius = 1.42;
 constexpr double kPiTailSeconds = 0.4;  // simulated s of Π's path drawn behind the dot: the whole path is the polhode
 
 viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::SphereCameraSettings s) {
