@@ -11,10 +11,17 @@
 #include "core/mass_properties.hpp"
 #include "core/mesh_fill.hpp"
 #include "scene/internal.hpp"
-#include "scene/mesh_file.hpp"
-#include "scene/ply_vertices.hpp"
+#include "io/mesh_file.hpp"
+#include "io/ply_vertices.hpp"
 
 namespace tumble::scene::detail {
+
+// Mesh and PLY files are read in io; the shapes made of them are built here.
+using io::MeshFile;
+using io::PlyVertices;
+using io::is_ply_file;
+using io::read_mesh_file;
+using io::read_ply_vertices;
 
 namespace {
 

@@ -7,12 +7,12 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "scene/mesh_file.hpp"
+#include "io/mesh_file.hpp"
 
 namespace {
 
-tumble::scene::MeshFormat format_of(std::uint8_t b) {
-  using F = tumble::scene::MeshFormat;
+tumble::io::MeshFormat format_of(std::uint8_t b) {
+  using F = tumble::io::MeshFormat;
   switch (b) {
     case 'o': return F::obj;
     case 's': return F::stl;
@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const std::string bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
-    (void)tumble::scene::read_mesh_bytes(bytes, format_of(data[0]), "fuzz.mesh", {2.0, std::size_t{1} << 30});
+    (void)tumble::io::read_mesh_bytes(bytes, format_of(data[0]), "fuzz.mesh", {2.0, std::size_t{1} << 30});
   } catch (const tumble::InputError&) {
   }
   return 0;

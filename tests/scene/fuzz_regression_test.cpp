@@ -13,8 +13,8 @@
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
 #include "io/cloud_file.hpp"
-#include "scene/mesh_file.hpp"
-#include "scene/ply_vertices.hpp"
+#include "io/mesh_file.hpp"
+#include "io/ply_vertices.hpp"
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -78,7 +78,7 @@ TEST(FuzzRegressions, PlyInputsParseOrFailWithInputError) {
     SCOPED_TRACE(p.string());
     std::istringstream in(slurp(p));
     try {
-      (void)tumble::scene::read_ply_vertices(in, "fuzz.ply");
+      (void)tumble::io::read_ply_vertices(in, "fuzz.ply");
     } catch (const tumble::InputError&) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << "unexpected exception: " << e.what();
@@ -89,8 +89,8 @@ TEST(FuzzRegressions, PlyInputsParseOrFailWithInputError) {
 TEST(FuzzRegressions, MeshInputsLoadOrFailWithInputError) {
   const std::vector<fs::path> inputs = files(kSource / "tests/fuzz/regressions/mesh");
   ASSERT_GE(inputs.size(), 17u) << "the mesh corpus is missing: the replay would check little";
-  const tumble::scene::MeshFormat formats[] = {tumble::scene::MeshFormat::obj, tumble::scene::MeshFormat::stl,
-                                               tumble::scene::MeshFormat::ply, tumble::scene::MeshFormat::off};
+  const tumble::io::MeshFormat formats[] = {tumble::io::MeshFormat::obj, tumble::io::MeshFormat::stl,
+                                               tumble::io::MeshFormat::ply, tumble::io::MeshFormat::off};
   for (const fs::path& p : inputs) {
     SCOPED_TRACE(p.string());
     const std::string bytes = slurp(p);
@@ -99,7 +99,7 @@ TEST(FuzzRegressions, MeshInputsLoadOrFailWithInputError) {
                                                                                      : formats[static_cast<unsigned char>(k) % 4];
     const bool known_bad = p.filename().string().rfind("assimp_", 0) == 0;
     try {
-      (void)tumble::scene::read_mesh_bytes(bytes.substr(bytes.empty() ? 0 : 1), f, "fuzz.mesh", {5.0, std::size_t{1} << 30});
+      (void)tumble::io::read_mesh_bytes(bytes.substr(bytes.empty() ? 0 : 1), f, "fuzz.mesh", {5.0, std::size_t{1} << 30});
       EXPECT_FALSE(known_bad) << "a file assimp hangs or crashes on was accepted";
     } catch (const tumble::InputError& e) {
       EXPECT_EQ(std::string(e.what()).find("the import time limit"), std::string::npos) << e.what();

@@ -14,12 +14,12 @@
 
 #include "base/error.hpp"
 #include "core/mesh_fill.hpp"
-#include "scene/ply_vertices.hpp"
+#include "io/ply_vertices.hpp"
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace tumble;
-using scene::read_ply_vertices;
+using io::read_ply_vertices;
 
 namespace {
 
@@ -80,7 +80,7 @@ std::string ascii_corners() {
   return o.str();
 }
 
-scene::PlyVertices parse(const std::string& text) {
+io::PlyVertices parse(const std::string& text) {
   std::istringstream in(text);
   return read_ply_vertices(in, "t.ply");
 }
@@ -155,7 +155,7 @@ TEST_F(PlyScene, PlyWithoutMassHasEqualMasses) {
   EXPECT_EQ(b.meshes[0].file_mass, 0.0);
   for (const char* f : {"points.ply", "cube_binary.ply", "Wuson.ply", "cube.ply", "cube_uv.ply"}) {
     SCOPED_TRACE(f);
-    const scene::PlyVertices v = read_ply_vertices(models / f);
+    const io::PlyVertices v = read_ply_vertices(models / f);
     EXPECT_TRUE(v.masses.empty());
     EXPECT_GT(v.positions.size(), 3u);
   }
@@ -182,7 +182,7 @@ TEST_F(PlyScene, PlyWithoutMassHasEqualMasses) {
     EXPECT_NE(std::string(e.what()).find("pond.0.ply: vertex 714: position"), std::string::npos) << e.what();
   }
   // Wuson.ply's third line lacks "comment": ignored with a warning, as assimp does.
-  const scene::PlyVertices w = read_ply_vertices(models / "Wuson.ply");
+  const io::PlyVertices w = read_ply_vertices(models / "Wuson.ply");
   EXPECT_EQ(w.positions.size(), 11184u);
   ASSERT_EQ(w.warnings.size(), 1u);
   EXPECT_NE(w.warnings[0].find("Wuson.ply:3: 'Created'"), std::string::npos) << w.warnings[0];
@@ -270,7 +270,7 @@ TEST(PlyVertices, MutatedFilesParseOrFailCleanly) {
         else t.insert(at, std::string(1, "0123456789 \n-e."[int(15 * rnd())]));
       }
       try {
-        const scene::PlyVertices v = parse(t);
+        const io::PlyVertices v = parse(t);
         EXPECT_FALSE(v.positions.empty());
         for (const auto& p : v.positions) EXPECT_TRUE(p.allFinite());
       } catch (const InputError&) {

@@ -1,4 +1,4 @@
-#include "scene/ply_vertices.hpp"
+#include "io/ply_vertices.hpp"
 
 #include <algorithm>
 #include <array>
@@ -17,9 +17,9 @@
 #include "base/error.hpp"
 #include "base/input_file.hpp"
 #include "base/format.hpp"
-#include "scene/mesh_file.hpp"
+#include "io/mesh_file.hpp"
 
-namespace tumble::scene {
+namespace tumble::io {
 
 namespace {
 
@@ -396,4 +396,4 @@ bool is_ply_file(const std::filesystem::path& path) {
   return ext == ".ply";
 }
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

@@ -17,7 +17,7 @@
 #endif
 #endif
 
-namespace tumble::scene {
+namespace tumble::io {
 
 #ifdef TUMBLE_NO_ADDRESS_LIMIT
 inline constexpr bool kImportAddressLimit = false;
@@ -36,4 +36,4 @@ struct IsolationLimits {
 std::string run_isolated(const std::function<std::string()>& work, const IsolationLimits& limits,
                          const std::string& what);
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

@@ -16,19 +16,19 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
-#include "scene/isolated.hpp"
-#include "scene/mesh_file.hpp"
-#include "scene/mesh_precheck.hpp"
+#include "io/isolated.hpp"
+#include "io/mesh_file.hpp"
+#include "io/mesh_precheck.hpp"
 
 namespace fs = std::filesystem;
 using namespace tumble;
-using scene::MeshFormat;
+using io::MeshFormat;
 
 namespace {
 
 std::string refusal(const std::string& bytes, MeshFormat f, const std::string& name = "m") {
   try {
-    (void)scene::read_mesh_bytes(bytes, f, name, {5.0, std::size_t{1} << 30});
+    (void)io::read_mesh_bytes(bytes, f, name, {5.0, std::size_t{1} << 30});
   } catch (const InputError& e) {
     return e.what();
   }
@@ -82,13 +82,13 @@ TEST(MeshPrecheck, OffCountsAndIndicesAreChecked) {
 
 TEST(MeshPrecheck, OnlyTheCheckedFormatsAreRead) {
   try {
-    (void)scene::mesh_format("model.3ds");
+    (void)io::mesh_format("model.3ds");
     ADD_FAILURE() << "a .3ds file would reach assimp unchecked";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("model.3ds: expected a mesh file ending in .obj, .stl, .ply or .off"),
               std::string::npos) << e.what();
   }
-  EXPECT_EQ(scene::mesh_format("A.PLY"), MeshFormat::ply);
+  EXPECT_EQ(io::mesh_format("A.PLY"), MeshFormat::ply);
 }
 
 TEST(MeshPrecheck, EveryAssimpTestModelOfTheCheckedFormatsStillLoads) {
@@ -105,7 +105,7 @@ TEST(MeshPrecheck, EveryAssimpTestModelOfTheCheckedFormatsStillLoads) {
       if (n == "box_UTF16BE.obj" || n == "invalid.off" || n == "issue623.ply" || n == "pond.0.ply") continue;
       SCOPED_TRACE(e.path().string());
       try {
-        scene::precheck_mesh(slurp(e.path()), scene::mesh_format(e.path().string()), e.path().string());
+        io::precheck_mesh(slurp(e.path()), io::mesh_format(e.path().string()), e.path().string());
         ++loaded;
       } catch (const InputError& err) {
         ADD_FAILURE() << "refused by our check: " << err.what();
@@ -116,7 +116,7 @@ TEST(MeshPrecheck, EveryAssimpTestModelOfTheCheckedFormatsStillLoads) {
 
 TEST(MeshGuard, AnAbortInTheImporterIsAnInputError) {
   try {
-    (void)scene::run_isolated([]() -> std::string { std::abort(); }, {5.0, std::size_t{1} << 30}, "x.ply");
+    (void)io::run_isolated([]() -> std::string { std::abort(); }, {5.0, std::size_t{1} << 30}, "x.ply");
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("x.ply: the importer crashed on this file (signal 6"), std::string::npos) << e.what();
@@ -131,7 +131,7 @@ TEST(MeshGuard, TheChildDiesByItsSignalWhateverTheHostsHandler) {
   ::sigaction(SIGABRT, &host, &old);
   std::string what = "no error";
   try {
-    (void)scene::run_isolated([]() -> std::string { std::abort(); }, {5.0, std::size_t{1} << 30}, "x.ply");
+    (void)io::run_isolated([]() -> std::string { std::abort(); }, {5.0, std::size_t{1} << 30}, "x.ply");
   } catch (const InputError& e) {
     what = e.what();
   }
@@ -141,7 +141,7 @@ TEST(MeshGuard, TheChildDiesByItsSignalWhateverTheHostsHandler) {
 
 TEST(MeshGuard, AHangIsStoppedAtTheTimeLimit) {
   try {
-    (void)scene::run_isolated([]() -> std::string { for (;;) pause(); }, {0.5, std::size_t{1} << 30}, "x.ply");
+    (void)io::run_isolated([]() -> std::string { for (;;) pause(); }, {0.5, std::size_t{1} << 30}, "x.ply");
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("x.ply: took longer than 0.5 s (the import time limit)"), std::string::npos) << e.what();
@@ -149,9 +149,9 @@ TEST(MeshGuard, AHangIsStoppedAtTheTimeLimit) {
 }
 
 TEST(MeshGuard, ARunawayAllocationHitsTheMemoryLimit) {
-  if (!scene::kImportAddressLimit) GTEST_SKIP() << "sanitizer build: the address-space limit is not applied";
+  if (!io::kImportAddressLimit) GTEST_SKIP() << "sanitizer build: the address-space limit is not applied";
   try {
-    (void)scene::run_isolated([]() -> std::string { return std::string(std::size_t{3} << 30, 'x'); },
+    (void)io::run_isolated([]() -> std::string { return std::string(std::size_t{3} << 30, 'x'); },
                               {5.0, std::size_t{256} << 20}, "x.ply");
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
@@ -161,9 +161,9 @@ TEST(MeshGuard, ARunawayAllocationHitsTheMemoryLimit) {
 }
 
 TEST(MeshGuard, TheChildsResultAndErrorsComeBack) {
-  EXPECT_EQ(scene::run_isolated([] { return std::string("mesh\0bytes", 10); }, {}, "x"), std::string("mesh\0bytes", 10));
+  EXPECT_EQ(io::run_isolated([] { return std::string("mesh\0bytes", 10); }, {}, "x"), std::string("mesh\0bytes", 10));
   try {
-    (void)scene::run_isolated([]() -> std::string { throw InputError("x.obj:3: bad"); }, {}, "x.obj");
+    (void)io::run_isolated([]() -> std::string { throw InputError("x.obj:3: bad"); }, {}, "x.obj");
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "x.obj:3: bad");

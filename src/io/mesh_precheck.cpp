@@ -1,4 +1,4 @@
-#include "scene/mesh_precheck.hpp"
+#include "io/mesh_precheck.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,9 +12,9 @@
 
 #include "base/error.hpp"
 #include "base/quote.hpp"
-#include "scene/ply_vertices.hpp"
+#include "io/ply_vertices.hpp"
 
-namespace tumble::scene {
+namespace tumble::io {
 
 namespace {
 
@@ -204,4 +204,4 @@ void precheck_mesh(std::string_view bytes, MeshFormat format, const std::string&
   }
 }
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

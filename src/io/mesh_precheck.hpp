@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace tumble::scene {
+namespace tumble::io {
 
 /// The formats read: OBJ (Wavefront), STL (ascii or binary), PLY, OFF.
 enum class MeshFormat { obj, stl, ply, off };
@@ -19,4 +19,4 @@ MeshFormat mesh_format(const std::string& path);
 /// well-formed file of `format` whose faces refer to vertices it holds.
 void precheck_mesh(std::string_view bytes, MeshFormat format, const std::string& name);
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/triangle_mesh.hpp"
-#include "scene/isolated.hpp"
-#include "scene/mesh_precheck.hpp"
+#include "io/isolated.hpp"
+#include "io/mesh_precheck.hpp"
 
-namespace tumble::scene {
+namespace tumble::io {
 
 struct MeshFile {
   TriangleMesh mesh;                         ///< file units; every vertex (faces or not), welded by exact position
@@ -30,4 +30,4 @@ MeshFile read_mesh_file(const std::filesystem::path& path);
 MeshFile read_mesh_bytes(const std::string& bytes, MeshFormat format, const std::string& name,
                          const IsolationLimits& limits);
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

@@ -1,4 +1,4 @@
-#include "scene/mesh_file.hpp"
+#include "io/mesh_file.hpp"
 
 #include <array>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "base/error.hpp"
 #include "base/input_file.hpp"
 
-namespace tumble::scene {
+namespace tumble::io {
 
 namespace {
 
@@ -144,4 +144,4 @@ MeshFile read_mesh_file(const std::filesystem::path& path) {
   return read_mesh_bytes(bytes, format, path.string(), {});
 }
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

@@ -1,4 +1,4 @@
-#include "scene/isolated.hpp"
+#include "io/isolated.hpp"
 
 #include <fcntl.h>
 #include <sys/prctl.h>
@@ -20,7 +20,7 @@
 #include "base/error.hpp"
 
 
-namespace tumble::scene {
+namespace tumble::io {
 
 namespace {
 
@@ -129,4 +129,4 @@ std::string run_isolated(const std::function<std::string()>& work, const Isolati
   return reply.substr(1);
 }
 
-}  // namespace tumble::scene
+}  // namespace tumble::io

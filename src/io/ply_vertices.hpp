@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-namespace tumble::scene {
+namespace tumble::io {
 
 struct PlyVertices {
   std::vector<Eigen::Vector3d> positions;  ///< file units, in file order (not welded)
@@ -36,4 +36,4 @@ PlyVertices read_ply_vertices(const std::filesystem::path& path);
 /// Whether `path` names a PLY file (extension .ply, any case).
 bool is_ply_file(const std::filesystem::path& path);
 
-}  // namespace tumble::scene
+}  // namespace tumble::io
