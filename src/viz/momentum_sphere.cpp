@@ -82,7 +82,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
-  out.push_back(key_entry(Meaning::other_levels, "other energies"));
+  out.push_back(key_entry(Meaning::other_levels, "other energies (arrow: direction)"));
   return out;
 }
 
@@ -172,18 +172,21 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
   }
-  for (const auto& circle : separatrix(I, L, 192))
-    for (auto& dash : dashed(scaled(circle), 0.07, 0.045))
-      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f * w, false, "separatrix"});
-  // The path so far, a hair outside the sphere: over the dashes it runs beside.
+  // The path so far, thinner than the polhode and under the dashes it runs beside: "just inside the
+  // separatrix" stays visible (the dashes a hair further out, over it).
   if (in.trail && in.history.size() >= 2) {
-    PolylineItem path{scaled(in.history), color_of(Meaning::polhode), 4.5f * w, false, "polhode"};
-    for (glm::dvec3& x : path.points) x *= 1.006;
+    PolylineItem path{scaled(in.history), color_of(Meaning::polhode), 3.0f * w, false, "polhode"};
+    for (glm::dvec3& x : path.points) x *= 1.004;
     view.polylines.push_back(std::move(path));
   }
+  for (const auto& circle : separatrix(I, L, 192))
+    for (auto& dash : dashed(scaled(circle), 0.07, 0.045)) {
+      for (glm::dvec3& x : dash) x *= in.trail ? 1.008 : 1.0;
+      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f * w, false, "separatrix"});
+    }
   add_saddles(view);
-  // Π now: a large dot standing out of the sphere, over every curve.
-  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.072 * w, color_of(Meaning::momentum_point), "momentum_point"});
+  // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
+  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
 }
 
