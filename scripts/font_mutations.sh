@@ -10,5 +10,5 @@ trap 'rm -rf "$out"' EXIT
 src=$root/src
 ${CXX:-g++} -std=c++20 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -I"$src" -I/usr/include/eigen3 \
   "$root/scripts/font_mutations.cpp" "$src/render/font_check.cpp" "$src/render/font_atlas.cpp" \
-  "$src/core/input_file.cpp" -o "$out/mutations"
+  "$src/base/input_file.cpp" -o "$out/mutations"
 "$out/mutations" "${1:-6000}" "${2:-1}" "$out/font.ttf"

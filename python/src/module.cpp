@@ -3,9 +3,9 @@
 // number comes from the same functions as the command line's.
 #include <pybind11/stl.h>
 
+#include "base/input_file.hpp"
 #include "bindings.hpp"
 #include "core/error.hpp"
-#include "core/input_file.hpp"
 #include "core/integrator.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene.hpp"

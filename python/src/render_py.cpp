@@ -14,7 +14,8 @@
 
 #include "bindings.hpp"
 #ifdef TUMBLE_HAVE_RENDER
-#include "core/format.hpp"
+#include "base/format.hpp"
+#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "render/resource_dir.hpp"
 #include "run/frame_renderer.hpp"

@@ -6,7 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "run/assemble.hpp"
 
 namespace tumble::app {

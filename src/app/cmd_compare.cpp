@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "golden/compare.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png.hpp"

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "core/format.hpp"
+#include "base/format.hpp"
 #include "io/atomic_file.hpp"
 #ifdef TUMBLE_HAVE_GLTF
 #include "gltf/gltf_export.hpp"

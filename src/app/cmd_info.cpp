@@ -6,8 +6,8 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_info.hpp"
+#include "base/format.hpp"
 #include "compose/layout_notes.hpp"
-#include "core/format.hpp"
 #include "io/json.hpp"
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"

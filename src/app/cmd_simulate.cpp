@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/stop_signals.hpp"
+#include "core/error.hpp"
 #include "core/propagator.hpp"
 #include "scene/scene_run.hpp"
 #include "io/atomic_file.hpp"

@@ -7,7 +7,7 @@
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "io/atomic_file.hpp"
 #include "render/gl_context.hpp"
 #include "run/storyboard.hpp"

@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/format.hpp"
+#include "base/format.hpp"
 #include "io/trajectory_csv.hpp"
 #include "scene/scene.hpp"
 

@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "base/input_file.hpp"
 #include "core/error.hpp"
-#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace tumble::app {

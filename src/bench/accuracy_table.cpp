@@ -6,9 +6,9 @@
 
 #include "bench/bench.hpp"
 #include "bench/peers/peers.hpp"
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/embedded_rk.hpp"
-#include "core/format.hpp"
+#include "base/format.hpp"
 
 namespace tumble::bench {
 

@@ -6,8 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include "base/format.hpp"
 #include "bench/charts.hpp"
-#include "core/format.hpp"
 
 namespace tumble::bench {
 

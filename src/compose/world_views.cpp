@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "base/format.hpp"
 #include "core/dynamics.hpp"
-#include "core/format.hpp"
 #include "viz/captions.hpp"
 #include "viz/particle_set.hpp"
 #include "viz/surfaces.hpp"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/particle_cloud.hpp"
 
 namespace tumble {

@@ -1,17 +1,13 @@
-// Exceptions the core throws. Messages are for users: they say what is wrong,
-// why, and how to fix it.
+// Exceptions of the physics: a body that cannot rotate, a run that diverged.
+// Messages are for users: they say what is wrong, why, and how to fix it.
 #pragma once
 
 #include <stdexcept>
 #include <string>
 
-namespace tumble {
+#include "base/error.hpp"
 
-/// Bad input (scene values, cloud contents). The app maps it to exit code 2.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace tumble {
 
 /// A body whose mass distribution cannot define a rotation (no NaN ever leaks).
 class DegenerateBody : public InputError {

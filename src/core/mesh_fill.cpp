@@ -5,7 +5,7 @@
 #include <numbers>
 #include <optional>
 
-#include "core/format.hpp"
+#include "base/format.hpp"
 #include "core/winding_tree.hpp"
 
 namespace tumble {

@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/particle_cloud.hpp"
 #include "core/triangle_mesh.hpp"
 

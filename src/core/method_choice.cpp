@@ -6,10 +6,10 @@
 #include <memory>
 #include <optional>
 
+#include "base/format.hpp"
 #include "core/embedded_rk.hpp"
 #include "core/error.hpp"
 #include "core/fixed_stepper.hpp"
-#include "core/format.hpp"
 #include "core/free_rotation_exact.hpp"
 #include "core/quaternion.hpp"
 

@@ -1,8 +1,7 @@
-// A body as a cloud of point masses (seed §6), and the sources that build one.
+// A body as a cloud of point masses (seed §6), and the generators that build one
+// (a cloud file is read by io/cloud_file.hpp).
 #pragma once
 
-#include <filesystem>
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,17 +18,6 @@ using ParticleCloud = std::vector<Particle>;
 
 /// Appends `src` shifted by `offset` (m) to `dst`: clouds from several sources are unioned.
 void append_cloud(ParticleCloud& dst, const ParticleCloud& src, const Eigen::Vector3d& offset);
-
-/// Reads a plain-text cloud: one `x y z m` per line (m, kg), `#` starts a comment;
-/// or CSV (commas) and/or a header line naming the columns x, y, z, m in any order
-/// (other named columns are ignored).
-/// Throws InputError naming `path:line` and what was expected.
-/// Only a regular file of at most `max_bytes` is read (core/input_file.hpp);
-/// a file without particles is an InputError.
-ParticleCloud read_cloud_file(const std::filesystem::path& path, std::size_t max_bytes = std::size_t{1} << 30);
-
-/// Parses the same format from a string; `source_name` labels errors.
-ParticleCloud parse_cloud_text(const std::string& text, const std::string& source_name);
 
 // ---- Generators. All put the geometric centre at the origin; `mass` is the total, kg.
 

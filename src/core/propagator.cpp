@@ -3,9 +3,9 @@
 #include <cmath>
 #include <string>
 
+#include "base/format.hpp"
 #include "core/dynamics.hpp"
 #include "core/error.hpp"
-#include "core/format.hpp"
 #include "core/quaternion.hpp"
 
 namespace tumble {

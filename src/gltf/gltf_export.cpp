@@ -5,9 +5,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "base/error.hpp"
 #include "compose/camera_fit.hpp"
 #include "compose/world_views.hpp"
-#include "core/error.hpp"
 #include "gltf/model_builder.hpp"
 #include "gltf/node_names.hpp"
 #include "io/atomic_file.hpp"

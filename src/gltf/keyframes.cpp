@@ -6,9 +6,9 @@
 
 #include <Eigen/Geometry>
 
+#include "base/error.hpp"
+#include "base/format.hpp"
 #include "core/dynamics.hpp"
-#include "core/error.hpp"
-#include "core/format.hpp"
 #include "viz/scene_view.hpp"
 
 namespace tumble::gltf {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/format.hpp"
+#include "base/error.hpp"
+#include "base/format.hpp"
 
 namespace tumble::golden {
 

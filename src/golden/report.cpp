@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png.hpp"
 

@@ -7,8 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
 
 namespace tumble::io {
 

@@ -20,7 +20,7 @@ class IoError : public std::runtime_error {
 
 /// The one policy for every file tumble writes: `path` must be a new name or
 /// an existing regular file (a symbolic link is replaced, not followed) that
-/// is no input of this run, compared by device and inode (core/input_file.hpp),
+/// is no input of this run, compared by device and inode (base/input_file.hpp),
 /// so no spelling or link of an input passes. `what` names the output in
 /// messages ("--csv", "the video"). Throws InputError (exit 2) when `path` is
 /// an input, naming both; IoError (exit 1) when it is a directory, device,

@@ -9,8 +9,8 @@
 #include <cstring>
 #include <ctime>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace tumble::io {

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <sstream>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png.hpp"
 

@@ -1,7 +1,7 @@
 #include "io/json.hpp"
 
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "io/atomic_file.hpp"
 
 namespace tumble::io {

@@ -24,7 +24,7 @@ inline constexpr std::size_t kMaxJsonBytes = std::size_t(16) << 20;
 
 /// The parsed file, or nothing when it is missing (then `*missing` is set, if
 /// given), larger than kMaxJsonBytes or not JSON. Throws UnreadableFile
-/// (core/input_file.hpp) when it is a directory, FIFO, device or unreadable:
+/// (base/input_file.hpp) when it is a directory, FIFO, device or unreadable:
 /// what the path is, not a parse error.
 std::optional<Json> read_json_file(const std::filesystem::path& path, bool* missing = nullptr);
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "io/image.hpp"
 
 namespace tumble::io {
@@ -24,7 +24,7 @@ void write_png_atomic(const std::filesystem::path& path, const Image& image);
 inline constexpr std::size_t kMaxPngBytes = std::size_t(1) << 30;
 inline constexpr long long kMaxPngPixels = 1LL << 26;
 
-/// Reads any 8-bit PNG as RGB, a regular file only (core/input_file.hpp:
+/// Reads any 8-bit PNG as RGB, a regular file only (base/input_file.hpp:
 /// never blocks on a FIFO). Throws IoError naming the path, UnreadableFile
 /// (not a regular file) or InputError (missing, over the caps).
 Image read_png(const std::filesystem::path& path, ReadRole role = ReadRole::input);

@@ -1,6 +1,6 @@
 #include "io/trajectory_csv.hpp"
 
-#include "core/format.hpp"
+#include "base/format.hpp"
 #include "core/observables.hpp"
 
 namespace tumble::io {

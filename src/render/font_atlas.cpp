@@ -4,7 +4,7 @@
 
 #include "render/font_atlas.hpp"
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "render/font_check.hpp"
 #include "render/resource_dir.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "render/resource_dir.hpp"
 
 namespace tumble::render {

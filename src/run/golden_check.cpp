@@ -6,12 +6,12 @@
 #include <set>
 #include <sstream>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json.hpp"
 #include "io/png.hpp"
-#include "core/format.hpp"
+#include "base/format.hpp"
 
 namespace tumble::run {
 

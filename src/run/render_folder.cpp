@@ -8,8 +8,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/error.hpp"
-#include "core/format.hpp"
+#include "base/error.hpp"
+#include "base/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "run/manifest_parts.hpp"
-#include "core/error.hpp"
-#include "core/format.hpp"
+#include "base/error.hpp"
+#include "base/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/frame_files.hpp"
 #include "io/json.hpp"

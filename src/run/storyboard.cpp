@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "base/error.hpp"
 #include "compose/frame_builder.hpp"
 #include "compose/layout_notes.hpp"
-#include "core/error.hpp"
 #include "io/image_ops.hpp"
 #include "io/png.hpp"
 #include "render/renderer.hpp"

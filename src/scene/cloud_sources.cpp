@@ -2,9 +2,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
-#include "core/format.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/format.hpp"
+#include "base/input_file.hpp"
+#include "io/cloud_file.hpp"
 #include "scene/internal.hpp"
 
 namespace tumble::scene::detail {
@@ -235,7 +236,7 @@ void read_cloud_file_source(TableReader& r, LoadContext& ctx, const Eigen::Vecto
   }
   try {
     // ~10 bytes per particle at least: a larger file cannot fit the cap.
-    const ParticleCloud c = read_cloud_file(p, 64 * kMaxParticles);
+    const ParticleCloud c = io::read_cloud_file(p, 64 * kMaxParticles);
     if (reserve(ctx, r, "cloud", static_cast<double>(c.size()))) append_cloud(out, c, offset);
   } catch (const InputError& e) {
     r.error("cloud", e.what());

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/dynamics.hpp"
+#include "core/error.hpp"
 #include "scene/scene_run.hpp"
 
 namespace tumble::scene {

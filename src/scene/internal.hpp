@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "base/quote.hpp"
 #include "core/particle_cloud.hpp"
-#include "core/quote.hpp"
 #include "scene/reader.hpp"
 #include "scene/scene.hpp"
 

@@ -17,7 +17,7 @@
 #include <fstream>
 #include <new>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 
 
 namespace tumble::scene {

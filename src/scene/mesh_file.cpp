@@ -9,8 +9,8 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
 
 namespace tumble::scene {
 

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/quote.hpp"
+#include "base/error.hpp"
+#include "base/quote.hpp"
 #include "scene/ply_vertices.hpp"
 
 namespace tumble::scene {

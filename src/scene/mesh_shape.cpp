@@ -6,8 +6,8 @@
 #include <optional>
 #include <cstdio>
 
-#include "core/error.hpp"
-#include "core/format.hpp"
+#include "base/error.hpp"
+#include "base/format.hpp"
 #include "core/mass_properties.hpp"
 #include "core/mesh_fill.hpp"
 #include "scene/internal.hpp"

@@ -14,9 +14,9 @@
 #include <optional>
 #include <string_view>
 
-#include "core/error.hpp"
-#include "core/input_file.hpp"
-#include "core/format.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
+#include "base/format.hpp"
 #include "scene/mesh_file.hpp"
 
 namespace tumble::scene {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/quote.hpp"
+#include "base/quote.hpp"
 
 namespace tumble::scene::detail {
 

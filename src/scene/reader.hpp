@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <toml++/toml.h>
 
-#include "core/format.hpp"
+#include "base/format.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::scene::detail {

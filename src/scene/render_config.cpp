@@ -1,8 +1,8 @@
 // Render sections: parsed and validated with the scene, used by `tumble render`.
 #include <algorithm>
 
-#include "core/camera_up.hpp"
 #include "scene/internal.hpp"
+#include "viz/camera_up.hpp"
 
 namespace tumble::scene::detail {
 
@@ -69,7 +69,7 @@ void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
   c.fov_y_deg = r.number("fov_y", {1, 170, false, "an angle in [1, 170] degrees"}).value_or(c.fov_y_deg);
   if (!c.automatic && (c.position - c.target).norm() < 1e-12)
     r.error("target", "camera position and target coincide");
-  else if (const Eigen::Vector3d up = usable_up(c.up, c.target - c.position); !c.automatic && c.up.norm() >= 1e-12 && up != c.up) {
+  else if (const Eigen::Vector3d up = viz::usable_up(c.up, c.target - c.position); !c.automatic && c.up.norm() >= 1e-12 && up != c.up) {
     r.diag().warning(r.node("up") ? r.node("up")->source() : r.where(), r.key_path("up"), "parallel to the view direction (position to target), which leaves the image's up undefined; "
                     "using up = [" + format_number(up.x()) + ", " + format_number(up.y()) + ", " + format_number(up.z()) + "] (+y, or +x when looking along y)");
     c.up = up;

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 
 #include "scene/internal.hpp"
 #include "scene/toml_limits.hpp"

@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 
 #include "core/body.hpp"
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/integrator.hpp"
 #include "core/mass_properties.hpp"
 #include "core/method_choice.hpp"
@@ -211,7 +211,7 @@ struct Override {
 inline constexpr std::size_t kMaxSceneBytes = std::size_t{256} << 20;
 
 /// Reads and validates a scene; cloud files resolve relative to its folder.
-/// Only a regular file is read (core/input_file.hpp). Throws SceneError (every
+/// Only a regular file is read (base/input_file.hpp). Throws SceneError (every
 /// problem found), InputError (no such file) or UnreadableFile (a directory,
 /// a device, a FIFO, permission denied). `content_hash` covers the file
 /// only; the overrides show in the validated values.

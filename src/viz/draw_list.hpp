@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/camera_up.hpp"
+#include "viz/camera_up.hpp"
 
 namespace tumble::viz {
 
@@ -142,7 +142,7 @@ struct Camera {
   double ortho_half_height = 0;
 };
 
-/// The camera's up, or the fallback of core/camera_up.hpp when it is parallel
+/// The camera's up, or the fallback of viz/camera_up.hpp when it is parallel
 /// to the view direction (a camera that follows a body can come to look along it).
 /// An Eigen vector as GLM's: the physics is in Eigen, draw lists in GLM.
 inline glm::dvec3 to_glm(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }

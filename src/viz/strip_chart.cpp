@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/format.hpp"
+#include "base/format.hpp"
 #include "viz/palette.hpp"
 #include "viz/text_layout.hpp"
 

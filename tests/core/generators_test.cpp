@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/method_choice.hpp"
 #include "core/propagator.hpp"
 #include "reference_problem.hpp"

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "scene/ply_vertices.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

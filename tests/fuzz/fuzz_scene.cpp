@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "scene/scene.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

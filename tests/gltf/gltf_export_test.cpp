@@ -8,7 +8,7 @@
 #include <regex>
 #include <set>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "gltf/gltf_export.hpp"
 #include "gltf_read.hpp"
 #include "scene/sampled_run.hpp"

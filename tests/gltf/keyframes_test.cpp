@@ -4,7 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "gltf/gltf_export.hpp"
 #include "gltf_read.hpp"
 #include "scene/sampled_run.hpp"

@@ -2,17 +2,18 @@
 # it): the layers point one way (docs/architecture.md).
 #   cmake -DSRC=<folder of layer folders> -P check_layers.cmake
 # Rank per folder: a file may include its own folder and lower ranks only.
-set(rank_core 0)
-set(rank_io 1)
-set(rank_viz 1)
-set(rank_scene 2)     # the TOML reader fills viz's option structs (viz/draw_options.hpp)
-set(rank_compose 3)   # frame composition: scene + viz -> draw lists, view rectangles, layout report (GL-free)
-set(rank_render 4)
-set(rank_golden 4)
-set(rank_gltf 4)   # glTF export (tinygltf): core, io, scene and viz, beside render
-set(rank_run 5)
-set(rank_app 6)
-set(rank_bench 7)  # studies, peers, render and micro benchmarks, tumble-bench, tumble_docs: above the app, included by none
+set(rank_base 0)      # input files, quoting, number formatting, InputError: the standard library only
+set(rank_core 1)      # physics only: Eigen, Boost.Math and base
+set(rank_io 2)
+set(rank_viz 2)
+set(rank_scene 3)     # the TOML reader fills viz's option structs (viz/draw_options.hpp)
+set(rank_compose 4)   # frame composition: scene + viz -> draw lists, view rectangles, layout report (GL-free)
+set(rank_render 5)
+set(rank_golden 5)
+set(rank_gltf 5)   # glTF export (tinygltf): core, io, scene and viz, beside render
+set(rank_run 6)
+set(rank_app 7)
+set(rank_bench 8)  # studies, peers, render and micro benchmarks, tumble-bench, tumble_docs: above the app, included by none
 
 if(NOT IS_DIRECTORY "${SRC}")
   message(FATAL_ERROR "SRC='${SRC}' is not a folder")
@@ -48,6 +49,6 @@ if(files_checked EQUAL 0)
   message(FATAL_ERROR "no source files under ${SRC}")
 endif()
 if(errors)
-  message(FATAL_ERROR "includes against the layer order core -> {io, viz} -> scene -> compose -> {render, golden, gltf} -> run -> app -> bench:${errors}")
+  message(FATAL_ERROR "includes against the layer order base -> core -> {io, viz} -> scene -> compose -> {render, golden, gltf} -> run -> app -> bench:${errors}")
 endif()
 message(STATUS "layers: ${files_checked} files, every include points down")

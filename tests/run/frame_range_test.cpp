@@ -1,7 +1,7 @@
 // --frames A:B against a scene's frame count: the last frame is count - 1.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "run/frame_range.hpp"
 
 namespace tumble::run {

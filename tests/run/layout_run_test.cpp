@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "io/json.hpp"
 #include "run/layout_run.hpp"
 #include "scene/scene.hpp"

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "io/folder_lock.hpp"
 #include "io/frame_files.hpp"
 #include "io/frame_sums.hpp"

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/frame_runs.hpp"
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/dynamics.hpp"
 #include "scene/scene.hpp"
 

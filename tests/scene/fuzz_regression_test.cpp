@@ -9,9 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
+#include "io/cloud_file.hpp"
 #include "scene/mesh_file.hpp"
 #include "scene/ply_vertices.hpp"
 #include "scene/scene.hpp"
@@ -61,7 +62,7 @@ TEST(FuzzRegressions, CloudInputsParseOrFailWithInputError) {
   for (const fs::path& p : inputs) {
     SCOPED_TRACE(p.string());
     try {
-      const tumble::ParticleCloud c = tumble::parse_cloud_text(slurp(p), "fuzz.txt");
+      const tumble::ParticleCloud c = tumble::io::parse_cloud_text(slurp(p), "fuzz.txt");
       if (!c.empty()) (void)tumble::compute_mass_properties(c, "fuzz");
     } catch (const tumble::InputError&) {
     } catch (const std::exception& e) {

@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "scene/isolated.hpp"
 #include "scene/mesh_file.hpp"
 #include "scene/mesh_precheck.hpp"

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "core/mesh_fill.hpp"
 #include "scene/ply_vertices.hpp"
 #include "scene/scene.hpp"

@@ -2,7 +2,7 @@
 // Python arrays and the glTF keys, and `simulate --every` see the same samples.
 #include <gtest/gtest.h>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 #include "scene/frame_runs.hpp"
 #include "scene/sampled_run.hpp"
 #include "scene/scene.hpp"

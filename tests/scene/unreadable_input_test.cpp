@@ -17,7 +17,7 @@
 
 #include "expectations.hpp"
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "base/input_file.hpp"
 #include "bench/bench.hpp"
-#include "core/input_file.hpp"
 #include "io/atomic_file.hpp"
 #ifdef TUMBLE_HAVE_RENDER
 #include "bench/render/render_bench.hpp"

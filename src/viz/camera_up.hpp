@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross
 
-namespace tumble {
+namespace tumble::viz {
 
 /// `up` unless it is (nearly) parallel to `view_dir` (sin of the angle < 1e-6),
 /// else +y, or +x when looking along y.
@@ -20,4 +20,4 @@ inline Eigen::Vector3d usable_up(const Eigen::Vector3d& up, const Eigen::Vector3
   return std::abs(y.dot(view_dir)) < 0.9 * view_dir.norm() ? y : Eigen::Vector3d(Eigen::Vector3d::UnitX());
 }
 
-}  // namespace tumble
+}  // namespace tumble::viz

@@ -8,10 +8,10 @@
 
 #include <unistd.h>
 
-#include "core/error.hpp"
-#include "core/particle_cloud.hpp"
+#include "base/error.hpp"
+#include "io/cloud_file.hpp"
 
-namespace tumble {
+namespace tumble::io {
 namespace {
 
 TEST(CloudFile, ParsesNumbersCommentsAndBlankLines) {
@@ -128,4 +128,4 @@ TEST(CloudFile, AHugeTokenIsQuotedShortInTheMessage) {
 }
 
 }  // namespace
-}  // namespace tumble
+}  // namespace tumble::io

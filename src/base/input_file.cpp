@@ -1,4 +1,4 @@
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -10,7 +10,7 @@
 #include <mutex>
 #include <vector>
 
-namespace tumble {
+namespace tumble::base {
 
 namespace {
 
@@ -133,4 +133,4 @@ std::optional<std::string> input_with_identity(dev_t dev, ino_t ino) {
   return std::nullopt;
 }
 
-}  // namespace tumble
+}  // namespace tumble::base

@@ -1,11 +1,11 @@
-// The project's one number formatter (core/format.hpp): printf's %g/%e/%f,
+// The project's one number formatter (base/format.hpp): printf's %g/%e/%f,
 // and the shortest round-trip text for help texts.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <stdexcept>
 
-#include "core/format.hpp"
+#include "base/format.hpp"
 
 namespace tumble {
 namespace {

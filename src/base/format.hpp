@@ -6,6 +6,7 @@
 #include <string>
 
 namespace tumble {
+namespace base {
 
 /// Significant digits that read back to the same double (CSV, hashes, messages
 /// quoting a value the user wrote).
@@ -23,5 +24,13 @@ std::string format_number(double v, int digits = kRoundTripDigits, char conversi
 /// "12.5" (plain from 10⁻² to 10⁴; a power of ten with superscripts outside);
 /// `plus`: a '+' before a positive value, for a signed change. UTF-8.
 std::string format_for_people(double v, int digits = 2, bool plus = false);
+
+}  // namespace base
+
+// The old names, kept for every layer above.
+using base::kRoundTripDigits;
+using base::kShortestDigits;
+using base::format_number;
+using base::format_for_people;
 
 }  // namespace tumble

@@ -12,9 +12,10 @@
 #include <optional>
 #include <string>
 
-#include "core/error.hpp"
+#include "base/error.hpp"
 
 namespace tumble {
+namespace base {
 
 /// A path that exists (or may) but cannot be read: a directory, a device, a
 /// FIFO, permission denied, an I/O error. The app maps it to exit code 1.
@@ -50,5 +51,16 @@ void note_input(dev_t dev, ino_t ino, const std::filesystem::path& path, const s
 /// "scene file scenes/a.toml" when (dev, ino) is an input of this run and that
 /// input is still at its path (a removed input's inode number may be reused).
 std::optional<std::string> input_with_identity(dev_t dev, ino_t ino);
+
+}  // namespace base
+
+// The old names, kept for every layer above.
+using base::UnreadableFile;
+using base::ReadRole;
+using base::read_input_file;
+using base::read_file_if_exists;
+using base::file_kind;
+using base::note_input;
+using base::input_with_identity;
 
 }  // namespace tumble

@@ -1,4 +1,4 @@
-#include "core/format.hpp"
+#include "base/format.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace tumble {
+namespace tumble::base {
 
 std::string format_number(double v, int digits, char conversion) {
   char buf[400];  // "%.17f" of 1e300 needs 319
@@ -40,4 +40,4 @@ std::string format_for_people(double v, int digits, bool plus) {
   return out;
 }
 
-}  // namespace tumble
+}  // namespace tumble::base

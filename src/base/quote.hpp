@@ -9,6 +9,7 @@
 #include <string_view>
 
 namespace tumble {
+namespace base {
 
 inline constexpr std::size_t kQuoteChars = 80;  ///< longest token quoted in a message
 
@@ -30,5 +31,11 @@ inline std::string quote_token(std::string_view s, char mark = '"') {
   if (shown < s.size()) out += "... (" + std::to_string(s.size()) + " bytes)";
   return out;
 }
+
+}  // namespace base
+
+// The old names, kept for every layer above.
+using base::kQuoteChars;
+using base::quote_token;
 
 }  // namespace tumble

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/input_file.hpp"
+#include "base/input_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,0 +1,2 @@
+// base including only the standard library.
+#include <string>
