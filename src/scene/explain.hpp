@@ -79,6 +79,7 @@ struct ViewConfig {
   int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range
+  bool shade_speeds = true;         ///< plot: the slow-motion stretches shaded, one shade and key entry a speed
   bool y_log = false;               ///< plot: log10 of |value| (y_scale = "log"), for errors over decades
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")

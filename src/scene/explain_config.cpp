@@ -147,6 +147,10 @@ void read_kind_options(TableReader& r, ViewConfig& v) {
     else if (*scale == "log") v.y_log = true;
     else if (*scale != "linear") r.error("y_scale", "expected \"linear\" or \"log\", found " + quote_token(*scale));
   }
+  if (const auto shade = r.boolean("shade_speeds")) {
+    if (v.kind != ViewKind::plot) r.error("shade_speeds", "only a plot view shades its speeds");
+    else v.shade_speeds = *shade;
+  }
   if (const toml::node* n = r.node("y_range")) {
     if (v.kind != ViewKind::plot) {
       r.error("y_range", "only a plot view has a y_range");
@@ -171,7 +175,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
-                   "key", "path", "line_scale", "levels"});
+                   "key", "path", "line_scale", "levels", "shade_speeds"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {

@@ -82,7 +82,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
-  out.push_back(key_entry(Meaning::other_levels, "other energies"));
+  out.push_back(key_entry(Meaning::other_levels, "other energies (arrow: direction)"));
   return out;
 }
 
@@ -128,6 +128,25 @@ std::vector<std::vector<glm::dvec3>> dashed(const std::vector<glm::dvec3>& curve
 
 }  // namespace
 
+// The separatrix dashed and, with a trail, the path so far (scaled to the unit
+// sphere) thinner and under the dashes it runs beside: "just inside the
+// separatrix" stays visible (the dashes a hair further out, over it).
+void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vector<glm::dvec3> path) {
+  const float w = in.line_scale;
+  if (in.trail && path.size() >= 2) {
+    for (glm::dvec3& x : path) x *= 1.004;
+    view.polylines.push_back({std::move(path), color_of(Meaning::polhode), 3.0f * w, false, "polhode"});
+  }
+  for (const auto& circle : separatrix(in.inertia, 1.0, 192)) {
+    std::vector<glm::dvec3> unit;
+    for (const Eigen::Vector3d& x : circle) unit.push_back(to_glm(x));
+    for (auto& dash : dashed(unit, 0.07, 0.045)) {
+      for (glm::dvec3& x : dash) x *= in.trail ? 1.008 : 1.0;
+      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f * w, false, "separatrix"});
+    }
+  }
+}
+
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const Eigen::Vector3d& I = in.inertia;
   const double L = in.momentum.norm();
@@ -172,18 +191,10 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
   }
-  for (const auto& circle : separatrix(I, L, 192))
-    for (auto& dash : dashed(scaled(circle), 0.07, 0.045))
-      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f * w, false, "separatrix"});
-  // The path so far, a hair outside the sphere: over the dashes it runs beside.
-  if (in.trail && in.history.size() >= 2) {
-    PolylineItem path{scaled(in.history), color_of(Meaning::polhode), 4.5f * w, false, "polhode"};
-    for (glm::dvec3& x : path.points) x *= 1.006;
-    view.polylines.push_back(std::move(path));
-  }
+  add_separatrix_and_path(view, in, scaled(in.history));
   add_saddles(view);
-  // Π now: a large dot standing out of the sphere, over every curve.
-  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.072 * w, color_of(Meaning::momentum_point), "momentum_point"});
+  // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
+  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
 }
 

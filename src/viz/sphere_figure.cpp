@@ -117,8 +117,11 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       const InkSpan ink = text_ink(t.text, label_px);
       const glm::vec2 along = tip - base;
       const float len = glm::length(along);
-      // An end pointing at the viewer: named beside the centre, where it is seen end-on (not at the rim, far from it).
-      const bool facing = len <= 0.25f * label_px && !hidden_by_ball(view.camera.position, end, 1.0);
+      // An end seen end-on: the one pointing at the viewer is named beside the centre (not at the rim, far
+      // from it); the one pointing away lies wholly behind the ball and is not named (nothing of it shows).
+      const bool end_on = len <= 0.25f * label_px, behind = hidden_by_ball(view.camera.position, end, 1.0);
+      if (end_on && behind) continue;
+      const bool facing = end_on;
       const glm::vec2 d0 = len > 0.25f * label_px ? along / len : facing ? glm::vec2(0.7071f, -0.7071f) : glm::vec2(0, -1);
       // An end in front of the ball (or behind it): its label at the ball's rim, off the curves on it.
       const glm::vec2 from = facing ? base : len < ball_px ? base + ball_px * d0 : tip;

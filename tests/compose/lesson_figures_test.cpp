@@ -1,5 +1,5 @@
 // What the lessons draw, checked on the draw list (no GL): every momentum
-// sphere labels all six ends ±e₁, ±e₂, ±e₃ in every frame of every shipped
+// sphere labels all six ends ±e₁, ±e₂, ±e₃ (but one end-on behind the ball) in every frame of every shipped
 // scene that has one; a generated shape is drawn at the size the scene
 // declares (not its lattice's extent); a body_frame view shows its own body
 // only; the ground grid stays put.
@@ -36,6 +36,14 @@ std::vector<fs::path> sphere_scenes() {
   return out;
 }
 
+// Whether the axis end `name` ("axis_label_-e3") points straight away from the camera (within 3°).
+bool points_away(const tumble::viz::Camera& cam, const std::string& name) {
+  const bool minus = name.find("_-e") != std::string::npos;
+  glm::dvec3 e(0);
+  e[name.back() - '1'] = minus ? -1 : 1;
+  return glm::dot(e, glm::normalize(cam.position - cam.target)) < -std::cos(glm::radians(3.0));
+}
+
 TEST(LessonFigures, EverySphereLabelsAllSixAxisEndsInEveryFrame) {
   const std::vector<fs::path> scenes = sphere_scenes();
   ASSERT_GE(scenes.size(), 2u);  // dzhanibekov_explained, tennis_racket
@@ -57,6 +65,7 @@ TEST(LessonFigures, EverySphereLabelsAllSixAxisEndsInEveryFrame) {
           const float vw = static_cast<float>(v.viewport->z * w), vh = static_cast<float>(v.viewport->w * h);
           for (const char* name : kNames) {
             const auto it = std::find_if(v.texts.begin(), v.texts.end(), [&](const auto& t) { return t.name == name; });
+            if (it == v.texts.end() && points_away(v.camera, name)) continue;  // end-on behind the ball: nothing shows
             ASSERT_NE(it, v.texts.end()) << p.filename() << " " << w << "x" << h << " frame " << k << ": no " << name;
             const tumble::viz::Box b = tumble::viz::text_box(*it);
             EXPECT_TRUE(b.x0 >= 0 && b.y0 >= 0 && b.x1 <= vw && b.y1 <= vh)

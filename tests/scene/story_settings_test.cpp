@@ -210,6 +210,15 @@ TEST(StorySettings, ALogScaleOnPlotsOnly) {
             std::string::npos);
 }
 
+// A plot may leave its slow-motion stretches unshaded (the speed badge says it); other kinds refuse the key.
+TEST(StorySettings, ShadeSpeedsOnPlotsOnly) {
+  EXPECT_TRUE(load("[[views]]\nkind = \"plot\"\n").render.explain.views[1].shade_speeds);
+  EXPECT_FALSE(load("[[views]]\nkind = \"plot\"\nshade_speeds = false\n").render.explain.views[1].shade_speeds);
+  EXPECT_NE(error_of("shade_speeds = false\n").find("story.toml:12:16: error: views[0].shade_speeds: only a plot view"),
+            std::string::npos)
+      << error_of("shade_speeds = false\n");
+}
+
 // The same T-handle as a [compare] of two methods, without views.
 std::string compare_scene(const std::string& extra) {
   std::string base = kBase;

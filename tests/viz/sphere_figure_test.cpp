@@ -79,6 +79,28 @@ TEST(SphereFigure, EveryAxisHasALabelledEndFromAnyDirection) {
   EXPECT_GT(views, 100);
 }
 
+// Straight down +e₃ (+e₂ at the top): +e₃ points at the viewer and is named
+// beside the centre; −e₃ points straight away, wholly behind the ball, and
+// gets no name (it used to be put at the top of the rim, beside +e₂).
+TEST(SphereFigure, OnlyTheEndPointingAtTheViewerIsNamedEndOn) {
+  for (const double el : {90.0, -90.0}) {
+    SphereCameraSettings s;
+    s.follow = false, s.azimuth_deg = 90, s.elevation_deg = el, s.reach = kSphereReach;
+    View v;
+    v.camera = sphere_camera({}, s);
+    add_sphere_axes(v, 960, 1080, 30);
+    const std::string toward = el > 0 ? "axis_label_e3" : "axis_label_-e3", away = el > 0 ? "axis_label_-e3" : "axis_label_e3";
+    int named_toward = 0, named_away = 0, all = 0;
+    for (const TextItem& t : v.texts) {
+      named_toward += t.name == toward, named_away += t.name == away;
+      all += t.name.rfind("axis_label_", 0) == 0;
+    }
+    EXPECT_EQ(named_toward, 1) << "elevation " << el;
+    EXPECT_EQ(named_away, 0) << "elevation " << el;
+    EXPECT_EQ(all, 5) << "elevation " << el;  // ±e₁, ±e₂ at the rim, the near e₃ end
+  }
+}
+
 TEST(SphereFigure, TextbookCameraShowsAllSixEndsAndTheStartingSaddle) {
   for (const Eigen::Vector3d& omega : {Eigen::Vector3d(0.02, 8, 0.02), Eigen::Vector3d(8, 0.3, 0.3),
                                        Eigen::Vector3d(0.3, 0.3, 8), Eigen::Vector3d(-0.5, -8, 0.4)}) {
@@ -159,7 +181,9 @@ TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   const auto path = named(lesson, "polhode");
   ASSERT_EQ(path.size(), 1u);
   ASSERT_EQ(path[0]->points.size(), 3u);
-  EXPECT_NEAR(glm::length(path[0]->points[0]), 1.006, 1e-9);
+  EXPECT_NEAR(glm::length(path[0]->points[0]), 1.004, 1e-9);
+  // The separatrix's dashes lie over the path (further out), so a path just inside it does not hide it.
+  EXPECT_GT(glm::length(named(lesson, "separatrix")[0]->points[0]), glm::length(path[0]->points[0]));
   EXPECT_FLOAT_EQ(named(lesson, "separatrix")[0]->width_px, 2 * named(plain, "separatrix")[0]->width_px);
   auto dot = [](const View& v) {
     for (const PointItem& p : v.points)

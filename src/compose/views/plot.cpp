@@ -97,7 +97,7 @@ class PlotPanel : public Panel {
     in.log10 = vc_.y_log;
     in.direct_labels = ctx_.runs.size() > 1;
     for (const scene::SlowMotion& sm : ctx_.scene.render.explain.slow_motion)
-      in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
+      if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.frame_h = ctx_.frame_h;
     for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
     for (std::size_t r : runs_) {
