@@ -65,6 +65,8 @@ class BodyFramePanel : public Panel {
     for (long i = 0; i < std::min(n, kBodyFitSamples); ++i) {
       const viz::View v = content(n <= kBodyFitSamples ? i : i * (n - 1) / (kBodyFitSamples - 1));
       shots.push_back(solid_shot(v));
+      for (const viz::PolylineItem& l : v.polylines)  // L's trail stays in view too
+        if (l.name == "L_trail") shots.back().points.insert(shots.back().points.end(), l.points.begin(), l.points.end());
     }
     // Arrows carry their names past (or, short of room, beside) their tips: a name's width across, half a line up and down.
     const double tip = viz::text_px(viz::TextRole::label, ctx_.frame_h);
