@@ -107,7 +107,7 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
 // a hair above it (towards the ellipsoid) so nothing fights its depth.
 void add_invariable_plane(View& view, const PoinsotFrame& f) {
   const double half = 1.6, lift = 0.5 * kHerpolhodeLift;
-  view.surfaces.push_back(rectangle(to_glm(f.foot), to_glm(f.u * half), to_glm(f.v * half), kPlaneColor));
+  view.surfaces.push_back(rectangle(to_glm(f.foot), to_glm(f.v * half), to_glm(f.u * half), kPlaneColor));  // normal v × u = L̂
   view.surfaces.back().name = "plane";
   const Color grid = color_of(Meaning::plane, 0.45f);
   const Eigen::Vector3d on = f.foot - lift * f.p.normal;
