@@ -1,12 +1,14 @@
 # `cmake --install`: the core as a CMake package (find_package(tumble) ->
 # tumble::core, which links tumble::base). Headers keep their tree:
-# include/tumble/core/*.hpp, include/tumble/base/*.hpp.
+# include/tumble/core/*.hpp, include/tumble/core/methods/*.hpp, include/tumble/base/*.hpp.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(TUMBLE_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tumble)
 file(GLOB TUMBLE_CORE_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/core/*.hpp)
 install(FILES ${TUMBLE_CORE_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tumble/core)
+file(GLOB TUMBLE_CORE_METHOD_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/core/methods/*.hpp)
+install(FILES ${TUMBLE_CORE_METHOD_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tumble/core/methods)
 file(GLOB TUMBLE_BASE_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/base/*.hpp)
 install(FILES ${TUMBLE_BASE_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tumble/base)
 install(TARGETS tumble_base tumble_core EXPORT tumbleTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -7,7 +7,7 @@
 #include "bench/bench.hpp"
 #include "bench/peers/peers.hpp"
 #include "base/error.hpp"
-#include "core/embedded_rk.hpp"
+#include "core/methods/embedded_rk.hpp"
 #include "base/format.hpp"
 
 namespace tumble::bench {

@@ -7,9 +7,9 @@
 
 #include "core/dynamics.hpp"
 #include "core/fixed_stepper.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/quaternion.hpp"
-#include "core/embedded_rk.hpp"
+#include "core/methods/embedded_rk.hpp"
 
 namespace tumble::bench {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <thread>
 
-#include "core/splitting_kernel.hpp"
+#include "core/methods/splitting_kernel.hpp"
 
 namespace tumble::bench {
 

@@ -9,7 +9,7 @@
 #include "bench/peers/peers.hpp"
 #include "bench/studies.hpp"
 #include "core/dynamics.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/quaternion.hpp"
 
 namespace tumble::bench {

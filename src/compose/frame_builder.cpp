@@ -172,10 +172,7 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
   if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
     const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)},
-                   "principal box: the body's extent along e\u2081 e\u2082 e\u2083"});
-    // With the box drawn, the axes' unequal lengths need a word: each reaches just past the box's face.
-    if (draw.axes && !key.empty()) key.front().text += ", each drawn just past the box";
+    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "principal box"});
   }
   // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });

@@ -75,9 +75,29 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
   return look;
 }
 
+// The energy readout's floor: 1e-13, under which the digits are round-off
+// (they would change with the compiler and break golden images for no
+// physical reason), or the floor of a log plot of the energy error in the
+// same frame, so that a frame names one threshold, not two.
+double energy_floor(const scene::Scene& s) {
+  double floor = 1e-13;
+  for (const scene::ViewConfig& v : s.render.explain.views)
+    if (v.kind == scene::ViewKind::plot && v.y_log && v.y_range &&
+        std::find(v.series.begin(), v.series.end(), "energy_error") != v.series.end())
+      floor = std::max(floor, (*v.y_range)[0]);
+  return floor;
+}
+
+// "10⁻⁹" for a power of ten, else as format_for_people writes it.
+std::string power_for_people(double v) {
+  const std::string s = format_for_people(v, 1);
+  const std::string one = "1\u00d7";
+  return s.rfind(one, 0) == 0 ? s.substr(one.size()) : s;
+}
+
 // The overlay line: time, method, step, energy error, as the scene's overlay asks.
 std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
-                         const std::vector<viz::BodySnapshot>& snaps, double t) {
+                         const std::vector<viz::BodySnapshot>& snaps, double t, double floor) {
   // Largest relative energy error over the bodies: the failure users look
   // for. Only where energy is conserved (gravity is in it, as potential):
   // a thruster, torque or damping does work, and its change is no error.
@@ -90,11 +110,10 @@ std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run
     if (std::abs(d) > std::abs(rel) || std::isnan(d)) rel = d;
   }
   // For people: two digits, a power of ten written out, a percentage where it
-  // is large. Below 1e-13 the digits are round-off: they would change with the
-  // compiler and break golden images for no physical reason.
+  // is large; under the floor only the floor.
   std::string energy;
   if (!conserved) energy = "(forces do work)";
-  else if (std::abs(rel) < 1e-13) energy = "|\u0394E/E| < 10\u207b\u00b9\u00b3";
+  else if (std::abs(rel) < floor) energy = "|\u0394E/E| < " + power_for_people(floor);
   else if (std::abs(rel) >= 1e-2) energy = "\u0394E/E = " + format_for_people(100 * rel, 2, true) + " %";
   else energy = "\u0394E/E = " + format_for_people(rel, 2, true);
   // Digits are two spaces wide in the font: padded so that "t =" never moves.
@@ -248,7 +267,8 @@ std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {
   const long kk = std::min(k, last);
   if (scene_.render.draw.overlay && kk >= 0)
     out.push_back(overlay_line(scene_.render.draw.overlay_items, run, runs_.size(),
-                               snapshots(scene_, run.frames[static_cast<size_t>(kk)]), clock_.time(k)));
+                               snapshots(scene_, run.frames[static_cast<size_t>(kk)]), clock_.time(k),
+                               energy_floor(scene_)));
   if (run.diverged && k > last)
     out.push_back("diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s");
   return out;

@@ -4,7 +4,7 @@
 
 #include "core/dynamics.hpp"
 #include "core/quaternion.hpp"
-#include "core/splitting_kernel.hpp"
+#include "core/methods/splitting_kernel.hpp"
 
 namespace tumble {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/dynamics.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 
 namespace tumble {
 

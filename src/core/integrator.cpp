@@ -1,10 +1,10 @@
 #include "core/integrator.hpp"
 
 #include "core/body_frame.hpp"
-#include "core/explicit_rk.hpp"
-#include "core/free_rotation_exact.hpp"
-#include "core/embedded_rk.hpp"
-#include "core/rotation_steps.hpp"
+#include "core/methods/explicit_rk.hpp"
+#include "core/methods/free_rotation_exact.hpp"
+#include "core/methods/embedded_rk.hpp"
+#include "core/methods/rotation_steps.hpp"
 
 namespace tumble {
 
@@ -25,52 +25,52 @@ constexpr MethodInfo kTable[] = {
     {.method = Method::euler, .name = "euler", .title = "explicit Euler",
      .description = "explicit Euler on (c, q, P, L), q renormalised",
      .order = 1, .step = euler_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = false, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = false, .auto_candidate = false, .splits_free_rotation = false,
      .max_turn_per_step = kFollowFirstOrder, .cost = kCostEuler},
     {.method = Method::semi_implicit_euler, .name = "semi_implicit_euler", .title = "semi-implicit Euler",
      .description = "momenta first, then positions with the new velocities; orientation by the exponential map",
      .order = 1, .step = semi_implicit_euler_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = false, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = false, .auto_candidate = false, .splits_free_rotation = false,
      .max_turn_per_step = kFollowFirstOrder, .cost = kCostSemiImplicitEuler},
     {.method = Method::rk4, .name = "rk4", .title = "RK4",
      .description = "classical Runge–Kutta with the rotation in Euler's coordinates: Π = Rᵀ L (principal frame), Π' = Π × ω_body + Rᵀτ, q' = ½ q ⊗ ω_body; state and CSV stay (c, q, P, L)",
      .order = 4, .step = rk4_body_step, .coords_step = rk4_coords_step, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = true, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = false, .auto_candidate = true, .splits_free_rotation = false,
      .max_turn_per_step = kFollowRk, .cost = kCostRk4},
     {.method = Method::rk4_seed, .name = "rk4_seed", .title = "RK4 (seed coordinates)",
      .description = "the same RK4 on the seed's coordinates (q, L_world), Butcher tableau as data: kept to show what the coordinates cost",
      .order = 4, .step = rk4_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = false, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = false, .auto_candidate = false, .splits_free_rotation = false,
      .max_turn_per_step = kFollowRk, .cost = kCostRk4Seed},
     {.method = Method::rk45, .name = "rk45", .title = "RK45 (Dormand–Prince)",
      .description = "adaptive Dormand–Prince 5(4) with FSAL and a PI step-size controller in Euler's coordinates; rtol/atol, dense output at sample times",
      .order = 5, .step = rk45_fixed_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = make_rk45,
-     .closed_form_if_free = false, .auto_candidate = true, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = false, .auto_candidate = true, .splits_free_rotation = false,
      .max_turn_per_step = kFollowRk, .cost = kCostRk45},
     {.method = Method::dop853, .name = "dop853", .title = "DOP853",
      .description = "adaptive Dormand–Prince 8(5,3) (Hairer's DOP853) in Euler's coordinates, the same controller, 7th-order dense output: the cheapest at tight tolerances",
      .order = 8, .step = dop853_fixed_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = make_dop853,
-     .closed_form_if_free = false, .auto_candidate = true, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = false, .auto_candidate = true, .splits_free_rotation = false,
      .max_turn_per_step = kFollowRk, .cost = kCostDop853},
     {.method = Method::implicit_midpoint, .name = "implicit_midpoint", .title = "implicit midpoint",
      .description = "midpoint rule on Euler's equations (keeps energy and |L| to round-off, GNI IV.2.1), Cayley orientation update keeps world L",
      .order = 2, .step = implicit_midpoint_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = true, .splits_free_rotation = false,
+     .closed_form_if_free = false, .geometric = true, .auto_candidate = true, .splits_free_rotation = false,
      .max_turn_per_step = kFollowGeometric, .cost = kCostImplicitMidpoint},
     {.method = Method::splitting, .name = "splitting", .title = "splitting (DLM)",
      .description = "symplectic, time-reversible NO_SQUISH / Dullweber–Leimkuhler–McLachlan splitting with exact planar sub-rotations; forces as Strang half kicks",
      .order = 2, .step = splitting_step, .coords_step = nullptr, .ordered_step = splitting_step_ordered, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = true, .splits_free_rotation = true,
+     .closed_form_if_free = false, .geometric = true, .auto_candidate = true, .splits_free_rotation = true,
      .max_turn_per_step = kFollowGeometric, .cost = kCostSplitting},
     {.method = Method::splitting4, .name = "splitting4", .title = "splitting, 4th order",
      .description = "Yoshida triple-jump composition of `splitting`",
      .order = 4, .step = splitting4_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = false, .auto_candidate = true, .splits_free_rotation = true,
+     .closed_form_if_free = false, .geometric = true, .auto_candidate = true, .splits_free_rotation = true,
      .max_turn_per_step = kFollowGeometric, .cost = kCostSplitting4},
     {.method = Method::exact, .name = "exact", .title = "exact (closed form)",
      .description = "closed-form torque-free rotation (Jacobi elliptic functions, elliptic integral of the third kind via Carlson's R_J); with forces, Strang-composed with exact half kicks",
      .order = 0, .step = exact_step, .coords_step = nullptr, .ordered_step = nullptr, .adaptive = nullptr,
-     .closed_form_if_free = true, .auto_candidate = true, .splits_free_rotation = false,
+     .closed_form_if_free = true, .geometric = true, .auto_candidate = true, .splits_free_rotation = false,
      .max_turn_per_step = kFollowGeometric, .cost = kCostExact},
 };
 static_assert(std::size(kTable) == kAllMethods.size());

@@ -71,6 +71,9 @@ struct MethodInfo {
   /// own step control and dense output; nullptr for fixed-step methods.
   MakeAdaptiveFn adaptive;
   bool closed_form_if_free;  ///< Propagator evaluates the closed form at any t when torque-free (exact)
+  /// Keeps world L exactly when torque-free and the energy bounded for ever
+  /// (a rotation map composed with Strang kicks, or the closed form).
+  bool geometric;
   bool auto_candidate;       ///< method = "auto" may pick it
   bool splits_free_rotation; ///< uses the splitting sub-flows (order chosen per body)
   /// Largest h·|ω| (rad per step) the method follows: beyond it a step cannot

@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "base/format.hpp"
-#include "core/embedded_rk.hpp"
+#include "core/methods/embedded_rk.hpp"
 #include "core/error.hpp"
 #include "core/fixed_stepper.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/quaternion.hpp"
 
 namespace tumble {

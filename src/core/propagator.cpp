@@ -95,7 +95,7 @@ void Propagator::diverged(bool finite, double t, double h) const {
   std::string msg = "diverged at t=" + format_number(t, 6) + " s, step " + std::to_string(steps_) + ", body '" +
                     m_->name + "', method " + std::string(info_->name) +
                     (finite ? " (energy grew beyond the work of the declared forces)" : "");
-  const bool geometric = cfg_.method == Method::splitting || cfg_.method == Method::exact;
+  const bool geometric = info_->geometric;
   if (std::isfinite(h) && h > 0)
     msg += "; try dt <= " + format_number(h / 10, 6) + " s" + (geometric ? "" : " or a geometric method (splitting, exact)");
   else if (!geometric)

@@ -9,9 +9,9 @@
 #include "core/body.hpp"
 #include "core/body_frame.hpp"
 #include "core/fixed_stepper.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
-#include "core/embedded_rk.hpp"
+#include "core/methods/embedded_rk.hpp"
 
 namespace tumble {
 

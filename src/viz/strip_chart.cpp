@@ -56,9 +56,9 @@ ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float
   // Margins in pixels turned into world units (half height = 1 world unit).
   const double px = 2.0 / std::max(height_px, 1);
   x0_ = -aspect_ + 5.5 * font_px * px;
-  double labels = 0;  // the widest head label and its gap, px
+  double labels = 0;  // the widest head label, its gap from the playhead and a margin, px
   if (in.direct_labels)
-    for (const Series& s : in.series) labels = std::max(labels, double(text_width(s.name, font_px)) + 0.6 * font_px);
+    for (const Series& s : in.series) labels = std::max(labels, double(text_width(s.name, font_px)) + 0.9 * font_px);
   x1_ = aspect_ - std::max(1.2 * font_px, labels) * px;
   y0_ = -1 + 2.4 * font_px * px;
   y1_ = 1 - head_layout(in, width_px, static_cast<float>(font_px)).top_px * px;
@@ -134,8 +134,10 @@ void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, 
   // read off the axis needs names close together more than it needs air).
   const float per_decade = std::abs(m.pixel(m.at(in.t0, 0)).y - m.pixel(m.at(in.t0, 1)).y);
   const int step = std::max({1, (last - first + 5) / 6, static_cast<int>(std::ceil(1.1f * f / std::max(per_decade, 1e-3f)))});
+  // Counted from 10⁰ where the axis holds it (a reader's anchor), else from the floor.
+  const int anchor = first <= 0 && last >= 0 ? 0 : first;
   for (int d = first; d <= last; ++d) {
-    if ((d - first) % step != 0) continue;
+    if (((d - anchor) % step + step) % step != 0) continue;
     const float y = m.pixel(m.at(in.t0, d)).y;
     view.texts.push_back({decade(d), {4.0f, y - 0.5f * f}, f, color_of(Meaning::ink), "tick"});
   }
@@ -168,17 +170,19 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
       }
   }
   std::stable_sort(heads.begin(), heads.end(), [](const Head& a, const Head& b) { return a.highest > b.highest; });
-  // Inside the chart's height: clear of the title above and the time ticks below.
-  const float top = m.pixel(m.at(in.t0, in.hi)).y - 0.5f * f, bottom = m.pixel(m.at(in.t0, in.lo)).y - 1.2f * f;
+  // Inside the chart's box: under its top border, over its bottom one.
+  const float top = m.pixel(m.at(in.t0, in.hi)).y + 0.15f * f, bottom = m.pixel(m.at(in.t0, in.lo)).y - 1.2f * f;
   for (std::size_t i = 0; i < heads.size(); ++i) {
     heads[i].y = std::clamp(heads[i].y, top, bottom);
     if (i > 0) heads[i].y = std::max(heads[i].y, heads[i - 1].y + 1.1f * f);
   }
   if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
   for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
+  // Right of the head, clear of the playhead: over the time still to come
+  // (no curve there yet), and past the box's right edge at the end.
   for (const Head& h : heads) {
     const Series& s = in.series[h.series];
-    view.texts.push_back({s.name, {h.at.x + 0.4f * f, h.y}, f, s.color, "series_label"});
+    view.texts.push_back({s.name, {h.at.x + 0.5f * f, h.y}, f, s.color, "series_label"});
   }
 }
 

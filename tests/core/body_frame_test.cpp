@@ -9,7 +9,7 @@
 
 #include "core/body_frame.hpp"
 #include "core/fixed_stepper.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/propagator.hpp"
 #include "core/quaternion.hpp"
 #include "reference_problem.hpp"

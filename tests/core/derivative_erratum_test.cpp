@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "core/dynamics.hpp"
-#include "core/explicit_rk.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/explicit_rk.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "reference_problem.hpp"
 
 namespace tumble {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/dynamics.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "reference_problem.hpp"
 #include "test_helpers.hpp"

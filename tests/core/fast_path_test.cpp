@@ -8,9 +8,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/explicit_rk.hpp"
-#include "core/rotation_steps.hpp"
-#include "core/splitting_kernel.hpp"
+#include "core/methods/explicit_rk.hpp"
+#include "core/methods/rotation_steps.hpp"
+#include "core/methods/splitting_kernel.hpp"
 #include "test_helpers.hpp"
 
 namespace tumble {

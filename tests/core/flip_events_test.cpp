@@ -7,7 +7,7 @@
 
 #include "core/dynamics.hpp"
 #include "core/flip_events.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "reference_problem.hpp"
 
 namespace tumble {

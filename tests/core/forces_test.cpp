@@ -8,7 +8,7 @@
 #include "core/integrator.hpp"
 #include "core/mass_properties.hpp"
 #include "core/propagator.hpp"
-#include "core/rotation_steps.hpp"
+#include "core/methods/rotation_steps.hpp"
 #include "test_helpers.hpp"
 
 namespace tumble {

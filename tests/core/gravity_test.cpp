@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/propagator.hpp"
 #include "core/quaternion.hpp"

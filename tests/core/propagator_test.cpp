@@ -10,7 +10,7 @@
 
 #include "core/dynamics.hpp"
 #include "core/error.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/propagator.hpp"
 #include "core/quaternion.hpp"
 #include "reference_problem.hpp"

@@ -6,7 +6,7 @@
 
 #include "core/body_frame.hpp"
 #include "core/body_frame_tuned.hpp"
-#include "core/rotation_steps.hpp"
+#include "core/methods/rotation_steps.hpp"
 #include "test_helpers.hpp"
 
 namespace tumble {

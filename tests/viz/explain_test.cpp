@@ -356,6 +356,22 @@ TEST(StripChart, ALogAxisIsTickedAtItsDecades) {
                                              "10\u207b\u00b2", "10\u2070"}));
 }
 
+TEST(StripChart, ALogAxisNamesTenToTheZeroWhereItHoldsIt) {
+  StripChartInput in;
+  in.times = {0, 1};
+  in.series = {{"euler", {-3.0, -1.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 2, in.lo = -9, in.hi = 1, in.playhead = 1;  // ten decades, a decade above 10⁰
+  in.log10 = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  std::vector<std::string> ticks;
+  for (const TextItem& t : v.texts)
+    if (t.name == "tick" && t.position_px.x < 10) ticks.push_back(t.text);
+  // Every second decade counted from 10⁰, not from the floor (10⁻⁹, 10⁻⁷, … would skip 10⁰).
+  EXPECT_EQ(ticks, (std::vector<std::string>{"10\u207b\u2078", "10\u207b\u2076", "10\u207b\u2074", "10\u207b\u00b2",
+                                             "10\u2070"}));
+}
+
 TEST(StripChart, DirectLabelsNameEachCurveAtItsHeadApart) {
   StripChartInput in;
   in.times = {0, 1, 2};
@@ -363,7 +379,7 @@ TEST(StripChart, DirectLabelsNameEachCurveAtItsHeadApart) {
   in.series = {{"euler", {-1.0, -0.5, 0.0}, {1, 0, 0, 1}},
                {"rk4", {-1.0, -0.5, -0.01}, {0, 1, 0, 1}},
                {"splitting", {-8.0, -9.0, std::nan("")}, {0, 0, 1, 1}}};
-  in.t0 = 0, in.t1 = 2, in.lo = -10, in.hi = 1, in.playhead = 2;
+  in.t0 = 0, in.t1 = 4, in.lo = -10, in.hi = 1, in.playhead = 2;  // room to the right of the playhead
   in.direct_labels = true;
   View v;
   build_strip_chart(v, in, 600, 200, 12.0f);
@@ -383,6 +399,30 @@ TEST(StripChart, DirectLabelsNameEachCurveAtItsHeadApart) {
     EXPECT_NEAR(t->position_px.y + 6.0f, head.y, i == 2 ? 1e-3 : 13.2) << t->text;   // at its height, or pushed apart
   }
   EXPECT_GE(std::abs(labels[0]->position_px.y - labels[1]->position_px.y), 1.1f * 12.0f - 1e-3f);
+}
+
+TEST(StripChart, DirectLabelsStayOffThePlayheadAndBordersAtTheEnd) {
+  StripChartInput in;
+  in.times = {0, 1, 2};
+  // The run's end: no room right of the heads. The top curve lies on the chart's upper edge.
+  in.series = {{"explicit Euler", {-1.0, 0.0, 1.0}, {1, 0, 0, 1}}, {"rk4", {-8.0, -8.0, -8.0}, {0, 1, 0, 1}}};
+  in.t0 = 0, in.t1 = 2, in.lo = -10, in.hi = 1, in.playhead = 2;
+  in.direct_labels = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  const ChartMap m(in, 600, 200, 12.0f);
+  const glm::vec2 top_left = m.pixel(m.at(0, in.hi)), bottom_right = m.pixel(m.at(2, in.lo));
+  int named = 0;
+  for (const TextItem& t : v.texts) {
+    if (t.name != "series_label") continue;
+    ++named;
+    const float x0 = t.position_px.x, x1 = x0 + text_width(t.text, 12.0f);
+    EXPECT_GE(x0, bottom_right.x + 0.4f * 12.0f) << t.text;  // clear of the playhead (at the box's right end)
+    EXPECT_LE(x1, 600.0f - 0.2f * 12.0f) << t.text;          // not clipped at the view's right edge
+    EXPECT_GT(t.position_px.y, top_left.y) << t.text;        // under the top border, not on it
+    EXPECT_LT(t.position_px.y + 12.0f, bottom_right.y) << t.text;
+  }
+  EXPECT_EQ(named, 2);
 }
 
 TEST(StripChart, DirectLabelsKeepTheirOrderWhenACurveDipsForAMoment) {

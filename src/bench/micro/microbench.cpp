@@ -9,7 +9,7 @@
 #include "bench/problems.hpp"
 #include "bench/soa_splitting.hpp"
 #include "core/fixed_stepper.hpp"
-#include "core/free_rotation_exact.hpp"
+#include "core/methods/free_rotation_exact.hpp"
 #include "core/integrator.hpp"
 #include "core/mass_properties.hpp"
 #include "core/propagator.hpp"
@@ -89,7 +89,7 @@ void BM_Stepping(benchmark::State& st) {
 BENCHMARK(BM_Stepping)
     ->Apply([](benchmark::internal::Benchmark* b) {
       for (std::size_t i = 0; i < kAllMethods.size(); ++i)
-        if (!method_info(kAllMethods[i]).adaptive && kAllMethods[i] != Method::exact) b->Arg(static_cast<int64_t>(i));
+        if (!method_info(kAllMethods[i]).adaptive && !method_info(kAllMethods[i]).closed_form_if_free) b->Arg(static_cast<int64_t>(i));
     })
     ->Unit(benchmark::kMillisecond);
 

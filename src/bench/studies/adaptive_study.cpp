@@ -25,7 +25,7 @@
 #include "bench/studies.hpp"
 #include "core/body_frame.hpp"
 #include "core/dynamics.hpp"
-#include "core/embedded_rk.hpp"
+#include "core/methods/embedded_rk.hpp"
 
 using namespace tumble;
 namespace odeint = boost::numeric::odeint;

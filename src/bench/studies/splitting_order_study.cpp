@@ -30,8 +30,8 @@
 #include <vector>
 
 #include "core/body.hpp"
-#include "core/free_rotation_exact.hpp"
-#include "core/splitting_kernel.hpp"
+#include "core/methods/free_rotation_exact.hpp"
+#include "core/methods/splitting_kernel.hpp"
 
 using namespace tumble;
 
