@@ -185,7 +185,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const std::size_t front_first = view.polylines.size();
   add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
   // The body's own polhode, wide, then the separatrix dashed over it: where
-  // the two run together both stay visible (magenta edges, sky-blue dashes).
+  // the two run together both stay visible (crimson edges, sky-blue dashes).
   const auto own = in.trail ? std::vector<Eigen::Vector3d>{} : own_polhode(I, in.momentum, 192);
   if (!own.empty()) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});

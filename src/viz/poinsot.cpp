@@ -14,11 +14,15 @@ namespace tumble::viz {
 
 namespace {
 
-// Two unit vectors spanning the plane ⊥ n.
+// Two unit vectors spanning the plane ⊥ n, as a world or body_frame view's
+// camera across −L spans it (compose::across_camera: u the side nearest world
+// −y, v = −n × u), so the same azimuth and elevation look from the same
+// direction in both and e₁ points the same way in them.
 void plane_basis(const Eigen::Vector3d& n, Eigen::Vector3d& u, Eigen::Vector3d& v) {
-  const Eigen::Vector3d a = std::abs(n.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-  u = n.cross(a).normalized();
-  v = n.cross(u);
+  u = -Eigen::Vector3d::UnitY() + n.y() * n;
+  if (u.norm() < 1e-3) u = Eigen::Vector3d::UnitX() - n.x() * n;
+  u.normalize();
+  v = (-n).cross(u);
 }
 
 }  // namespace
@@ -60,7 +64,7 @@ struct PoinsotFrame {
 // (by default 40° above it, so the herpolhode opens up instead of lying edge-on).
 void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSettings& c) {
   const Eigen::Vector3d up = -f.p.normal;
-  const Eigen::Vector3d target = 0.3 * f.foot + 0.25 * up;  // the key above the ellipsoid
+  const Eigen::Vector3d target = 0.5 * f.foot;  // halfway from the centre to the plane: the ellipsoid fills the view
   view.camera = Camera{};
   view.name = "poinsot";
   view.camera.target = to_glm(target);
@@ -103,7 +107,7 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
 // a hair above it (towards the ellipsoid) so nothing fights its depth.
 void add_invariable_plane(View& view, const PoinsotFrame& f) {
   const double half = 1.6, lift = 0.5 * kHerpolhodeLift;
-  view.surfaces.push_back(rectangle(to_glm(f.foot), to_glm(f.u * half), to_glm(f.v * half), kPlaneColor));
+  view.surfaces.push_back(rectangle(to_glm(f.foot), to_glm(f.v * half), to_glm(f.u * half), kPlaneColor));  // normal v × u = L̂
   view.surfaces.back().name = "plane";
   const Color grid = color_of(Meaning::plane, 0.45f);
   const Eigen::Vector3d on = f.foot - lift * f.p.normal;
@@ -131,27 +135,31 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
 }
 
-// A name beside the point `at` (settle_labels keeps it next to it, clear of other text).
-void add_direct_label(View& view, const ViewportProjection& project, const glm::dvec3& at, const char* text, Color color,
-                      float size, const char* name) {
-  glm::vec2 px;
-  if (!project(at, px)) return;
-  TextItem t{text, {centred_x(text, size, px.x), px.y - 0.5f * size}, size, color, name};
-  t.subject_px = {px.x - 4, px.y - 4, px.x + 4, px.y + 4};
+// A curve's name beside its extent on screen (the extent is the label's
+// subject: compose/label_pins pins it once per run beside where the curve went).
+void add_curve_label(View& view, const ViewportProjection& project, const std::vector<glm::dvec3>& curve, const char* text,
+                     Color color, float size, const char* name) {
+  glm::vec4 box{1e30f, 1e30f, -1e30f, -1e30f};
+  for (const glm::dvec3& p : curve) {
+    glm::vec2 px;
+    if (!project(p, px)) continue;
+    box = {std::min(box.x, px.x), std::min(box.y, px.y), std::max(box.z, px.x), std::max(box.w, px.y)};
+  }
+  if (box.z < box.x) return;
+  const glm::vec2 c{0.5f * (box.x + box.z), 0.5f * (box.y + box.w)};
+  TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, color, name};
+  t.subject_px = box + glm::vec4(-4, -4, 4, 4);
   view.texts.push_back(std::move(t));
 }
 
-// The polhode, the herpolhode and the plane named on the picture, not in a key:
-// each curve at its oldest point, the plane at a corner clear of the ellipsoid.
+// The polhode and the herpolhode named beside them, the plane at a corner clear of the ellipsoid.
 void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h);
-  if (in.omega_principal_history.size() >= 2)
-    add_direct_label(view, project, to_glm(in.q * in.omega_principal_history.front() * f.scale * 1.006), "polhode",
-                     color_of(Meaning::polhode), size, "label_polhode");
-  if (in.omega_world_history.size() >= 2)
-    add_direct_label(view, project, to_glm(in.omega_world_history.front() * f.scale - kHerpolhodeLift * f.p.normal),
-                     "herpolhode", color_of(Meaning::herpolhode), size, "label_herpolhode");
+  for (const PolylineItem& l : view.polylines) {
+    if (l.name == "polhode") add_curve_label(view, project, l.points, "polhode", l.color, size, "label_polhode");
+    if (l.name == "herpolhode") add_curve_label(view, project, l.points, "herpolhode", l.color, size, "label_herpolhode");
+  }
   // The plane at the corner in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;
   if (!project(to_glm(f.foot), foot)) return;
@@ -164,7 +172,12 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
       const bool shown = project(c, px) && px.x > 0 && px.x < in.width_px && px.y > 0 && px.y < in.height_px;
       if (shown && glm::length(px - foot) > farthest) farthest = glm::length(px - foot), corner = c;
     }
-  if (farthest >= 0) add_direct_label(view, project, corner, "invariable plane", color_of(Meaning::plane), size, "label_plane");
+  glm::vec2 px;
+  if (farthest < 0 || !project(corner, px)) return;
+  TextItem t{"invariable plane", {centred_x("invariable plane", size, px.x), px.y - 0.5f * size}, size,
+             color_of(Meaning::ink), "label_plane"};
+  t.subject_px = {px.x - 4, px.y - 4, px.x + 4, px.y + 4};
+  view.texts.push_back(std::move(t));
 }
 
 }  // namespace

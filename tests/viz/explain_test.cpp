@@ -129,6 +129,19 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
     EXPECT_GT(t->subject_px.z, t->subject_px.x) << name;  // kept beside what it names
     EXPECT_TRUE(t->subject_px.x >= 0 && t->subject_px.z <= 640 && t->subject_px.y >= 0 && t->subject_px.w <= 360) << name;
   }
+  // A curve's name has the whole curve on screen as its subject: it is pinned beside where the curve goes.
+  const ViewportProjection project(v.camera, 640, 360);
+  for (const std::string name : {"polhode", "herpolhode"}) {
+    const auto t = std::find_if(v.texts.begin(), v.texts.end(), [&](const TextItem& x) { return x.text == name; });
+    const auto curve = std::find_if(v.polylines.begin(), v.polylines.end(), [&](const PolylineItem& l) { return l.name == name; });
+    ASSERT_NE(curve, v.polylines.end()) << name;
+    for (const glm::dvec3& q : curve->points) {
+      glm::vec2 px;
+      ASSERT_TRUE(project(q, px));
+      EXPECT_TRUE(px.x >= t->subject_px.x && px.x <= t->subject_px.z && px.y >= t->subject_px.y && px.y <= t->subject_px.w)
+          << name;
+    }
+  }
 }
 
 TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {

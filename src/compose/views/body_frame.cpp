@@ -18,6 +18,7 @@ namespace {
 
 constexpr double kBodyMargin = 0.04;
 constexpr long kBodyFitSamples = 240;
+constexpr float kBodyAlpha = 0.6f;
 
 // The camera at t = 0: aimed at the body from the view's azimuth and
 // elevation (default: the scene camera's direction), `distance` body radii away.
@@ -64,6 +65,8 @@ class BodyFramePanel : public Panel {
     for (long i = 0; i < std::min(n, kBodyFitSamples); ++i) {
       const viz::View v = content(n <= kBodyFitSamples ? i : i * (n - 1) / (kBodyFitSamples - 1));
       shots.push_back(solid_shot(v));
+      for (const viz::PolylineItem& l : v.polylines)  // L's trail stays in view too
+        if (l.name == "L_trail") shots.back().points.insert(shots.back().points.end(), l.points.begin(), l.points.end());
     }
     // Arrows carry their names past (or, short of room, beside) their tips: a name's width across, half a line up and down.
     const double tip = viz::text_px(viz::TextRole::label, ctx_.frame_h);
@@ -90,10 +93,38 @@ class BodyFramePanel : public Panel {
     }
     viz::View v = ctx_.world.view(0, k, cam, int(size_.x), int(size_.y), body_);
     v.name = name();
+    // The view's title names its body: no name label on a body that stands still in it.
+    std::erase_if(v.texts, [](const viz::TextItem& t) { return t.name.rfind("label:", 0) == 0; });
+    // A camera turning with the body: the body a little see-through, as it is
+    // the frame here and the vectors turning inside it (L, ω, an axis along the
+    // line of sight) stay seen and named.
+    if (vc_.camera.follow.value_or(true))
+      for (viz::SurfaceItem& sf : v.surfaces)
+        if (sf.name.empty()) sf.color.a = std::min(sf.color.a, kBodyAlpha);
+    if (kk >= 0) add_L_trail(v, kk);
     return v;
   }
 
  private:
+  // The path of L's tip so far, as seen from the body: each earlier L turned
+  // by the body's turn since then, so it rides with the body as the camera does.
+  void add_L_trail(viz::View& v, long kk) const {
+    const auto L = std::find_if(v.arrows.begin(), v.arrows.end(), [](const viz::ArrowItem& a) { return a.name == "L"; });
+    if (L == v.arrows.end()) return;
+    const scene::Run& run = ctx_.runs[0];
+    const RigidBodyModel& m = ctx_.scene.bodies[body_].model;
+    const BodyState& sk = run.frames[static_cast<std::size_t>(kk)][body_];
+    const Eigen::Quaterniond now(cloud_orientation(m, sk));
+    const glm::dvec3 tip = L->vector;
+    viz::PolylineItem trail{{}, viz::color_of(viz::Meaning::L, 0.55f), 2.0f, false, "L_trail"};
+    for (long j = 0; j <= kk; ++j) {
+      const BodyState& sj = run.frames[static_cast<std::size_t>(j)][body_];
+      const Eigen::Quaterniond turn = now * Eigen::Quaterniond(cloud_orientation(m, sj)).conjugate();
+      trail.points.push_back(L->origin + viz::to_glm(turn * Eigen::Vector3d(tip.x, tip.y, tip.z)));
+    }
+    if (trail.points.size() >= 2) v.polylines.push_back(std::move(trail));
+  }
+
   const PanelContext& ctx_;
   const scene::ViewConfig& vc_;
   std::size_t body_;

@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kPoinsotMargin = 0.04;
 constexpr long kPoinsotFitSamples = 120;
-constexpr double kPoinsotClosest = 0.5;
+constexpr double kPoinsotClosest = 0.3;
 
 // Points on the inertia ellipsoid's surface (its unit sphere under its model), for the camera fit.
 void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& out) {

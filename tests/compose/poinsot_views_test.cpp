@@ -1,0 +1,67 @@
+// poinsot.toml's views, checked on the draw list (no GL): the Poinsot views
+// and the view of the bodies in space look from one direction (so e₁ points
+// the same way in an ellipsoid and in its box), and the body-fixed view draws
+// the path of L's tip, ending at L's tip, with no name on its still body.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "compose/frame_builder.hpp"
+#include "scene/frame_clock.hpp"
+#include "scene/frame_runs.hpp"
+#include "scene/scene.hpp"
+#include "viz/draw_list.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using tumble::compose::FrameBuilder;
+
+struct Lesson {
+  tumble::scene::Scene scene = tumble::scene::load_scene(fs::path(TUMBLE_SOURCE_DIR) / "scenes" / "poinsot.toml");
+  double fps = scene.render.output.fps;
+  long frames = tumble::scene::frame_clock(scene, fps).count();
+  std::vector<tumble::scene::Run> runs = tumble::scene::simulate_runs(scene, frames, fps);
+};
+
+glm::dvec3 eye(const tumble::viz::Camera& c) { return glm::normalize(c.position - c.target); }
+
+TEST(PoinsotViews, EllipsoidsAndBoxesAreSeenFromOneDirection) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  for (const long k : {200L, 700L, 1500L}) {
+    std::vector<tumble::viz::Camera> poinsot, world;
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name == "poinsot") poinsot.push_back(v.camera);
+      if (v.name == "world") world.push_back(v.camera);
+    }
+    ASSERT_EQ(poinsot.size(), 2u);
+    ASSERT_EQ(world.size(), 1u);
+    for (const tumble::viz::Camera& c : poinsot) {
+      EXPECT_GT(glm::dot(eye(c), eye(world[0])), 0.9999) << "frame " << k;
+      EXPECT_GT(glm::dot(glm::normalize(c.up), glm::normalize(world[0].up)), 0.9999) << "frame " << k;
+    }
+  }
+}
+
+TEST(PoinsotViews, BodyFixedViewTracesLsTipAndNamesNoStillBody) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  int trails = 0;
+  for (long k = 100; k < l.frames; k += 97)
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name != "body_frame") continue;
+      for (const tumble::viz::TextItem& t : v.texts) EXPECT_NE(t.name.rfind("label:", 0), 0u) << t.name << " at " << k;
+      const auto L = std::find_if(v.arrows.begin(), v.arrows.end(), [](const auto& a) { return a.name == "L"; });
+      const auto trail = std::find_if(v.polylines.begin(), v.polylines.end(), [](const auto& p) { return p.name == "L_trail"; });
+      ASSERT_NE(L, v.arrows.end());
+      ASSERT_NE(trail, v.polylines.end()) << "frame " << k;
+      ++trails;
+      EXPECT_LT(glm::length(trail->points.back() - (L->origin + L->vector)), 1e-9) << "frame " << k;
+      for (const glm::dvec3& p : trail->points)  // L keeps its length: every point as far from the centre as its tip
+        EXPECT_NEAR(glm::length(p - L->origin), glm::length(L->vector), 1e-9) << "frame " << k;
+    }
+  EXPECT_GT(trails, 10);
+}
+
+}  // namespace
