@@ -95,7 +95,7 @@ def test_render_frame_out_of_range_says_so():
     assert error_of(lambda: tumble.render_frame(scene, t=16.5)) == \
         "tumble.render_frame(t=16.5): error: expected a time in [0, 16] s, the scene's duration"
     assert error_of(lambda: tumble.render_frame(scene, frame=-1)) == \
-        "tumble.render_frame(frame=-1): error: expected a frame index in 0..951 (952 frames at 30 fps)"
+        "tumble.render_frame(frame=-1): error: expected a frame index in 0..1119 (1120 frames at 30 fps)"
 
 
 def test_values_are_numpy_and_read_well():

@@ -172,7 +172,7 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
   if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
     const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "principal box"});
+    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box along the principal axes"});
   }
   // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });

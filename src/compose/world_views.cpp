@@ -95,7 +95,22 @@ std::string power_for_people(double v) {
   return s.rfind(one, 0) == 0 ? s.substr(one.size()) : s;
 }
 
-// The overlay line: time, method, step, energy error, as the scene's overlay asks.
+// Three significant digits, fixed: "1.17", "0.293", "8.00" (not "8").
+std::string three_digits(double v) {
+  const int after = std::isfinite(v) && v != 0 ? std::clamp(2 - static_cast<int>(std::floor(std::log10(std::abs(v)))), 0, 6) : 2;
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*f", after, v);
+  return text;
+}
+
+// The first body's energy, |L| and |ω| (world): E and |L| stay fixed in a
+// free body while |ω| changes, which the readout lets one see.
+std::string state_readout(const viz::BodySnapshot& b) {
+  return "E = " + three_digits(total_energy(*b.model, b.state)) + " J   |L| = " + three_digits(b.state.L.norm()) +
+         " kg\u00b7m\u00b2/s   |\u03c9| = " + three_digits(omega_world(*b.model, b.state).norm()) + " rad/s";
+}
+
+// The overlay line: time, method, step, energy error, state, as the scene's overlay asks.
 std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
                          const std::vector<viz::BodySnapshot>& snaps, double t, double floor) {
   // Largest relative energy error over the bodies: the failure users look
@@ -127,6 +142,7 @@ std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run
   part(items.method && run_count == 1, run.label);
   part(items.step, run.step_label);
   part(items.energy, energy);
+  part(items.state && !snaps.empty(), snaps.empty() ? std::string() : state_readout(snaps.front()));
   return line;
 }
 

@@ -122,13 +122,14 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.arrow_length = r.number("arrow_length", Range::closed(0.25, 4)).value_or(d.arrow_length);
   if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
     // A list of the overlay's items: only those are shown.
-    d.overlay_items = {false, false, false, false};
+    d.overlay_items = {false, false, false, false, false};
     for (const std::string& item : r.strings("overlay").value_or(std::vector<std::string>{})) {
       if (item == "time") d.overlay_items.time = true;
       else if (item == "method") d.overlay_items.method = true;
       else if (item == "step") d.overlay_items.step = true;
       else if (item == "energy") d.overlay_items.energy = true;
-      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", found " + quote_token(item));
+      else if (item == "state") d.overlay_items.state = true;
+      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", \"state\", found " + quote_token(item));
     }
     d.overlay = d.overlay_items.any();
   } else {

@@ -88,7 +88,8 @@ struct CameraConfig {
 /// Lines of the overlay, each switchable (`[draw] overlay = ["time", ...]`).
 struct OverlayItems {
   bool time = true, method = true, step = true, energy = true;
-  bool any() const { return time || method || step || energy; }
+  bool state = false;  ///< E, |L| and |ω| of the first body: only when asked for
+  bool any() const { return time || method || step || energy || state; }
 };
 
 /// `[draw]`: viz's options for the bodies (box, axes, particles, L, ω,

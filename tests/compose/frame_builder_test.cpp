@@ -69,4 +69,32 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   EXPECT_TRUE(has(fb.build(after), "paused"));
 }
 
+// The demo's readout: E and |L| read the same at the start and mid-flip-1
+// (a free body keeps both), |ω| does not; the start's values are the exact
+// ones, E = ½ ω·Iω and |L| = |Iω| from the scene's ω and `tumble info`'s moments.
+TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov.toml");
+  ASSERT_TRUE(s.render.draw.overlay_items.state);
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k0 = 0, k1 = 0;
+  while (k1 + 1 < clock.count() && clock.time(k1) < 1.80) ++k1;
+  const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
+  auto readout = [&](long k) {
+    for (const tumble::viz::View& v : fb.build(k).views)
+      for (const tumble::viz::TextItem& t : v.texts)
+        if (t.text.find("|L| = ") != std::string::npos) return t.text.substr(t.text.find("E = "));
+    return std::string();
+  };
+  while (k0 < k1 && readout(k0).empty()) ++k0;  // the first frame after the title card
+  ASSERT_LT(clock.time(k0), 0.05);
+  const std::string start = readout(k0), flip = readout(k1);
+  EXPECT_EQ(start, "E = 1.17 J   |L| = 0.293 kg\u00b7m\u00b2/s   |\u03c9| = 8.00 rad/s");
+  ASSERT_FALSE(flip.empty());
+  EXPECT_EQ(flip.substr(0, flip.find("|\u03c9|")), start.substr(0, start.find("|\u03c9|")));
+  EXPECT_NE(flip, start);  // |ω| changes at the flip
+}
+
 }  // namespace

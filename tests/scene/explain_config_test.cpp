@@ -106,6 +106,8 @@ time_scale = 0.1
   EXPECT_TRUE(e.labels);
   EXPECT_TRUE(s.render.draw.overlay_items.time && s.render.draw.overlay_items.energy);
   EXPECT_FALSE(s.render.draw.overlay_items.method || s.render.draw.overlay_items.step);
+  EXPECT_FALSE(s.render.draw.overlay_items.state);  // only when named
+  EXPECT_TRUE(load("[draw]\noverlay = [\"state\"]\n").render.draw.overlay_items.state);
   ASSERT_EQ(e.views.size(), 2u);
   EXPECT_EQ(e.views[1].kind, ViewKind::plot);
   EXPECT_EQ(e.views[1].series.size(), 2u);

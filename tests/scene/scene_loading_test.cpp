@@ -43,7 +43,7 @@ TEST(ShippedScenes, RequiredDemosExist) {
     EXPECT_TRUE(fs::exists(kScenes / (std::string(n) + ".toml"))) << n;
   const auto cmp = load_scene(kScenes / "methods_compare.toml");
   EXPECT_EQ(cmp.render.compare_methods,
-            (std::vector<Method>{Method::euler, Method::rk4, Method::splitting, Method::exact}));
+            (std::vector<Method>{Method::euler, Method::rk4, Method::exact}));
   EXPECT_EQ(load_scene(kScenes / "stable_spin.toml").bodies.size(), 3u);
 }
 
