@@ -83,6 +83,12 @@ struct ViewConfig {
   bool y_log = false;               ///< plot: log10 of |value| (y_scale = "log"), for errors over decades
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")
+  /// momentum_sphere `turn`: from the first frame showing simulated `at`, its
+  /// fixed camera turns to `azimuth`/`elevation` over `seconds` of video (eased in and out).
+  struct Turn {
+    double at = 0, azimuth_deg = 0, elevation_deg = 0, seconds = 1;
+  };
+  std::optional<Turn> turn;
 };
 
 /// Names of the plot series, in the order of `plot_series_names()`.

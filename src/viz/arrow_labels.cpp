@@ -104,9 +104,11 @@ std::optional<TextItem> place_tip(const ArrowItem& a, glm::vec2 base, glm::vec2 
   const glm::vec2 along = tip - base;
   const float len = glm::length(along);
   const glm::vec2 d0 = len > 0.3f * label_px ? along / len : glm::vec2(0, -1);
+  // Just past the head; where every turn is taken (a tip inside the body, L along an axis), a line or two further out.
+  for (const float further : {0.0f, 1.0f, 2.0f})
   for (const float turn : kTurns) {
     const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
-    const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.2f * label_px;
+    const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + (0.2f + further) * label_px;
     const glm::vec2 centre = tip + reach * d;
     TextItem t{a.tip, {centred_x(a.tip, label_px, centre.x), centre.y - 0.5f * label_px}, label_px, a.color,
                "tip:" + (a.name.empty() ? a.tip : a.name)};

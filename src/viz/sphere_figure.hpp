@@ -29,10 +29,10 @@ std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>&
 inline constexpr double kAxisReach = 1.22, kAxisLabelReach = 1.37;
 
 /// Adds the axes through the sphere (+e_i arrows, −e_i lines) and a label at
-/// each end the ball does not hide and the view shows ("e₁" named
-/// axis_label_e1, "−e₁" named axis_label_-e1, ...): just past the end on
-/// screen, along the axis as drawn (at the ball's rim when the axis points at
-/// the camera), turned until it is clear of the six half-axes.
+/// each end the ball does not hide ("e₁" named axis_label_e1, "−e₁" named
+/// axis_label_-e1, ...): just past its own tip on screen, along the axis as
+/// drawn (up and right of an end pointing at the camera), turned until it is
+/// clear of the six half-axes. An end behind the ball is not named.
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px);
 
 /// The saddles ±e₂ (points named saddle_+e2, saddle_-e2) on the unit sphere.
