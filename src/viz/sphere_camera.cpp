@@ -97,7 +97,7 @@ SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen
   auto sign = [](double x) { return x < 0 ? -1.0 : 1.0; };
   // 12°: the pole's loop is seen nearly from above, both separatrix circles
   // open (they lean about 30° from e₃ for a T-handle, either way), ±e₂ on the
-  // rim left and right; the far end of the pole's axis is named at the rim.
+  // rim left and right; the far end of the pole's axis is behind the ball.
   constexpr double kTilt = 12 * kDeg;
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   d[pole] = std::cos(kTilt) * sign(pi0[pole]);

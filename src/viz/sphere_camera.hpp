@@ -44,8 +44,8 @@ inline constexpr double kSphereReach = 1.5;
 /// tilted 12° from it towards the other pole's axis, with ±e₂ across the
 /// picture on the rim: the whole polhode lies in front (a loop near the
 /// separatrix runs from saddle to saddle over the near hemisphere); the far
-/// end of the pole's axis, behind the ball, is named at the rim; from far
-/// away (distance 14), nearly without perspective.
+/// end of the pole's axis lies behind the ball (not named); from far away
+/// (distance 14), nearly without perspective.
 SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi0);
 
 /// Poses at each sample (times `t`, s, ascending; Π in the principal frame).
