@@ -46,7 +46,7 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
   long k = 0;
-  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 0.5)) ++k;
+  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 0.1)) ++k;  // the first hold after the start: flip 1
   ASSERT_TRUE(clock.in_hold(k));
   long last = k;  // the hold's last frame: still named, however long the hold
   while (last + 1 < clock.count() && clock.in_hold(last + 1)) ++last;
