@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -122,6 +123,29 @@ TEST(LessonFigures, TheSphereTurnsSlowlyInTheEndHold) {
   EXPECT_LT(glm::degrees(widest), 1.0);  // slowly: under 1° a frame
   // At the end, e₁ is at least 30° from edge-on (its loops open).
   EXPECT_GT(std::abs(target.x), std::sin(glm::radians(30.0)));
+}
+
+// [draw] tip_names_further: on dzhanibekov_explained's T-handle at the stop after flip 1
+// (frame 700, 960×540) the tips of ω and e₃ lie on the handle; without it
+// their names are left out, with it they are drawn a line or two further out.
+TEST(LessonFigures, TipNamesFurtherOutNameOmegaAndE3OnTheHandle) {
+  tumble::scene::Scene s = tumble::scene::load_scene(fs::path(TUMBLE_SOURCE_DIR) / "scenes" / "dzhanibekov_explained.toml");
+  ASSERT_TRUE(s.render.draw.tip_names_further);
+  const double fps = s.render.output.fps;
+  const auto runs = simulate_runs(s, 701, fps);
+  auto names = [&](bool further) {
+    s.render.draw.tip_names_further = further;
+    const FrameBuilder fb(s, runs, fps, 960, 540);
+    std::set<std::string> out;
+    for (const tumble::viz::View& v : fb.build(700).views)
+      for (const tumble::viz::TextItem& t : v.texts)
+        if (t.name.rfind("tip:", 0) == 0) out.insert(t.name);
+    return out;
+  };
+  const std::set<std::string> with = names(true), without = names(false);
+  EXPECT_TRUE(with.count("tip:omega") && with.count("tip:e3"));
+  EXPECT_FALSE(without.count("tip:omega") && without.count("tip:e3"));
+  for (const std::string& n : without) EXPECT_TRUE(with.count(n)) << n << " lost";
 }
 
 // A phone: 75.8 × 160.8 × 7.8 mm, three lattice cells through its thickness
