@@ -59,7 +59,8 @@ struct ViewCamera {
   /// world and body_frame views: across = "L" (+1) or "-L" (−1) looks across
   /// L at t = 0, L up (down) in the picture plane (scene.hpp, CameraConfig)
   int across = 0;
-  /// world views only: as [camera] (m, world; degrees)
+  /// world views only: as [camera] (m, world; degrees); `up` also a
+  /// momentum_sphere's picture up, in principal axes (default +e₃)
   std::optional<std::array<double, 3>> position, target, up;
   std::optional<double> fov_y_deg;
 };

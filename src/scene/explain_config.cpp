@@ -112,7 +112,7 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   }
   TableReader c(*t, r.key_path("camera"), ctx.diag,
                 v.kind == ViewKind::world ? std::vector<std::string_view>{"across", "azimuth", "elevation"}
-                                          : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow"});
+                                          : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow", "up"});
   if (across) v.camera.across = read_across(c);
   v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
   // A sphere may be seen straight down an axis (its up is then the azimuth's direction); other views keep 1° off.
@@ -120,6 +120,11 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   v.camera.elevation_deg = c.number("elevation", Range::closed(-steepest, steepest));
   v.camera.distance = c.number("distance", Range::closed(1.5, 100));
   v.camera.follow = c.boolean("follow");
+  if (const auto up = c.vec3("up")) {
+    if (v.kind != ViewKind::momentum_sphere) c.error("up", "only a momentum_sphere view takes up (a principal direction)");
+    else if (up->norm() < 1e-12) c.error("up", "expected a non-zero direction");
+    else v.camera.up = std::array<double, 3>{up->x(), up->y(), up->z()};
+  }
 }
 
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,

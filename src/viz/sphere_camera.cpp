@@ -77,6 +77,8 @@ Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s) {
     // Straight down ±e3 the azimuth's direction is up (elevation 90, azimuth 90: +e2 at the top).
     const bool down_e3 = std::abs(std::abs(s.elevation_deg) - 90) < 1e-9;
     up = down_e3 ? Eigen::Vector3d(std::cos(az), std::sin(az), 0) : Eigen::Vector3d::UnitZ();
+    // A chosen up (e.g. +e₂, as the body's own view stands), unless it lies along the view.
+    if (s.up.norm() > 0 && s.up.normalized().cross(dir).norm() > 1e-3) up = s.up.normalized();
   }
   Camera c;
   const Eigen::Vector3d eye = s.distance * dir.normalized();

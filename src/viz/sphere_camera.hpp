@@ -32,6 +32,7 @@ struct SphereCameraSettings {
   double follow_s = 0.15;      ///< time constant of the filter, simulated s
   double max_lag_deg = 35;     ///< the followed direction stays this close to Π̂
   double max_turn_deg = 60;    ///< ... and this close to where it started: the figure never turns round
+  Eigen::Vector3d up{0, 0, 0}; ///< fixed camera: the picture's up (principal axes); zero: +e3
   double reach = 1.5;          ///< half the view's height, in |L| (the momentum sphere: its axis labels)
 };
 

@@ -187,6 +187,11 @@ void show_far_side(View& view, std::size_t first_polyline, double ball) {
       const bool hidden = hidden_by_ball(eye, p.points[start], ball);
       std::size_t end = start + 1;
       while (end + 1 < p.points.size() && hidden_by_ball(eye, p.points[end], ball) == hidden) ++end;
+      // The separatrix's back half is not drawn: seen through the ball it reads as a ring round the near pole.
+      if (hidden && p.name == "separatrix") {
+        start = end;
+        continue;
+      }
       PolylineItem run{{}, hidden ? faint(p.color) : p.color, hidden ? 0.75f * p.width_px : p.width_px, p.fade,
                        hidden ? "" : p.name};
       for (std::size_t j = start; j <= end; ++j)

@@ -2,8 +2,8 @@
 // refined where they bend; ±e₁, ±e₂, ±e₃ labelled at every end that can be
 // seen; the saddles ±e₂ marked; arrows along the level curves giving the
 // direction of motion (dΠ/dt = Π × ω, ω = I⁻¹Π); and the far side of what a
-// viewer follows (separatrix, polhode, Π) shown faintly through the ball, as a
-// textbook draws a sphere's hidden half. GL-free.
+// viewer follows (polhode, Π, saddles) shown faintly through the ball, as a
+// textbook draws a sphere's hidden half; the separatrix's far half not drawn. GL-free.
 #pragma once
 
 #include <functional>
@@ -45,7 +45,8 @@ void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve,
 
 /// The far-side parts of polylines [`first`, end) and of the named points of
 /// `view` (units of |L|): brought along the eye's rays to the ball's near side
-/// (same pixels) and drawn faint, so they show through it.
+/// (same pixels) and drawn faint, so they show through it; the far runs of
+/// the separatrix are dropped (through the ball they read as a ring round a pole).
 void show_far_side(View& view, std::size_t first_polyline, double ball);
 
 }  // namespace tumble::viz

@@ -258,5 +258,21 @@ TEST(SphereCamera, StraightDownE3PutsTheAzimuthAtTheTop) {
   }
 }
 
+// A chosen up (+e₂, 30° in front from elevation 60) is the picture's up: +e₂
+// projects above the centre, −e₂ below; along the view it is ignored.
+TEST(SphereCamera, AChosenUpIsThePicturesUp) {
+  SphereCameraSettings s;
+  s.follow = false;
+  s.azimuth_deg = 90;
+  s.elevation_deg = 60;
+  s.up = {0, 1, 0};
+  const Camera c = sphere_camera({}, s);
+  const glm::dvec3 up = view_up(c);
+  EXPECT_GT(glm::dot(up, glm::dvec3(0, 1, 0)), 0.45);  // +e₂ up (sin 30° of it along the view)
+  EXPECT_NEAR(glm::dot(up, glm::normalize(c.position - c.target)), 0, 1e-9);
+  s.up = {0, 0.5, std::sqrt(3.0) / 2};  // along the view: the default (+e₃'s projection, +e₂ below)
+  EXPECT_LT(glm::dot(view_up(sphere_camera({}, s)), glm::dvec3(0, 1, 0)), 0);
+}
+
 }  // namespace
 }  // namespace tumble::viz

@@ -24,6 +24,7 @@ viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::Spher
   s.elevation_deg = c.elevation_deg.value_or(s.elevation_deg);
   s.distance = c.distance.value_or(s.distance);
   s.follow = c.follow.value_or(s.follow);
+  if (c.up) s.up = Eigen::Vector3d((*c.up)[0], (*c.up)[1], (*c.up)[2]);
   return s;
 }
 
