@@ -105,6 +105,9 @@ struct RenderConfig {
   DrawConfig draw;
   std::vector<Method> compare_methods;   ///< [compare] methods; empty = no comparison
   std::vector<Method> compare_cells;     ///< [compare] cells: the methods drawn in a cell (others only plotted); empty = all
+  /// [compare] steps: a method's own dt (s), e.g. Euler at a quarter of RK4's step for the same
+  /// number of derivative evaluations; a method not listed takes [simulation] dt.
+  std::vector<std::pair<Method, double>> compare_steps;
   ExplainConfig explain;                 ///< time_scale, slow motion, captions, title, views
 };
 
