@@ -103,6 +103,9 @@ struct PolylineItem {
   float width_px;
   bool fade = true;                ///< false: one alpha along the line (curves, plots)
   std::string name = {};           ///< in the layout report (empty: not reported)
+  /// Drawn after the translucent surfaces, over them: a curve on the near side
+  /// of a glassy surface (a polhode on the inertia ellipsoid) in full colour.
+  bool over_glass = false;
 };
 
 /// Ground grid in the plane through `origin` with normal +z (world).
