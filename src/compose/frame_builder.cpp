@@ -206,6 +206,7 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0, pinned_boxes))
     notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
                     "the view's other text, bodies, arrows and curves");
+  add_leaders(v, pinned, {c.x1 - c.x0, c.y1 - c.y0});
   v.texts.insert(v.texts.end(), pinned.begin(), pinned.end());
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);

@@ -132,6 +132,9 @@ struct TextItem {
   /// What a label names (a body's box on screen), x0, y0, x1, y1 in the
   /// viewport's pixels; x1 <= x0: none. viz::settle_labels keeps the label beside it.
   glm::vec4 subject_px{0};
+  /// A named polyline this label names: once the label is pinned (compose/label_pins),
+  /// a thin leader in its colour runs from the label to the curve's nearest point.
+  std::string leader_to = {};
 };
 
 /// Perspective camera (GLM lookAt/perspective conventions).

@@ -168,18 +168,19 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
 
 // A curve's name beside its extent on screen (the extent is the label's
 // subject: compose/label_pins pins it once per run beside where the curve went).
-void add_curve_label(View& view, const ViewportProjection& project, const std::vector<glm::dvec3>& curve, const char* text,
-                     Color color, float size, const char* name) {
+void add_curve_label(View& view, const ViewportProjection& project, const PolylineItem& curve, const char* text, float size,
+                     const char* name) {
   glm::vec4 box{1e30f, 1e30f, -1e30f, -1e30f};
-  for (const glm::dvec3& p : curve) {
+  for (const glm::dvec3& p : curve.points) {
     glm::vec2 px;
     if (!project(p, px)) continue;
     box = {std::min(box.x, px.x), std::min(box.y, px.y), std::max(box.z, px.x), std::max(box.w, px.y)};
   }
   if (box.z < box.x) return;
   const glm::vec2 c{0.5f * (box.x + box.z), 0.5f * (box.y + box.w)};
-  TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, color, name};
+  TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, curve.color, name};
   t.subject_px = box + glm::vec4(-4, -4, 4, 4);
+  t.leader_to = curve.name;
   view.texts.push_back(std::move(t));
 }
 
@@ -188,8 +189,8 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h);
   for (const PolylineItem& l : view.polylines) {
-    if (l.name == "polhode") add_curve_label(view, project, l.points, "polhode", l.color, size, "label_polhode");
-    if (l.name == "herpolhode") add_curve_label(view, project, l.points, "herpolhode", l.color, size, "label_herpolhode");
+    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode");
+    if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode");
   }
   // The plane at the corner in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;
