@@ -37,9 +37,31 @@ double backoff(const std::vector<Shot>& shots, double aspect, Margins margin, do
 /// `c` moved `factor` times as far from its target, its far plane with it.
 viz::Camera backed_off(viz::Camera c, double factor);
 
-/// The points a view of bodies must show: each body's box corners and every arrow's tail and tip.
+/// A few vertices of each mesh or particle set, kept while a camera is fitted
+/// (its items' shared sets outlive it): see `solid_shot`.
+class Outlines {
+ public:
+  /// The vertices of `points` that lie farthest along each of kDirections directions (no copies).
+  const std::vector<glm::vec3>& of(const void* key, const std::vector<glm::vec3>& points);
+  static constexpr int kDirections = 64;
+
+ private:
+  std::vector<std::pair<const void*, std::vector<glm::vec3>>> cache_;
+};
+
+/// The points a view of bodies must show: what it draws of each body (the
+/// box when drawn; else its surfaces' and particles' outermost vertices), and
+/// every arrow's tail and tip.
 std::vector<glm::dvec3> solid_points(const viz::View& v);
-/// The same as a shot: box corners, arrow tails and named points in `points`, arrow tips in `tips`.
+/// The same as a shot: bodies, arrow tails and named points in `points`, arrow tips in `tips`.
+/// `outlines` keeps each mesh's outermost vertices from one frame to the next.
+Shot solid_shot(const viz::View& v, Outlines& outlines);
 Shot solid_shot(const viz::View& v);
+
+/// `c` moved across its line of sight (target with it) so that every shot's
+/// points and tips, seen through it `factor` times as far back, are centred
+/// in a content rectangle of `aspect`: what sticks out further on one side
+/// (L's line above a body) no longer leaves the other side empty.
+viz::Camera centred(viz::Camera c, const std::vector<Shot>& shots, double aspect, double factor);
 
 }  // namespace tumble::compose

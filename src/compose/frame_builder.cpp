@@ -33,8 +33,10 @@ bool has_cell(const scene::Scene& s, const scene::Run& run) {
   return std::any_of(cells.begin(), cells.end(), [&](Method m) { return method_name(m) == run.label; });
 }
 
-// How long a flip's mark stays up after the flip, video s (through a hold there).
-constexpr double kFlipMarkSeconds = 3.0;
+// How long a flip's mark stays up after the flip: video s in which the
+// animation runs (a hold does not use it up). Video time, not simulated: at
+// ×1/8 the mark would otherwise stay up long after the flip, at ×4 flash by.
+constexpr double kFlipMarkSeconds = 2.0;
 
 void move_text(viz::TextItem& t, glm::vec2 d) {
   t.position_px += d;
@@ -51,7 +53,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
       runs_(runs),
       width_(width),
       height_(height),
-      world_(s, runs, scene::frame_clock(s, fps), viz::text_px(viz::TextRole::label, height)),
+      world_(s, runs, scene::frame_clock(s, fps), viz::text_px(viz::TextRole::label, height, s.render.draw.text_scale)),
       context_{s, runs, world_, height} {
   const auto& views = s.render.explain.views;
   // A [compare] grid's cells, in one row above the plots of its runs when it has any.
@@ -91,7 +93,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   // Names placed once for the whole run, clear of what the view shows in every frame.
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
-    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0}, viz::text_px(viz::TextRole::label, height_)));
+    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0}, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale)));
   }
 }
 
@@ -100,6 +102,7 @@ FrameNeeds FrameBuilder::frame_needs() const {
   const auto& views = scene_.render.explain.views;
   FrameNeeds needs;
   needs.width = width_, needs.height = height_;
+  needs.text_scale = scene_.render.draw.text_scale;
   needs.columns = views.empty() ? grid_columns(cells_) : std::max<int>(1, static_cast<int>(cells_));
   if (cells_ > 0) needs.frame_key = legend();
   // Plots under a [compare] grid: the cells share the band above the highest plot.
@@ -132,7 +135,11 @@ void FrameBuilder::mark_flips() {
   for (double flip : scene::body_flip_times(scene_, *scene_.render.explain.flip_marks)) {
     flip_t_.push_back(flip);
     while (k < clock.count() && clock.time(k) < flip - 1e-9) ++k;
-    if (k < clock.count()) flip_video_.push_back(static_cast<double>(k) / clock.fps());
+    if (k >= clock.count()) break;
+    long end = k;
+    for (long running = 0; end < clock.count() && running < std::lround(kFlipMarkSeconds * clock.fps()); ++end)
+      if (!clock.in_hold(end)) ++running;
+    flip_frames_.emplace_back(k, end);
   }
 }
 
@@ -140,10 +147,10 @@ void FrameBuilder::mark_flips() {
 // speed while the video does not run in real time ("×1/8 slow motion", "paused").
 std::string FrameBuilder::status(long k) const {
   const scene::FrameClock& clock = world_.clock();
-  const double tau = static_cast<double>(k) / clock.fps(), rate = clock.rate(k);
+  const double rate = clock.rate(k);
   std::string out;
-  for (std::size_t i = 0; i < flip_video_.size(); ++i)
-    if (tau >= flip_video_[i] - 1e-9 && tau < flip_video_[i] + kFlipMarkSeconds) out = "flip " + std::to_string(i + 1);
+  for (std::size_t i = 0; i < flip_frames_.size(); ++i)
+    if (k >= flip_frames_[i].first && k < flip_frames_[i].second) out = "flip " + std::to_string(i + 1);
   const std::string speed = clock.in_hold(k) ? kPaused
                             : rate == 1      ? ""
                                              : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
@@ -157,7 +164,7 @@ std::string FrameBuilder::status(long k) const {
 // The widest badge the video shows ("" when it has none).
 std::string FrameBuilder::widest_status() const {
   std::string widest;
-  const float size = viz::text_px(viz::TextRole::badge, height_);
+  const float size = viz::text_px(viz::TextRole::badge, height_, scene_.render.draw.text_scale);
   for (long k = 0; k < world_.clock().count(); ++k) {
     const std::string t = status(k);
     if (viz::text_width(t, size) > viz::text_width(widest, size)) widest = t;
@@ -188,7 +195,7 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   const viz::Box& c = p.content;
   // Arrows are named at their tips, then labels settle inside the content
   // rectangle, clear of its other text; then move with it into the view.
-  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_));
+  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale));
   // Pinned names go to their places for the run; the other labels settle clear of them.
   std::vector<viz::TextItem> pinned;
   std::vector<viz::Box> pinned_boxes;
@@ -252,7 +259,7 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
       dl.texts.push_back(std::move(t));
     }
   }
-  if (const auto badge = viz::speed_badge(status(k), false, width_, height_, true)) {
+  if (const auto badge = viz::speed_badge(status(k), false, width_, height_, true, scene_.render.draw.text_scale)) {
     viz::TextItem b = *badge;
     b.position_px.y = plan_.badge_y;
     move_text(b, shift);

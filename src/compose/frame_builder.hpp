@@ -56,7 +56,7 @@ class FrameBuilder {
   std::size_t cells_ = 0;  // panels of runs first (a classic view or a [compare] grid), then the [[views]]
   std::vector<std::size_t> cell_runs_;  // the run each cell draws ([compare] cells may leave runs to the plots)
   FramePlan plan_;
-  std::vector<double> flip_video_;  // video s at which each marked flip is first shown
+  std::vector<std::pair<long, long>> flip_frames_;  // each marked flip's badge: its first frame, one past its last
   std::vector<double> flip_t_;      // simulated s of each marked flip
   std::vector<std::map<std::string, glm::vec2>> pins_;  // per panel: its names placed once for the run (label_pins.hpp)
 };

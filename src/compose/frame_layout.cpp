@@ -31,8 +31,8 @@ void plan_captions(const FrameNeeds& n, FramePlan& p) {
   float top = fh;
   for (const std::string& c : n.captions)
     for (const viz::TextItem& t : viz::caption_items(c, 1.0f, n.width, n.height))
-      if (t.backdrop.a > 0) top = std::min(top, t.backdrop_px.y - 0.25f * viz::text_px(viz::TextRole::caption, n.height));
-  if (const auto badge = viz::speed_badge(n.badge, true, n.width, n.height, true)) {
+      if (t.backdrop.a > 0) top = std::min(top, t.backdrop_px.y - 0.25f * viz::text_px(viz::TextRole::caption, n.height, 1));
+  if (const auto badge = viz::speed_badge(n.badge, true, n.width, n.height, true, n.text_scale)) {
     p.badge_y = (top < fh ? top : badge->position_px.y + 1.3f * badge->size_px) - 1.25f * badge->size_px;
     if (top >= fh) p.badge_y = badge->position_px.y;
     top = p.badge_y - 0.15f * badge->size_px;
@@ -95,7 +95,7 @@ constexpr float kFrameKeyShare = 0.62f;
 std::array<double, 4> declared_extent(const FrameNeeds& n);
 
 void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<viz::KeyEntry>>& keys) {
-  const float key_px = viz::text_px(viz::TextRole::key, n.height), pad = 0.5f * key_px;
+  const float key_px = viz::text_px(viz::TextRole::key, n.height, n.text_scale), pad = 0.5f * key_px;
   if (key_px < viz::kMinKeyPx) return;
   const std::array<double, 4> e = declared_extent(n);
   const int cols = std::max(1, std::min(n.columns, static_cast<int>(n.views.size())));
@@ -113,7 +113,7 @@ void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<v
 // The frame key's strip: its rows across the frame, above the captions.
 void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
   if (p.frame_key.empty()) return;
-  p.frame_key_px = viz::text_px(viz::TextRole::key, n.height);
+  p.frame_key_px = viz::text_px(viz::TextRole::key, n.height, n.text_scale);
   if (p.frame_key_px < viz::kMinKeyPx) {
     p.notes.push_back("frame key left out: its text would be " + px(p.frame_key_px) + " high, under the " +
                       px(viz::kMinKeyPx) + " a key needs to be read");
@@ -158,9 +158,9 @@ glm::dvec4 view_fractions(const FrameNeeds& n, const viz::Box& area, std::size_t
 }
 
 // The title strip: the title wrapped to the view, then the overlay lines.
-float plan_title(const ViewNeeds& v, int frame_h, float pad, ViewPlan& vp) {
-  vp.title_px = viz::text_px(viz::TextRole::view_title, frame_h);
-  vp.overlay_px = viz::text_px(v.large_overlay ? viz::TextRole::view_title : viz::TextRole::label, frame_h);
+float plan_title(const ViewNeeds& v, int frame_h, double text_scale, float pad, ViewPlan& vp) {
+  vp.title_px = viz::text_px(viz::TextRole::view_title, frame_h, text_scale);
+  vp.overlay_px = viz::text_px(v.large_overlay ? viz::TextRole::view_title : viz::TextRole::label, frame_h, text_scale);
   float bottom = 0;
   if (!v.title.empty()) {
     vp.title = viz::wrap_text(v.title, vp.title_px, static_cast<float>(vp.width) - 2 * pad);
@@ -173,13 +173,13 @@ float plan_title(const ViewNeeds& v, int frame_h, float pad, ViewPlan& vp) {
 }
 
 // The key strip beside the content (right), else below it, else nowhere (a note says why).
-void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, float top, float pad, ViewPlan& vp,
+void plan_key(const ViewNeeds& v, std::size_t i, int frame_h, double text_scale, float top, float pad, ViewPlan& vp,
               std::vector<std::string>& notes) {
   const float w = static_cast<float>(vp.width), h = static_cast<float>(vp.height);
   const float side = v.edge_to_edge ? 0.0f : pad;
   vp.content = {side, top, w - side, h - side};
   if (vp.key.empty()) return;
-  vp.key_px = viz::text_px(viz::TextRole::key, frame_h);
+  vp.key_px = viz::text_px(viz::TextRole::key, frame_h, text_scale);
   if (vp.key_px < viz::kMinKeyPx) {
     notes.push_back(view_name(i, v) + ": key left out: its text would be " + px(vp.key_px) +
                     " high, under the " + px(viz::kMinKeyPx) + " a key needs to be read");
@@ -221,7 +221,7 @@ FramePlan plan_frame(const FrameNeeds& n) {
   plan_frame_key(n, p);
   const viz::Box area = views_area(n, p);
   const int count = static_cast<int>(n.views.size());
-  const float pad = 0.5f * viz::text_px(viz::TextRole::key, n.height);
+  const float pad = 0.5f * viz::text_px(viz::TextRole::key, n.height, n.text_scale);
   for (std::size_t i = 0; i < n.views.size(); ++i) {
     ViewPlan vp;
     vp.key = std::move(keys[i]);
@@ -230,8 +230,8 @@ FramePlan plan_frame(const FrameNeeds& n) {
     probe.viewport = vp.viewport;
     const PixelRect r = view_rect(probe, static_cast<int>(i), count, 1, n.width, n.height);
     vp.x = r.x, vp.y = r.y, vp.width = r.width, vp.height = r.height;
-    const float top = plan_title(n.views[i], n.height, pad, vp);
-    plan_key(n.views[i], i, n.height, top, pad, vp, p.notes);
+    const float top = plan_title(n.views[i], n.height, n.text_scale, pad, vp);
+    plan_key(n.views[i], i, n.height, n.text_scale, top, pad, vp, p.notes);
     if (vp.content.x1 - vp.content.x0 < 16 || vp.content.y1 - vp.content.y0 < 16)
       p.notes.push_back(view_name(i, n.views[i]) + ": its title and key leave its content " +
                         px(vp.content.x1 - vp.content.x0) + " × " + px(vp.content.y1 - vp.content.y0));

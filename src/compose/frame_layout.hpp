@@ -31,6 +31,7 @@ struct ViewNeeds {
 
 struct FrameNeeds {
   int width = 0, height = 0;
+  double text_scale = 1;             ///< [draw] text_scale (viz::text_px)
   int columns = 1;                   ///< grid of the views without a viewport
   std::vector<ViewNeeds> views;
   std::vector<std::string> captions; ///< every caption's text

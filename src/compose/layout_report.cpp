@@ -126,6 +126,16 @@ void add_scene_items(const viz::View& v, const std::string& view, const PixelRec
          std::min(c.y1, float(rect.y + rect.height))};
     if (c.x0 >= c.x1 || c.y0 >= c.y1) c = {}, out.back().visible = false;
   }
+  // A body drawn as its surface (and the ghost a comparison draws): the extent
+  // of its triangles' vertices, as it is drawn (kind "surface").
+  for (const viz::SurfaceItem& f : v.surfaces) {
+    if (!f.mesh || !(f.name.empty() || f.name == "ghost")) continue;  // named others: a sphere view's ellipsoid
+    std::vector<glm::dvec3> pts;
+    pts.reserve(f.mesh->positions.size());
+    for (const glm::vec3& p : f.mesh->positions) pts.push_back(glm::dvec3(f.model * glm::dvec4(glm::dvec3(p), 1.0)));
+    push(f.name.empty() ? "surface" : f.name, "surface", pts, 0.0);
+    out.back().path.clear();
+  }
   for (const viz::ArrowItem& a : v.arrows) {
     if (a.name.empty()) continue;
     // The whole arrow: its shaft from tail to tip, grown by its head's radius

@@ -16,7 +16,8 @@ namespace tumble::compose {
 struct LayoutItem {
   std::string view;   ///< "frame" (overlay) or "<index>:<view name>"
   std::string name;   ///< e.g. "momentum_point", "caption", "key"
-  std::string kind;   ///< "text", "marker", "arrow", "curve", "key", "body" (a box's corners), "content" (a view's
+  std::string kind;   ///< "text", "marker", "arrow", "curve", "key", "body" (a box's corners), "surface" (a body's
+                      ///< drawn triangles), "content" (a view's
                       ///< content rectangle) or "note" (what the layout left out, and why)
   viz::Box box;       ///< frame px, top-left origin; an arrow's whole extent (shaft and head), a curve's every point
   bool visible = true;  ///< false: outside its content rectangle, behind an opaque sphere, under a backdrop or key, or transparent

@@ -24,6 +24,8 @@ struct PanelContext {
   const std::vector<scene::Run>& runs;
   const WorldViews& world;
   int frame_h;  ///< the frame's height, px (text sizes)
+  /// Text sizes' scale ([draw] text_scale): viz::text_px(role, frame_h, text_scale()).
+  double text_scale() const { return scene.render.draw.text_scale; }
 };
 
 class Panel {

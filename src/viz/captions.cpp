@@ -70,7 +70,7 @@ std::vector<TextItem> centred_lines(const std::string& text, float size, Color c
 
 std::vector<TextItem> caption_items(const std::string& text, float alpha, int frame_w, int frame_h, float side_px,
                                     bool at_top) {
-  const float size = text_px(TextRole::caption, frame_h), fh = static_cast<float>(frame_h);
+  const float size = text_px(TextRole::caption, frame_h, 1), fh = static_cast<float>(frame_h);
   const float fw = static_cast<float>(frame_w);
   // Centred, so lines no wider than this leave `side_px` (and the backdrop's pad) free at each side.
   const float max_w = side_px > 0 ? std::max(0.3f * fw, fw - 2 * (side_px + 0.7f * size)) : 0.9f * fw;
@@ -86,7 +86,7 @@ TextItem caption_item(const std::string& text, float alpha, int frame_w, int fra
 
 std::vector<TextItem> title_items(const std::string& title, const std::string& subtitle, float alpha, int frame_w,
                                   int frame_h) {
-  const float big = text_px(TextRole::title, frame_h), small = text_px(TextRole::subtitle, frame_h);
+  const float big = text_px(TextRole::title, frame_h, 1), small = text_px(TextRole::subtitle, frame_h, 1);
   const float fw = static_cast<float>(frame_w), fh = static_cast<float>(frame_h);
   // On the title card's own backdrop (kTitleCardBackground, the whole frame), light text.
   std::vector<TextItem> out = centred_lines(title, big, {0.97f, 0.97f, 0.98f, alpha}, {0, 0, 0, 0}, fw, 0.36f * fh, "title");
@@ -97,10 +97,11 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
   return out;
 }
 
-std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is) {
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is,
+                                    double text_scale) {
   if (speed.empty()) return std::nullopt;
   const std::string text = as_is ? speed : speed + (slow ? " slow motion" : " fast");
-  const float size = text_px(TextRole::badge, frame_h);
+  const float size = text_px(TextRole::badge, frame_h, text_scale);
   // Bottom-right; captions shown with it keep clear of it (caption_items' side_px).
   const float x = right_aligned_x(text, size, static_cast<float>(frame_w) - 0.8f * size);
   return TextItem{text, {x, static_cast<float>(frame_h) - 1.3f * size}, size, {0.70f, 0.12f, 0.10f, 1.0f}, "speed"};

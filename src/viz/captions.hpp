@@ -50,7 +50,9 @@ std::vector<TextItem> title_items(const std::string& title, const std::string& s
 /// run in real time (`speed` from scene::speed_text, e.g. "×1/8"); none for "".
 /// `as_is`: `speed` is the whole text ("paused", "flip 1 · paused"), without
 /// "slow motion" or "fast". The frame layout moves it to its row above the captions.
-std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is = false);
+/// `text_scale`: the scene's ([draw] text_scale).
+std::optional<TextItem> speed_badge(const std::string& speed, bool slow, int frame_w, int frame_h, bool as_is,
+                                    double text_scale);
 
 
 }  // namespace tumble::viz

@@ -22,6 +22,7 @@ struct DrawOptions {
   bool grid = false;
   double arrow_width = 1;         ///< the arrows' (axes, L, ω) thickness, times their usual
   double arrow_length = 1;        ///< L's and ω's length, times their usual (kLReach, kOmegaReach)
+  double text_scale = 1;          ///< text sizes but the title card's and captions', times their usual (viz::text_px)
 };
 
 }  // namespace tumble::viz

@@ -156,7 +156,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
   if (L <= 0) {
-    add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
+    add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
     return;
   }
   if (draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
@@ -183,7 +183,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   }
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
-  add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h));
+  add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
   // The body's own polhode, wide, then the separatrix dashed over it: where
   // the two run together both stay visible (crimson edges, sky-blue dashes).
   const auto own = in.trail ? std::vector<Eigen::Vector3d>{} : own_polhode(I, in.momentum, 192);

@@ -43,6 +43,7 @@ struct MomentumSphereInput {
   /// > 0: the camera's field of view shows a ball of this radius (|L|) whole in the viewport.
   double fit_radius = 0;
   int frame_h = 360;                        ///< the frame's height (text sizes)
+  double text_scale = 1;                    ///< the scene's text scale ([draw] text_scale)
   bool trail = false;                       ///< Π's path drawn as `history` (from t = 0), not its whole polhode
   float line_scale = 1;                     ///< the curves' widths and Π's dot, times this
   int levels = 10;                          ///< other energies: the levels between L²/I3 and L²/I1 in this many steps

@@ -187,7 +187,7 @@ void add_curve_label(View& view, const ViewportProjection& project, const Polyli
 // The polhode and the herpolhode named beside them, the plane at a corner clear of the ellipsoid.
 void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
-  const float size = text_px(TextRole::label, in.frame_h);
+  const float size = text_px(TextRole::label, in.frame_h, in.text_scale);
   for (const PolylineItem& l : view.polylines) {
     if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode");
     if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode");

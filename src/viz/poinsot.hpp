@@ -44,6 +44,7 @@ struct PoinsotInput {
   SphereCameraSettings camera = {16.4, 39.8, 4.69, false, 0, 0};
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
+  double text_scale = 1;                    ///< the scene's text scale ([draw] text_scale)
 };
 
 /// The plane's surface: opaque and light, so the palette's curves show on it

@@ -37,8 +37,8 @@ struct Head {
 Head head_layout(const StripChartInput& in, int width_px, float font_px) {
   Head h;
   const float f = font_px, w = static_cast<float>(width_px);
-  const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h) : f;
-  h.key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h) : f;
+  const float title_px = in.frame_h > 0 ? text_px(TextRole::view_title, in.frame_h, in.text_scale) : f;
+  h.key_px = in.frame_h > 0 ? text_px(TextRole::key, in.frame_h, in.text_scale) : f;
   if (!in.direct_labels)
     for (const Series& s : in.series) h.key_w += text_width(s.name, h.key_px) + 1.2f * h.key_px;
   for (const std::string& b : band_names(in)) h.key_w += text_width(b, h.key_px) + 1.2f * h.key_px;

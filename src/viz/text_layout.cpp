@@ -41,7 +41,7 @@ std::size_t line_gap_start(std::string_view para, std::size_t i) {
 
 }  // namespace
 
-float text_px(TextRole role, int frame_h) {
+float text_px(TextRole role, int frame_h, double scale) {
   // Fractions of the frame height, sized for a lecture hall: captions 4.4 %
   // (24 px at 540p), nothing under 3 % (keys, ticks, labels).
   float f = 0;
@@ -55,7 +55,8 @@ float text_px(TextRole role, int frame_h) {
     case TextRole::tick: f = 0.030f; break;
     case TextRole::badge: f = 0.036f; break;
   }
-  return f * static_cast<float>(frame_h);
+  const bool hall = role == TextRole::title || role == TextRole::subtitle || role == TextRole::caption;
+  return f * static_cast<float>(frame_h) * (hall ? 1.0f : static_cast<float>(scale));
 }
 
 InkSpan text_ink(std::string_view text, float size_px) {

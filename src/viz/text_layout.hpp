@@ -17,8 +17,10 @@ namespace tumble::viz {
 /// What a piece of text is for; one size per role in every view kind.
 enum class TextRole { title, subtitle, caption, view_title, key, label, tick, badge };
 
-/// Height of `role`'s text, px, in a frame `frame_h` px high (fractions of it).
-float text_px(TextRole role, int frame_h);
+/// Height of `role`'s text, px, in a frame `frame_h` px high (fractions of
+/// it), times the scene's `scale` ([draw] text_scale): every role but the
+/// title card's and the captions', which are sized for a hall already.
+float text_px(TextRole role, int frame_h, double scale);
 
 /// The horizontal ink of `text` at `size_px` drawn with its pen starting at
 /// x = 0: from the leftmost outline edge to the rightmost of any line, px

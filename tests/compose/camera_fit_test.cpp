@@ -36,5 +36,20 @@ TEST(CameraFit, TheFrameHeightLimitsAsMuchAsItsWidth) {
   EXPECT_GT(ft, 1.5 * fw) << "a 2:1 frame fits a tall set only from further away";
 }
 
+// Content reaching further up than down (L's line above a body): the camera
+// moves up with its target until the content is centred, and then comes
+// closer than it could looking at the middle (the fit is set by 2 m each way, not 3).
+TEST(CameraFit, CentringLeavesAsMuchRoomOnEitherSide) {
+  const viz::Camera cam = looking_down_z(10, 0.05);
+  std::vector<Shot> shots{{cam, {{0, 3, 0}, {0, -1, 0}, {1, 0, 0}}}};
+  const double f0 = backoff(shots, 1.0, Margins(0.1), 0.1);
+  const viz::Camera c = centred(cam, shots, 1.0, f0);
+  EXPECT_NEAR(c.target.y, 1.0, 1e-3);
+  EXPECT_NEAR(c.position.y, 1.0, 1e-3);
+  EXPECT_EQ(c.position.z, cam.position.z);
+  shots[0].camera = c;
+  EXPECT_NEAR(backoff(shots, 1.0, Margins(0.1), 0.1) / f0, 2.0 / 3.0, 1e-3);
+}
+
 }  // namespace
 }  // namespace tumble::compose

@@ -73,7 +73,7 @@ TEST(LayoutFill, RepeatedKeysBecomeOneFrameKeyInItsOwnStrip) {
   for (const compose::ViewPlan& v : p.views) {
     EXPECT_TRUE(v.key.empty());
     EXPECT_FALSE(v.key_at);
-    EXPECT_FLOAT_EQ(v.content.x1, float(v.width) - 0.5f * viz::text_px(viz::TextRole::key, 540)) << "no key strip";
+    EXPECT_FLOAT_EQ(v.content.x1, float(v.width) - 0.5f * viz::text_px(viz::TextRole::key, 540, 1)) << "no key strip";
   }
   ASSERT_EQ(p.frame_key.size(), 4u);  // every entry once: L and the spheres' three
   EXPECT_EQ(p.frame_key[0].text, "L, fixed in space");
@@ -302,7 +302,7 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
       if (t.name == "overlay") {
         ASSERT_NE(title, nullptr);
         EXPECT_EQ(t.color, title->color) << runs[r].label;
-        EXPECT_GE(t.size_px, viz::text_px(viz::TextRole::view_title, 1080) - 1e-3f) << "a readout a hall can read";
+        EXPECT_GE(t.size_px, viz::text_px(viz::TextRole::view_title, 1080, 1) - 1e-3f) << "a readout a hall can read";
       }
     }
     ASSERT_NE(title, nullptr);

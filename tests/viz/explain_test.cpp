@@ -296,8 +296,8 @@ TEST(Captions, FadeInHoldFadeOut) {
 }
 
 TEST(Captions, SpeedBadgeSitsInTheCornerAndNamesTheSpeed) {
-  EXPECT_FALSE(speed_badge("", true, 1280, 720));
-  const auto b = speed_badge("×1/8", true, 1280, 720);
+  EXPECT_FALSE(speed_badge("", true, 1280, 720, false, 1));
+  const auto b = speed_badge("×1/8", true, 1280, 720, false, 1);
   ASSERT_TRUE(b);
   EXPECT_EQ(b->text, "×1/8 slow motion");
   EXPECT_LE(b->position_px.y + b->size_px, 720.0f);

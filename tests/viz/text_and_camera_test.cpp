@@ -27,11 +27,18 @@ namespace {
 TEST(TextLayout, RoleSizesScaleWithTheFrameAndStayLegible) {
   for (TextRole r : {TextRole::title, TextRole::subtitle, TextRole::caption, TextRole::view_title, TextRole::key,
                      TextRole::label, TextRole::tick}) {
-    EXPECT_FLOAT_EQ(text_px(r, 1080), 2 * text_px(r, 540));
-    EXPECT_GE(text_px(r, 360), 0.018f * 360);
+    EXPECT_FLOAT_EQ(text_px(r, 1080, 1), 2 * text_px(r, 540, 1));
+    EXPECT_GE(text_px(r, 360, 1), 0.018f * 360);
   }
-  EXPECT_GT(text_px(TextRole::title, 540), text_px(TextRole::caption, 540));
-  EXPECT_GT(text_px(TextRole::caption, 540), text_px(TextRole::tick, 540));
+  EXPECT_GT(text_px(TextRole::title, 540, 1), text_px(TextRole::caption, 540, 1));
+  EXPECT_GT(text_px(TextRole::caption, 540, 1), text_px(TextRole::tick, 540, 1));
+}
+
+TEST(TextLayout, TheSceneTextScaleGrowsAllButTheTitleCardAndCaptions) {
+  for (TextRole r : {TextRole::view_title, TextRole::key, TextRole::label, TextRole::tick, TextRole::badge})
+    EXPECT_FLOAT_EQ(text_px(r, 1080, 1.25), 1.25f * text_px(r, 1080, 1));
+  for (TextRole r : {TextRole::title, TextRole::subtitle, TextRole::caption})
+    EXPECT_FLOAT_EQ(text_px(r, 1080, 1.25), text_px(r, 1080, 1)) << "sized for a hall already";
 }
 
 TEST(TextLayout, WrapsAtTheWidthAndKeepsExplicitBreaks) {

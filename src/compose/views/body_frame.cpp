@@ -61,15 +61,16 @@ class BodyFramePanel : public Panel {
     camera_ = body_camera(ctx_.scene, scene_camera(ctx_.scene, ctx_.runs, aspect), vc_.camera,
                           ctx_.scene.bodies[body_].model, run.frames[0][body_]);
     std::vector<Shot> shots;
+    Outlines outlines;
     const long n = static_cast<long>(run.frames.size());
     for (long i = 0; i < std::min(n, kBodyFitSamples); ++i) {
       const viz::View v = content(n <= kBodyFitSamples ? i : i * (n - 1) / (kBodyFitSamples - 1));
-      shots.push_back(solid_shot(v));
+      shots.push_back(solid_shot(v, outlines));
       for (const viz::PolylineItem& l : v.polylines)  // L's trail stays in view too
         if (l.name == "L_trail") shots.back().points.insert(shots.back().points.end(), l.points.begin(), l.points.end());
     }
     // Arrows carry their names past (or, short of room, beside) their tips: a name's width across, half a line up and down.
-    const double tip = viz::text_px(viz::TextRole::label, ctx_.frame_h);
+    const double tip = viz::text_px(viz::TextRole::label, ctx_.frame_h, ctx_.text_scale());
     const Margins m{1.4 * tip / (0.5 * std::max(size.x, 1.0f)), 0.6 * tip / (0.5 * std::max(size.y, 1.0f))};
     camera_ = backed_off(camera_, backoff(shots, aspect, kBodyMargin, vc_.camera.distance ? 1.0 : 0.2, m));
   }

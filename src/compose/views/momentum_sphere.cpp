@@ -88,6 +88,7 @@ class SpherePanel : public Panel {
     in.camera = settings_;
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
+    in.text_scale = ctx_.text_scale();
     in.fit_radius = kFitRadius;
     const scene::ViewConfig& view = ctx_.scene.render.explain.views[index_];
     in.energy_ellipsoid = view.energy_ellipsoid;

@@ -99,6 +99,7 @@ class PlotPanel : public Panel {
     for (const scene::SlowMotion& sm : ctx_.scene.render.explain.slow_motion)
       if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.frame_h = ctx_.frame_h;
+    in.text_scale = ctx_.text_scale();
     for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
     for (std::size_t r : runs_) {
       const scene::Run& run = ctx_.runs[r];
@@ -113,7 +114,7 @@ class PlotPanel : public Panel {
         in.series.push_back(std::move(series));
       }
     }
-    viz::build_strip_chart(v, in, int(size_.x), int(size_.y), viz::text_px(viz::TextRole::tick, ctx_.frame_h));
+    viz::build_strip_chart(v, in, int(size_.x), int(size_.y), viz::text_px(viz::TextRole::tick, ctx_.frame_h, ctx_.text_scale()));
     return v;
   }
 

@@ -47,7 +47,9 @@ class PoinsotPanel : public Panel {
     std::vector<Shot> shots;
     for (long i = 0; i < std::min(n, kPoinsotFitSamples); ++i) {
       const viz::View v = build(n <= kPoinsotFitSamples ? i : i * (n - 1) / (kPoinsotFitSamples - 1));
-      Shot s{v.camera, solid_points(v)};
+      viz::View arrows = v;
+      arrows.surfaces.clear();  // the plane is cut at the content's edges; the ellipsoid is added below
+      Shot s{v.camera, solid_points(arrows)};
       for (const viz::PolylineItem& l : v.polylines)
         if (!l.name.empty()) s.points.insert(s.points.end(), l.points.begin(), l.points.end());
       for (const viz::SurfaceItem& sf : v.surfaces)
@@ -86,6 +88,7 @@ class PoinsotPanel : public Panel {
     in.camera.distance = c.distance.value_or(in.camera.distance);
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
+    in.text_scale = ctx_.text_scale();
     viz::View v;
     viz::build_poinsot(v, in);
     return v;

@@ -47,16 +47,25 @@ class WorldPanel : public Panel {
     // the methods' bodies are drawn at one scale side by side.
     const bool grid = !ctx_.scene.render.compare_methods.empty() && ctx_.runs.size() > 1 && run_ < ctx_.runs.size();
     std::vector<Shot> shots;
+    Outlines outlines;
     const long n = ctx_.world.clock().count();
     for (std::size_t r = 0; r < ctx_.runs.size(); ++r) {
       if (!grid && r != run_) continue;
       for (long i = 0; i < std::min(n, kFitSamples); ++i) {
         const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
         const viz::View v = ctx_.world.view(r, k, camera_, int(size.x), int(size.y));
-        shots.push_back(solid_shot(v));
+        shots.push_back(solid_shot(v, outlines));
       }
     }
-    camera_ = backed_off(camera_, backoff(shots, aspect, margins(size), closest(), tip_margins(size)));
+    double f = backoff(shots, aspect, margins(size), closest(), tip_margins(size));
+    // A fitted camera also moves sideways, so that the whole video's content
+    // is centred and comes as close as it can; a camera placed by hand stays.
+    for (int round = 0; round < 2 && closest() < 1; ++round) {
+      camera_ = centred(camera_, shots, aspect, f);
+      for (Shot& s : shots) s.camera = camera_;
+      f = backoff(shots, aspect, margins(size), closest(), tip_margins(size));
+    }
+    camera_ = backed_off(camera_, f);
   }
 
   // A camera set for the whole frame (the scene's) frames its view of a
@@ -83,7 +92,7 @@ class WorldPanel : public Panel {
   // it). A name with no room along its arrow turns beside the tip
   // (viz::label_arrow_tips): a name's width across, half a line up and down.
   Margins tip_margins(glm::vec2 size) const {
-    const double px = viz::text_px(viz::TextRole::label, ctx_.frame_h);
+    const double px = viz::text_px(viz::TextRole::label, ctx_.frame_h, ctx_.text_scale());
     return {1.4 * px / (0.5 * std::max(size.x, 1.0f)), 0.6 * px / (0.5 * std::max(size.y, 1.0f))};
   }
 
