@@ -104,7 +104,10 @@ FrameNeeds FrameBuilder::frame_needs() const {
   needs.width = width_, needs.height = height_;
   needs.text_scale = scene_.render.draw.text_scale;
   needs.columns = views.empty() ? grid_columns(cells_) : std::max<int>(1, static_cast<int>(cells_));
-  if (cells_ > 0) needs.frame_key = legend();
+  // One classic view: its legend is its key, beside the content (a wide frame has width to spare
+  // and a spinning body needs height); a [compare] grid's, one key in rows above the captions.
+  const bool single = cells_ == 1 && views.empty();
+  if (cells_ > 0 && !single) needs.frame_key = legend();
   // Plots under a [compare] grid: the cells share the band above the highest plot.
   double band = 1;
   if (cells_ > 0)
@@ -121,6 +124,7 @@ FrameNeeds FrameBuilder::frame_needs() const {
     v.overlay_lines = panels_[i]->overlay_lines();
     if (!vc || vc->key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
     v.edge_to_edge = vc && vc->kind == scene::ViewKind::plot;
+    if (single) v.key = legend();
     needs.views.push_back(std::move(v));
   }
   for (const scene::Caption& c : scene_.render.explain.captions) needs.captions.push_back(c.text);

@@ -103,7 +103,9 @@ void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<v
     if (keys[i].empty()) continue;
     const double share = n.views[i].viewport ? (*n.views[i].viewport)[2] / (e[2] - e[0]) : 1.0 / cols;
     const float w = static_cast<float>(share * n.width);
-    if (w - viz::key_size(keys[i], key_px).x - 3 * pad >= kFrameKeyShare * w) continue;
+    // A lone view (a classic scene) gives width more freely: its body is most often short of height.
+    const float keep = n.views.size() == 1 && !n.views[i].viewport ? kMinContentShare : kFrameKeyShare;
+    if (w - viz::key_size(keys[i], key_px).x - 3 * pad >= keep * w) continue;
     for (const viz::KeyEntry& k : keys[i])
       if (!has_entry(p.frame_key, k)) p.frame_key.push_back(k);
     keys[i].clear();

@@ -140,7 +140,10 @@ std::vector<std::string> label_arrow_tips(View& view, float width_px, float heig
       left_out.push_back(a.tip);
       continue;
     }
-    o.taken.push_back(text_box(*t));
+    // Later names keep a gap from this one (a quarter line): names that touch read as one word ("Lω").
+    const Box b = text_box(*t);
+    const float gap = 0.25f * label_px;
+    o.taken.push_back({b.x0 - gap, b.y0 - gap, b.x1 + gap, b.y1 + gap});
     view.texts.push_back(std::move(*t));
   }
   return left_out;

@@ -31,7 +31,7 @@ glm::dmat4 cloud_to_world(const Eigen::Vector3d& origin, const Eigen::Quaternion
 
 glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i) {
   const double to_face = m.box.center[i] + m.box.half_extents[i];
-  const double len = std::max(kAxisOvershoot * to_face, 0.45 * largest_half_extent(m));
+  const double len = std::max(kAxisOvershoot * to_face, kAxisLeast * largest_half_extent(m));
   Eigen::Vector3d e = Eigen::Vector3d::Zero();
   e[i] = len;
   return to_glm(s.c + s.q * e);

@@ -32,12 +32,15 @@ inline const Color kOmegaColor = color_of(Meaning::omega);
 
 /// Axis arrows reach past the box face by this factor, so their heads stay visible.
 inline constexpr double kAxisOvershoot = 1.3;
+/// ... and reach at least this many largest half extents: a flat body's
+/// normal (a T-handle's e₃) stays long enough to read when seen at a slant.
+inline constexpr double kAxisLeast = 0.6;
 /// L's line runs from kLBehind to kLReach body sizes (largest half extents)
 /// either side of the centre, ω's arrow kOmegaReach: both past the axes.
 inline constexpr double kLBehind = 0.5, kLReach = 1.6, kOmegaReach = 1.35;
 
 /// World position of the tip of principal axis `i` (0..2) of a body: the axis
-/// runs from the centre of mass through the box face (at least 45% of the
+/// runs from the centre of mass through the box face (at least kAxisLeast of the
 /// largest half extent, so a flat body still shows all three axes).
 glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i);
 
