@@ -84,7 +84,7 @@ class PlotPanel : public Panel {
     lo_ = lo - pad, hi_ = hi + pad;
     if (vc_.y_range) lo_ = (*vc_.y_range)[0], hi_ = (*vc_.y_range)[1];  // the scene's own value axis
     if (vc_.y_range && vc_.y_log) lo_ = std::log10(lo_), hi_ = std::log10(hi_);
-    if (ctx.scene.render.explain.flip_marks)  // the flips marked on screen, marked on the time axis too
+    if (compare && ctx.scene.render.explain.flip_marks)  // a comparison's flips, marked on the time axis too
       marks_ = scene::body_flip_times(ctx.scene, *ctx.scene.render.explain.flip_marks);
   }
   std::string name() const override { return "plot"; }
