@@ -98,3 +98,38 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
 }
 
 }  // namespace
+
+namespace {
+
+// A world view with `body` shows that body alone, its box and its trails, and
+// the readout (the first body's E, |L|, |ω|) only in the first body's view:
+// the demo's two stable spins beside the flipping T.
+TEST(ViewText, AWorldViewOfOneBodyShowsItAloneWithItsTrails) {
+  const tumble::scene::Scene s = tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov.toml");
+  ASSERT_EQ(s.bodies.size(), 3u);
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k = 0;
+  while (k + 1 < clock.count() && clock.time(k) < 7.0) ++k;  // after the stable spins appear (6.45 s)
+  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 640, 360);
+  const tumble::viz::DrawList dl = fb.build(k);
+  ASSERT_EQ(dl.views.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const tumble::viz::View& v = dl.views[i];
+    EXPECT_EQ(v.boxes.size(), 1u) << "view " << i << ": one body's box";
+    const Eigen::Vector3d c = runs[0].frames[static_cast<std::size_t>(k)][i].c;
+    int trails = 0;
+    for (const tumble::viz::PolylineItem& p : v.polylines) {
+      ++trails;
+      for (const glm::dvec3& x : p.points)
+        EXPECT_LT(glm::length(x - glm::dvec3(c.x(), c.y(), c.z())), 1.0) << "view " << i << ": its own body's trail";
+    }
+    EXPECT_EQ(trails, 3) << "view " << i << ": the trails of its body's three axis tips";
+    int readouts = 0;
+    for (const tumble::viz::TextItem& t : v.texts) readouts += t.text.rfind("t =", 0) == 0;
+    EXPECT_EQ(readouts, i == 0 ? 1 : 0) << "view " << i << ": the readout is the first body's";
+  }
+}
+
+}  // namespace
