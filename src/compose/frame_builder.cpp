@@ -185,13 +185,9 @@ std::string FrameBuilder::widest_status() const {
 
 // A classic scene's legend: one key for the frame, what its arrows and box mean.
 std::vector<viz::KeyEntry> FrameBuilder::legend() const {
-  const viz::DrawOptions& draw = world_.draw();
   if (!scene_.render.draw.legend) return {};
   std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
-  if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
-    const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box along the principal axes"});
-  }
+  if (const auto box = box_key(context_)) key.push_back(*box);
   // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
   const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
