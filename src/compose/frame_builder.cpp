@@ -56,7 +56,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
       world_(s, runs, scene::frame_clock(s, fps), viz::text_px(viz::TextRole::label, height, s.render.draw.text_scale)),
       context_{s, runs, world_, height} {
   const auto& views = s.render.explain.views;
-  // A [compare] grid's cells, in one row above the plots of its runs when it has any.
+  // A [compare] grid's cells, in one row above the plots of its runs when it has any (or beside them).
   if (views.empty() || !s.render.compare_methods.empty()) {
     for (std::size_t r = 0; r < runs.size(); ++r) {
       if (!has_cell(s, runs[r])) continue;
@@ -110,14 +110,21 @@ FrameNeeds FrameBuilder::frame_needs() const {
   // and a spinning body needs height); a [compare] grid's, one key in rows above the captions.
   const bool single = cells_ == 1 && views.empty();
   if (cells_ > 0 && !single) needs.frame_key = legend();
-  // Plots under a [compare] grid: the cells share the band above the highest plot.
-  double band = 1;
+  // Plots beside a [compare] grid: the cells share the band above the highest plot
+  // (arrange = "row"), or the band left of the leftmost plot, in one row ("side").
+  double band = 1, side = 1;
   if (cells_ > 0)
-    for (const scene::ViewConfig& v : views) band = std::min(band, v.viewport ? (*v.viewport)[1] : 1.0);
+    for (const scene::ViewConfig& v : views) {
+      band = std::min(band, v.viewport ? (*v.viewport)[1] : 1.0);
+      side = std::min(side, v.viewport ? (*v.viewport)[0] : 1.0);
+    }
+  const bool stacked = scene_.render.compare_arrange == scene::CompareArrange::side && side > 0 && side < 1;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     ViewNeeds v;
     const scene::ViewConfig* vc = i < cells_ ? nullptr : &views[i - cells_];
     if (vc) v.viewport = vc->viewport;
+    else if (stacked)
+      v.viewport = std::array<double, 4>{side * double(i) / double(cells_), 0, side / double(cells_), 1};
     else if (!views.empty())
       v.viewport = std::array<double, 4>{double(i) / double(cells_), 0, 1.0 / double(cells_), band};
     v.kind = panels_[i]->name();
@@ -180,13 +187,9 @@ std::string FrameBuilder::widest_status() const {
 
 // A classic scene's legend: one key for the frame, what its arrows and box mean.
 std::vector<viz::KeyEntry> FrameBuilder::legend() const {
-  const viz::DrawOptions& draw = world_.draw();
   if (!scene_.render.draw.legend) return {};
   std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
-  if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
-    const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box along the principal axes"});
-  }
+  if (const auto box = box_key(context_)) key.push_back(*box);
   // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
   const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
@@ -220,6 +223,7 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0, pinned_boxes))
     notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
                     "the view's other text, bodies, arrows and curves");
+  add_leaders(v, pinned, {c.x1 - c.x0, c.y1 - c.y0});
   v.texts.insert(v.texts.end(), pinned.begin(), pinned.end());
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);

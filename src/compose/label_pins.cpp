@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "compose/view_layout.hpp"
 #include "viz/text_layout.hpp"
 
 namespace tumble::compose {
@@ -51,6 +52,54 @@ std::map<std::string, glm::vec2> pin_labels(const Panel& panel, const scene::Fra
     pinned.push_back({at->x, at->y, at->x + s.size.x, at->y + s.size.y});
   }
   return out;
+}
+
+namespace {
+
+// The point of `box` nearest to `p`.
+glm::vec2 nearest_in(const viz::Box& box, glm::vec2 p) { return {std::clamp(p.x, box.x0, box.x1), std::clamp(p.y, box.y0, box.y1)}; }
+
+// A leader from the label's box to where `curve` comes nearest it on screen; none when they touch.
+// It is an annotation: drawn in front of everything, as text is.
+void add_leader(viz::View& view, const viz::TextItem& t, const viz::PolylineItem& curve, const glm::dmat4& clip_from_world,
+                glm::vec2 size) {
+  const viz::Box box = viz::text_box(t);
+  float best = 1e30f;
+  glm::vec3 end_ndc(0);
+  for (const glm::dvec3& p : curve.points) {
+    const glm::dvec4 clip = clip_from_world * glm::dvec4(p, 1.0);
+    if (clip.w <= 0) continue;
+    const glm::vec3 ndc(glm::dvec3(clip) / clip.w);
+    const glm::vec2 px{(ndc.x + 1) * 0.5f * size.x, (1 - ndc.y) * 0.5f * size.y};
+    const float d = glm::length(px - nearest_in(box, px));
+    if (d < best) best = d, end_ndc = ndc;
+  }
+  if (best > 1e29f || best < 0.4f * t.size_px) return;  // no curve yet, or the label is at it
+  const glm::vec2 end_px{(end_ndc.x + 1) * 0.5f * size.x, (1 - end_ndc.y) * 0.5f * size.y};
+  const glm::vec2 from_px = nearest_in(box, end_px);
+  const glm::vec2 to_px = end_px + (from_px - end_px) * std::min(0.5f, 0.12f * t.size_px / best);  // stop short of the curve
+  // Both ends just behind the near plane, so nothing in the view hides the leader; straight on screen.
+  const glm::dmat4 world_from_clip = glm::inverse(clip_from_world);
+  auto near_point = [&](glm::vec2 px) {
+    const glm::dvec4 w = world_from_clip * glm::dvec4(2.0 * px.x / size.x - 1, 1 - 2.0 * px.y / size.y, -0.99, 1);
+    return glm::dvec3(w) / w.w;
+  };
+  viz::PolylineItem leader{{near_point(from_px), near_point(to_px)}, t.color, std::max(1.2f, t.size_px / 22), false};
+  leader.over_glass = true;
+  view.polylines.push_back(std::move(leader));
+}
+
+}  // namespace
+
+void add_leaders(viz::View& view, const std::vector<viz::TextItem>& pinned, glm::vec2 size_px) {
+  const CameraMatrices m = camera_matrices(view.camera, size_px.x / std::max(size_px.y, 1.0f));
+  const glm::dmat4 clip_from_world = glm::dmat4(m.proj) * glm::dmat4(m.view);
+  for (const viz::TextItem& t : pinned) {
+    if (t.leader_to.empty()) continue;
+    const auto curve = std::find_if(view.polylines.begin(), view.polylines.end(),
+                                    [&](const viz::PolylineItem& l) { return l.name == t.leader_to; });
+    if (curve != view.polylines.end()) add_leader(view, t, *curve, clip_from_world, size_px);
+  }
 }
 
 }  // namespace tumble::compose

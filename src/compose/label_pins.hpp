@@ -21,4 +21,9 @@ namespace tumble::compose {
 std::map<std::string, glm::vec2> pin_labels(const Panel& panel, const scene::FrameClock& clock, glm::vec2 size_px,
                                             float label_px, bool tip_names_further = false);
 
+/// For each of `pinned` (content px) that names a curve of `view` (TextItem::leader_to)
+/// and is not already at it: a leader, a thin line in the curve's colour drawn
+/// over the glass, from the label's box to the curve's point nearest to it on screen.
+void add_leaders(viz::View& view, const std::vector<viz::TextItem>& pinned, glm::vec2 size_px);
+
 }  // namespace tumble::compose

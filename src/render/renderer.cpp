@@ -317,13 +317,16 @@ void Renderer::Impl::draw_view(const viz::View& view, const PixelRect& rect,
   draw_meshes(batches, cam, !view.particles.empty() || solid);
 
   gl_.DepthMask(GL_FALSE);  // trails and edges are translucent overlays
-  for (const Polyline& p : batches.polylines) {
-    lines_.draw(p.strip, view_proj, p.width_px, GL_LINE_STRIP);
-  }
+  for (const Polyline& p : batches.polylines)
+    if (!p.over_glass) lines_.draw(p.strip, view_proj, p.width_px, GL_LINE_STRIP);
   lines_.draw(batches.box_edges, view_proj, kEdgeWidthPx);
   gl_.DepthMask(GL_TRUE);
-  // Translucent surfaces last, over the curves behind them.
+  // Translucent surfaces last, over the curves behind them; then the curves on their near side.
   surfaces_.draw_translucent(view.surfaces, cam.view, cam.proj, kLightDir);
+  gl_.DepthMask(GL_FALSE);
+  for (const Polyline& p : batches.polylines)
+    if (p.over_glass) lines_.draw(p.strip, view_proj, p.width_px, GL_LINE_STRIP);
+  gl_.DepthMask(GL_TRUE);
 
   gl_.Disable(GL_DEPTH_TEST);
   set_viewport(rect);

@@ -83,7 +83,7 @@ void add_grid(const viz::GridItem& g, ViewBatches& out) {
 
 void add_polyline(const viz::PolylineItem& p, ViewBatches& out) {
   if (p.points.size() < 2) return;
-  Polyline line{{}, p.width_px};
+  Polyline line{{}, p.width_px, p.over_glass};
   line.strip.reserve(p.points.size());
   const double last = static_cast<double>(p.points.size() - 1);
   for (std::size_t i = 0; i < p.points.size(); ++i) {

@@ -17,6 +17,7 @@ namespace tumble::render {
 struct Polyline {
   std::vector<LineVertex> strip;  ///< alpha already faded oldest -> newest
   float width_px;
+  bool over_glass = false;        ///< drawn after the translucent surfaces
 };
 
 struct ViewBatches {

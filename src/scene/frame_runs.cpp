@@ -93,6 +93,8 @@ std::vector<Run> simulate_runs(const Scene& s, long frames, double fps) {
     SimulationConfig sim = s.simulation;
     sim.automatic = !method;
     if (method) sim.step.method = *method;
+    for (const auto& [m, dt] : s.render.compare_steps)  // the method's own step ([compare] steps)
+      if (method && m == *method) sim.step.dt = dt;
     SceneRun bodies(s, sim);
     label_run(bodies, run);
     advance_run(clock, frames, curves, models, bodies, run);

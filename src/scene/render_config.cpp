@@ -1,6 +1,8 @@
 // Render sections: parsed and validated with the scene, used by `tumble render`.
 #include <algorithm>
 
+#include "base/format.hpp"
+#include "core/propagator.hpp"
 #include "scene/internal.hpp"
 #include "viz/camera_up.hpp"
 
@@ -165,6 +167,46 @@ void read_compare_cells(TableReader& r, Scene& s) {
   }
 }
 
+// Each method's own step: one table, method = dt (s). Only a compared method
+// that steps at a fixed dt may have one (an adaptive pair takes rtol/atol).
+void read_compare_steps(TableReader& r, Scene& s) {
+  if (!r.has("steps")) return;
+  const toml::table* t = r.subtable("steps");
+  if (!t) return;
+  std::vector<std::string_view> names;  // the compared methods: any other key is refused, with a did-you-mean
+  for (Method m : s.render.compare_methods) names.push_back(method_name(m));
+  TableReader steps(*t, r.key_path("steps"), r.diag(), names);
+  for (auto&& [k, v] : *t) {
+    const std::string name(k.str());
+    const auto m = parse_method(name);
+    if (!m || std::find(names.begin(), names.end(), name) == names.end()) continue;  // reported above
+    if (method_info(*m).adaptive) {
+      steps.error(name, "method \"" + name + "\" is adaptive: it takes rtol/atol in [simulation], not a dt");
+      continue;
+    }
+    const auto dt = steps.number(name, Range::positive());
+    if (!dt) continue;
+    if (s.simulation.duration / *dt > kMaxRunSteps) {
+      steps.error(name, "expected at most " + format_number(kMaxRunSteps) + " steps (duration / dt, the cap), found " +
+                            format_number(s.simulation.duration / *dt, 3));
+      continue;
+    }
+    s.render.compare_steps.emplace_back(*m, *dt);
+  }
+}
+
+// Where the cells stand: one name of kCompareArranges.
+void read_compare_arrange(TableReader& r, Scene& s) {
+  const auto a = r.string("arrange");
+  if (!a) return;
+  std::string names;
+  for (const auto& [value, name] : kCompareArranges) {
+    if (*a == name) return void(s.render.compare_arrange = value);
+    names += std::string(names.empty() ? "" : " or ") + '"' + name + '"';
+  }
+  r.error("arrange", "expected " + names + ", found " + quote_token(*a));
+}
+
 void read_compare(TableReader& r, Scene& s) {
   auto names = r.strings("methods");
   if (!names) {
@@ -190,6 +232,8 @@ void read_compare(TableReader& r, Scene& s) {
     s.render.compare_methods.push_back(*m);
   }
   read_compare_cells(r, s);
+  read_compare_steps(r, s);
+  read_compare_arrange(r, s);
 }
 
 }  // namespace
@@ -216,7 +260,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {
-    TableReader r(*t, "compare", ctx.diag, {"methods", "cells"});
+    TableReader r(*t, "compare", ctx.diag, {"methods", "cells", "steps", "arrange"});
     read_compare(r, scene);
   }
 }

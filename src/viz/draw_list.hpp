@@ -103,6 +103,9 @@ struct PolylineItem {
   float width_px;
   bool fade = true;                ///< false: one alpha along the line (curves, plots)
   std::string name = {};           ///< in the layout report (empty: not reported)
+  /// Drawn after the translucent surfaces, over them: a curve on the near side
+  /// of a glassy surface (a polhode on the inertia ellipsoid) in full colour.
+  bool over_glass = false;
 };
 
 /// Ground grid in the plane through `origin` with normal +z (world).
@@ -129,6 +132,9 @@ struct TextItem {
   /// What a label names (a body's box on screen), x0, y0, x1, y1 in the
   /// viewport's pixels; x1 <= x0: none. viz::settle_labels keeps the label beside it.
   glm::vec4 subject_px{0};
+  /// A named polyline this label names: once the label is pinned (compose/label_pins),
+  /// a thin leader in its colour runs from the label to the curve's nearest point.
+  std::string leader_to = {};
 };
 
 /// Perspective camera (GLM lookAt/perspective conventions).

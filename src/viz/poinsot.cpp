@@ -52,6 +52,9 @@ std::vector<KeyEntry> poinsot_key() {
 
 namespace {
 
+// Line widths grow with the frame (1 at 540 lines, 2 at 1080): a curve keeps its weight beside the text.
+float line_scale(int frame_h) { return std::max(1.0f, static_cast<float>(frame_h) / 540.0f); }
+
 // Poinsot's construction, scaled so the largest semi-axis is 1: the plane
 // spanned by (u, v) ⊥ L̂, its foot the nearest point to the centre.
 struct PoinsotFrame {
@@ -78,7 +81,7 @@ void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSet
 
 // The ellipsoid: a shaded translucent surface fixed to the body, with its
 // three principal sections drawn on it so its turning shows.
-void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
+void add_inertia_ellipsoid(View& view, const PoinsotFrame& f, float w) {
   const PoinsotGeometry& p = f.p;
   const double pi = std::numbers::pi;
   glm::dmat3 axes;
@@ -87,7 +90,7 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f) {
   view.surfaces.back().name = "ellipsoid";
   const Color ring = color_of(Meaning::ellipsoid, 0.6f);
   for (int a = 0; a < 3; ++a) {
-    PolylineItem section{{}, ring, 1.0f, false};
+    PolylineItem section{{}, ring, 1.2f * w, false};
     const int b = (a + 1) % 3, c = (a + 2) % 3;
     for (int i = 0; i <= 96; ++i) {
       const double ph = 2 * pi * i / 96;
@@ -118,6 +121,32 @@ void add_invariable_plane(View& view, const PoinsotFrame& f) {
   }
 }
 
+// The polhode's runs on the ellipsoid's near side, drawn again over the glass
+// in full colour: the whole curve shows as one closed loop, its far side
+// dimmed through the ellipsoid, its near side not.
+void add_near_side(View& view, const PoinsotFrame& f, const PolylineItem& curve) {
+  const Eigen::Vector3d eye(view.camera.position.x, view.camera.position.y, view.camera.position.z);
+  const Eigen::Vector3d a = f.p.semi_axes * f.scale;
+  auto near = [&](const glm::dvec3& q) {
+    const Eigen::Vector3d x(q.x, q.y, q.z);
+    const Eigen::Vector3d n = f.p.axes * (f.p.axes.transpose() * x).cwiseQuotient(a.cwiseProduct(a));  // outward normal
+    return n.dot(eye - x) > 0;
+  };
+  std::size_t start = 0;
+  while (start + 1 < curve.points.size()) {
+    const bool shown = near(curve.points[start]);
+    std::size_t end = start + 1;
+    while (end + 1 < curve.points.size() && near(curve.points[end]) == shown) ++end;
+    if (shown) {
+      PolylineItem run{{}, curve.color, curve.width_px, false};
+      run.over_glass = true;
+      run.points.assign(curve.points.begin() + static_cast<long>(start), curve.points.begin() + static_cast<long>(end) + 1);
+      view.polylines.push_back(std::move(run));
+    }
+    start = end;
+  }
+}
+
 // L, ω to the contact point, polhode (body-fixed, carried by R) and herpolhode (on the plane).
 void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const PoinsotGeometry& p = f.p;
@@ -125,30 +154,33 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const Eigen::Vector3d L_tip = f.foot - 3 * kHerpolhodeLift * p.normal;
   view.arrows.push_back({{0, 0, 0}, to_glm(L_tip), 0.015, kLColor, "L", "L", 0});
   view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.015, kOmegaColor, "omega", "\u03c9", 1});
-  PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f, false, "polhode"};
-  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f, false, "herpolhode"};
+  const float w = line_scale(in.frame_h);
+  PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
+  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.2f * w, false, "herpolhode"};
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(to_glm(in.q * w * f.scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history)
     herpolhode.points.push_back(to_glm(w * f.scale - kHerpolhodeLift * p.normal));
   view.points.push_back({to_glm(p.contact * f.scale), 0.035, color_of(Meaning::omega), "contact_point"});
+  if (polhode.points.size() >= 2) add_near_side(view, f, polhode);
   if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
 }
 
 // A curve's name beside its extent on screen (the extent is the label's
 // subject: compose/label_pins pins it once per run beside where the curve went).
-void add_curve_label(View& view, const ViewportProjection& project, const std::vector<glm::dvec3>& curve, const char* text,
-                     Color color, float size, const char* name) {
+void add_curve_label(View& view, const ViewportProjection& project, const PolylineItem& curve, const char* text, float size,
+                     const char* name) {
   glm::vec4 box{1e30f, 1e30f, -1e30f, -1e30f};
-  for (const glm::dvec3& p : curve) {
+  for (const glm::dvec3& p : curve.points) {
     glm::vec2 px;
     if (!project(p, px)) continue;
     box = {std::min(box.x, px.x), std::min(box.y, px.y), std::max(box.z, px.x), std::max(box.w, px.y)};
   }
   if (box.z < box.x) return;
   const glm::vec2 c{0.5f * (box.x + box.z), 0.5f * (box.y + box.w)};
-  TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, color, name};
+  TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, curve.color, name};
   t.subject_px = box + glm::vec4(-4, -4, 4, 4);
+  t.leader_to = curve.name;
   view.texts.push_back(std::move(t));
 }
 
@@ -157,8 +189,8 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h, in.text_scale);
   for (const PolylineItem& l : view.polylines) {
-    if (l.name == "polhode") add_curve_label(view, project, l.points, "polhode", l.color, size, "label_polhode");
-    if (l.name == "herpolhode") add_curve_label(view, project, l.points, "herpolhode", l.color, size, "label_herpolhode");
+    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode");
+    if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode");
   }
   // The plane at the corner in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;
@@ -188,7 +220,7 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   plane_basis(f.p.normal, f.u, f.v);
   f.foot = f.p.plane_distance * f.scale * f.p.normal;
   aim_poinsot_camera(view, f, in.camera);
-  add_inertia_ellipsoid(view, f);
+  add_inertia_ellipsoid(view, f, line_scale(in.frame_h));
   add_invariable_plane(view, f);
   add_motion(view, f, in);
   add_direct_labels(view, f, in);

@@ -104,3 +104,61 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
 }
 
 }  // namespace
+
+namespace {
+
+// A world view with `body` shows that body alone, its box and its trails, and
+// the readout (the first body's E, |L|, |ω|) only in the first body's view.
+TEST(ViewText, AWorldViewOfOneBodyShowsItAloneWithItsTrails) {
+  const tumble::scene::Scene s = tumble::scene::load_scene_from_string(R"(
+name = "two"
+[simulation]
+duration = 1.0
+fps = 30
+[[bodies]]
+name = "a"
+shape = { type = "box", size = [0.3, 0.2, 0.1], resolution = [3, 2, 1], mass = 1.0 }
+omega_body = [0.1, 5.0, 0.1]
+[[bodies]]
+name = "b"
+shape = { type = "box", size = [0.3, 0.2, 0.1], resolution = [3, 2, 1], mass = 1.0 }
+position = [3.0, 0.0, 0.0]
+omega_body = [5.0, 0.1, 0.1]
+[draw]
+box = true
+trails = 0.5
+overlay = ["time", "state"]
+[[views]]
+kind = "world"
+body = "a"
+viewport = [0.0, 0.0, 0.5, 1.0]
+[[views]]
+kind = "world"
+body = "b"
+viewport = [0.5, 0.0, 0.5, 1.0]
+)", "two.toml");
+  ASSERT_EQ(s.bodies.size(), 2u);
+  const double fps = s.render.output.fps;
+  const long k = 15;  // t = 0.5 s
+  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 640, 360);
+  const tumble::viz::DrawList dl = fb.build(k);
+  ASSERT_EQ(dl.views.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const tumble::viz::View& v = dl.views[i];
+    EXPECT_EQ(v.boxes.size(), 1u) << "view " << i << ": one body's box";
+    const Eigen::Vector3d c = runs[0].frames[static_cast<std::size_t>(k)][i].c;
+    int trails = 0;
+    for (const tumble::viz::PolylineItem& p : v.polylines) {
+      ++trails;
+      for (const glm::dvec3& x : p.points)
+        EXPECT_LT(glm::length(x - glm::dvec3(c.x(), c.y(), c.z())), 1.0) << "view " << i << ": its own body's trail";
+    }
+    EXPECT_EQ(trails, 3) << "view " << i << ": the trails of its body's three axis tips";
+    int readouts = 0;
+    for (const tumble::viz::TextItem& t : v.texts) readouts += t.text.rfind("t =", 0) == 0;
+    EXPECT_EQ(readouts, i == 0 ? 1 : 0) << "view " << i << ": the readout is the first body's";
+  }
+}
+
+}  // namespace

@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "compose/frame_builder.hpp"
+#include "compose/view_layout.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/frame_runs.hpp"
 #include "scene/scene.hpp"
 #include "viz/draw_list.hpp"
+#include "viz/text_layout.hpp"
 
 namespace {
 
@@ -62,6 +64,50 @@ TEST(PoinsotViews, BodyFixedViewTracesLsTipAndNamesNoStillBody) {
         EXPECT_NEAR(glm::length(p - L->origin), glm::length(L->vector), 1e-9) << "frame " << k;
     }
   EXPECT_GT(trails, 10);
+}
+
+// Where a world point lands in the view's pixels (its content rectangle's camera).
+glm::vec2 on_screen(const tumble::viz::View& v, const glm::dvec3& p) {
+  const glm::vec4 c = v.content_px.value();
+  const glm::vec2 size{c.z - c.x, c.w - c.y};
+  const auto m = tumble::compose::camera_matrices(v.camera, size.x / size.y);
+  const glm::vec4 clip = m.proj * m.view * glm::vec4(glm::vec3(p), 1.0f);
+  return {c.x + (clip.x / clip.w + 1) * 0.5f * size.x, c.y + (1 - clip.y / clip.w) * 0.5f * size.y};
+}
+
+float distance_to(const tumble::viz::Box& b, glm::vec2 p) {
+  return glm::length(p - glm::vec2(std::clamp(p.x, b.x0, b.x1), std::clamp(p.y, b.y0, b.y1)));
+}
+
+TEST(PoinsotViews, CurveNamesAreAtTheirCurvesOrLedToThem) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  int leaders = 0;
+  for (const long k : {300L, 1000L, l.frames - 1})
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name != "poinsot") continue;
+      for (const tumble::viz::TextItem& t : v.texts) {
+        if (t.leader_to.empty()) continue;
+        const auto curve = std::find_if(v.polylines.begin(), v.polylines.end(), [&](const auto& p) { return p.name == t.leader_to; });
+        ASSERT_NE(curve, v.polylines.end()) << t.text << " at " << k;
+        const tumble::viz::Box box = tumble::viz::text_box(t);
+        float gap = 1e30f;  // from the label to its curve, on screen
+        for (const glm::dvec3& p : curve->points) gap = std::min(gap, distance_to(box, on_screen(v, p)));
+        if (gap < 0.4f * t.size_px) continue;  // at its curve
+        // Else a leader in its colour: from the label's box to within a few px of the curve.
+        bool led = false;
+        for (const tumble::viz::PolylineItem& p : v.polylines) {
+          if (!p.name.empty() || p.points.size() != 2 || p.color != t.color) continue;
+          const glm::vec2 a = on_screen(v, p.points[0]), b = on_screen(v, p.points[1]);
+          float end_gap = 1e30f;
+          for (const glm::dvec3& q : curve->points) end_gap = std::min(end_gap, glm::length(b - on_screen(v, q)));
+          led = led || (distance_to(box, a) < 1.5f && end_gap < 0.2f * t.size_px);
+        }
+        EXPECT_TRUE(led) << t.text << " " << gap << " px from its curve, with no leader, at frame " << k;
+        leaders += led;
+      }
+    }
+  EXPECT_GT(leaders, 0);
 }
 
 }  // namespace

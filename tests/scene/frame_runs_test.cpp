@@ -88,4 +88,22 @@ namespace {
 // Text in small views does not overlap. The poinsot scene at the
 // golden size (320 × 240) has four 160 × 120 views with titles, an overlay
 // line and body name labels.
+TEST(SmoothCurves, AComparedMethodTakesItsOwnStep) {
+  // [compare] steps: Euler at a quarter of the scene's dt, RK4 at the scene's.
+  const std::string text = scene_text(0, "rk4") + "[compare]\nmethods = [\"euler\", \"rk4\"]\nsteps = { euler = 2.5e-4 }\n";
+  const tumble::scene::Scene s = tumble::scene::load_scene_from_string(text, "cmp.toml");
+  const std::vector<AppRun> runs = simulate_runs(s, 31, 30);
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].step_label, "dt = 0.00025 s");
+  EXPECT_EQ(runs[1].step_label, "dt = 0.001 s");
+  // A quarter of the step: Euler's energy gain over 1 s is well under half (2.8× smaller here).
+  const tumble::scene::Scene plain = tumble::scene::load_scene_from_string(
+      scene_text(0, "rk4") + "[compare]\nmethods = [\"euler\", \"rk4\"]\n", "cmp.toml");
+  const AppRun coarse = simulate_runs(plain, 31, 30)[0];
+  const auto& m = s.bodies[0].model;
+  auto drift = [&](const AppRun& r) { return tumble::total_energy(m, r.frames.back()[0]) / r.energy0[0] - 1; };
+  EXPECT_GT(drift(runs[0]), 0);
+  EXPECT_GT(drift(coarse), 2.0 * drift(runs[0]));
+}
+
 }  // namespace

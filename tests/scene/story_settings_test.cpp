@@ -274,6 +274,52 @@ TEST(StorySettings, AComparisonsCellsAreSomeOfItsMethods) {
   }
 }
 
+TEST(StorySettings, AComparisonsCellsStandInARowOrBesideThePlots) {
+  auto with_arrange = [](const std::string& arrange) {  // into [compare], before [draw]
+    std::string text = compare_scene("");
+    return text.replace(text.find("[draw]"), 0, "arrange = " + arrange + "\n");
+  };
+  EXPECT_EQ(load_scene_from_string(compare_scene(""), "cmp.toml").render.compare_arrange, CompareArrange::row) << "unset";
+  EXPECT_EQ(load_scene_from_string(with_arrange("\"row\""), "cmp.toml").render.compare_arrange, CompareArrange::row);
+  EXPECT_EQ(load_scene_from_string(with_arrange("\"side\""), "cmp.toml").render.compare_arrange, CompareArrange::side);
+  for (const char* bad : {"\"left\"", "1", "[\"side\"]"}) {
+    const std::string error = scene_error(with_arrange(bad), "cmp.toml");
+    EXPECT_NE(error.find("cmp.toml:"), std::string::npos) << bad << error;
+    EXPECT_NE(error.find("compare.arrange"), std::string::npos) << bad << error;
+  }
+  EXPECT_NE(scene_error(with_arrange("\"left\""), "cmp.toml").find("expected \"row\" or \"side\", found \"left\""),
+            std::string::npos);
+}
+
+TEST(StorySettings, AComparisonsStepsAreItsFixedStepMethodsOwn) {
+  auto with_steps = [](const std::string& steps, const std::string& methods = "[\"euler\", \"exact\"]") {
+    const std::string usual = "[\"euler\", \"exact\"]";
+    std::string text = compare_scene("");
+    text.replace(text.find(usual), usual.size(), methods);
+    return text.replace(text.find("[draw]"), 0, "steps = " + steps + "\n");
+  };
+  const Scene s = load_scene_from_string(with_steps("{ euler = 0.0025 }"), "cmp.toml");
+  ASSERT_EQ(s.render.compare_steps.size(), 1u);
+  EXPECT_EQ(s.render.compare_steps[0].first, Method::euler);
+  EXPECT_EQ(s.render.compare_steps[0].second, 0.0025);
+  EXPECT_TRUE(load_scene_from_string(compare_scene(""), "cmp.toml").render.compare_steps.empty()) << "unset: [simulation] dt";
+  // Each refusal names the file, line and column and the key.
+  const std::pair<std::string, std::string> bad[] = {
+      {"{ rk4 = 0.0025 }", "compare.steps.rk4: unknown key"},       // not a compared method
+      {"{ eulr = 0.0025 }", "did you mean 'euler'"},
+      {"{ euler = 0 }", "compare.steps.euler: expected a finite number > 0"},
+      {"{ euler = \"fast\" }", "compare.steps.euler"},
+      {"0.0025", "compare.steps"},
+      {"{ euler = 1e-9 }", "steps (duration / dt, the cap)"}};
+  for (const auto& [steps, expected] : bad) {
+    const std::string error = scene_error(with_steps(steps), "cmp.toml");
+    EXPECT_NE(error.find("cmp.toml:"), std::string::npos) << steps << ": " << error;
+    EXPECT_NE(error.find(expected), std::string::npos) << steps << ": " << error;
+  }
+  const std::string adaptive = scene_error(with_steps("{ rk45 = 0.01 }", "[\"euler\", \"rk45\"]"), "cmp.toml");
+  EXPECT_NE(adaptive.find("compare.steps.rk45: method \"rk45\" is adaptive"), std::string::npos) << adaptive;
+}
+
 TEST(StorySettings, TimesPastTheRunsEndLeaveOutWhatTheyStart) {
   // As with --duration shorter than the scene's: the later text is left out, not an error.
   const Scene s = load(R"(
