@@ -93,7 +93,9 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   // Names placed once for the whole run, clear of what the view shows in every frame.
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
-    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0}, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale)));
+    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0},
+                               viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale),
+                               scene_.render.draw.tip_names_further));
   }
 }
 
@@ -202,7 +204,8 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   const viz::Box& c = p.content;
   // Arrows are named at their tips, then labels settle inside the content
   // rectangle, clear of its other text; then move with it into the view.
-  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale));
+  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale),
+                        scene_.render.draw.tip_names_further);
   // Pinned names go to their places for the run; the other labels settle clear of them.
   std::vector<viz::TextItem> pinned;
   std::vector<viz::Box> pinned_boxes;
