@@ -108,6 +108,8 @@ struct ExplainConfig {
   bool key = true;                 ///< [draw] key: each view's key of colours and meanings
   /// [draw] flips: the body whose flips are marked on screen ("flip 1", ...); none: no marks.
   std::optional<std::size_t> flip_marks;
+  /// [draw] flip_badge: how long a flip's mark stays up, in video seconds in which the animation runs.
+  double flip_badge_seconds = 2.0;
 };
 
 }  // namespace tumble::scene
