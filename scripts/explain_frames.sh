@@ -17,7 +17,7 @@ fi
 # after the first flip (t = 1.51 s); 878 = t = 2.2 s, Π near −e₂ between the
 # flips; poinsot 1038 = t = 3 s;
 # tennis_racket 600 = the hold at the middle racket's first flip (t = 0.57 s);
-# dzhanibekov 700 = the demo's hold after flip 2 (t = 5.35 s: ω 17.5° off L,
+# dzhanibekov 700 = the demo's hold at flip 2 (t = 5.09 s: ω 28° off L,
 # the two stable spins beside the T); methods_compare 895 = the hold at t = 10 s,
 # explicit Euler (dt/4) +23 % and climbing, RK4 on the grey exact body.
 for spec in "dzhanibekov 700 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 628 explained_flip" \
