@@ -33,11 +33,6 @@ bool has_cell(const scene::Scene& s, const scene::Run& run) {
   return std::any_of(cells.begin(), cells.end(), [&](Method m) { return method_name(m) == run.label; });
 }
 
-// How long a flip's mark stays up after the flip: video s in which the
-// animation runs (a hold does not use it up). Video time, not simulated: at
-// ×1/8 the mark would otherwise stay up long after the flip, at ×4 flash by.
-constexpr double kFlipMarkSeconds = 2.0;
-
 void move_text(viz::TextItem& t, glm::vec2 d) {
   t.position_px += d;
   if (t.backdrop.a > 0) t.backdrop_px += glm::vec4(d, d);
@@ -140,7 +135,10 @@ FrameNeeds FrameBuilder::frame_needs() const {
   return needs;
 }
 
-// The video times at which the marked body's flips are first shown.
+// The video times at which the marked body's flips are first shown. A mark
+// stays up for [draw] flip_badge video seconds in which the animation runs (a
+// hold does not use it up). Video time, not simulated: at ×1/8 the mark would
+// otherwise stay up long after the flip, at ×4 flash by.
 void FrameBuilder::mark_flips() {
   if (!scene_.render.explain.flip_marks) return;
   const scene::FrameClock& clock = world_.clock();
@@ -150,7 +148,8 @@ void FrameBuilder::mark_flips() {
     while (k < clock.count() && clock.time(k) < flip - 1e-9) ++k;
     if (k >= clock.count()) break;
     long end = k;
-    for (long running = 0; end < clock.count() && running < std::lround(kFlipMarkSeconds * clock.fps()); ++end)
+    const long up = std::lround(scene_.render.explain.flip_badge_seconds * clock.fps());
+    for (long running = 0; end < clock.count() && running < up; ++end)
       if (!clock.in_hold(end)) ++running;
     flip_frames_.emplace_back(k, end);
   }

@@ -1,6 +1,7 @@
 #include "compose/world_views.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -104,11 +105,16 @@ std::string three_digits(double v) {
   return text;
 }
 
-// The first body's energy, |L| and |ω| (world): E and |L| stay fixed in a
-// free body while |ω| changes, which the readout lets one see.
-std::string state_readout(const viz::BodySnapshot& b) {
-  return "E = " + three_digits(total_energy(*b.model, b.state)) + " J   |L| = " + three_digits(b.state.L.norm()) +
-         " kg\u00b7m\u00b2/s   |\u03c9| = " + three_digits(omega_world(*b.model, b.state).norm()) + " rad/s";
+// The first body's energy and |L| (world), which stay fixed in a free body,
+// then on a line of their own what changes: |ω| and the angle between ω and L
+// (ω·L = 2E fixes only ω's part along L, so ω leans off L as it grows).
+std::array<std::string, 2> state_readout(const viz::BodySnapshot& b) {
+  const Eigen::Vector3d w = omega_world(*b.model, b.state), L = b.state.L;
+  char angle[40];
+  std::snprintf(angle, sizeof angle, "%.1f\u00b0", std::atan2(w.cross(L).norm(), w.dot(L)) * 180 / M_PI);
+  return {"E = " + three_digits(total_energy(*b.model, b.state)) + " J   |L| = " + three_digits(L.norm()) +
+              " kg\u00b7m\u00b2/s",
+          "|\u03c9| = " + three_digits(w.norm()) + " rad/s   \u2220(\u03c9, L) = " + angle};
 }
 
 // The overlay lines: time, method, step, energy error, state, as the scene's overlay asks;
@@ -147,7 +153,11 @@ std::vector<std::string> overlay_line(const scene::OverlayItems& items, const sc
   std::vector<std::string> lines;
   if (energy_apart && items.energy && !line.empty()) lines.push_back(std::exchange(line, std::string()));
   part(items.energy, energy);
-  part(items.state && !snaps.empty(), snaps.empty() ? std::string() : state_readout(snaps.front()));
+  if (items.state && !snaps.empty()) {
+    const std::array<std::string, 2> state = state_readout(snaps.front());
+    part(true, state[0]);
+    lines.push_back(std::exchange(line, state[1]));
+  }
   lines.push_back(line);
   return lines;
 }
@@ -308,7 +318,8 @@ std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {
 }
 
 int WorldViews::overlay_lines(std::size_t r) const {
-  return (scene_.render.draw.overlay ? (energy_apart(scene_) ? 2 : 1) : 0) + (runs_[r].diverged ? 1 : 0);
+  const scene::DrawConfig& d = scene_.render.draw;
+  return (d.overlay ? (energy_apart(scene_) ? 2 : 1) + (d.overlay_items.state ? 1 : 0) : 0) + (runs_[r].diverged ? 1 : 0);
 }
 
 }  // namespace tumble::compose

@@ -76,7 +76,8 @@ struct ViewConfig {
   ViewCamera camera;
   bool energy_ellipsoid = true;     ///< momentum_sphere: the energy ellipsoid (when it fits)
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
-  double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot, times this
+  double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
+  bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)
   int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range
@@ -107,6 +108,8 @@ struct ExplainConfig {
   bool key = true;                 ///< [draw] key: each view's key of colours and meanings
   /// [draw] flips: the body whose flips are marked on screen ("flip 1", ...); none: no marks.
   std::optional<std::size_t> flip_marks;
+  /// [draw] flip_badge: how long a flip's mark stays up, in video seconds in which the animation runs.
+  double flip_badge_seconds = 2.0;
 };
 
 }  // namespace tumble::scene

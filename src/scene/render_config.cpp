@@ -143,6 +143,7 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   s.render.explain.key = r.boolean("key").value_or(true);
   d.legend = r.boolean("legend").value_or(d.legend);
   read_flip_marks(r, ctx, s);
+  s.render.explain.flip_badge_seconds = r.number("flip_badge", Range::closed(0.5, 10)).value_or(s.render.explain.flip_badge_seconds);
 }
 
 // Which of the compared methods get a cell: fewer, larger pictures; the
@@ -256,7 +257,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
     TableReader r(*t, "draw", ctx.diag,
                   {"box", "surface", "axes", "particles", "L", "omega", "trails", "trail_axes", "grid", "overlay", "legend", "labels", "key",
                    "flips", "arrow_width", "arrow_length", "text_scale",
-                   "tip_names_further"});
+                   "tip_names_further", "flip_badge"});
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {

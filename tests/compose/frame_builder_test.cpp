@@ -77,8 +77,10 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
 }
 
 // The demo's readout: E and |L| read the same at the start and mid-flip-1
-// (a free body keeps both), |ω| does not; the start's values are the exact
-// ones, E = ½ ω·Iω and |L| = |Iω| from the scene's ω and `tumble info`'s moments.
+// (a free body keeps both), |ω| and the angle between ω and L do not; the
+// start's values are the exact ones, E = ½ ω·Iω, |L| = |Iω| and ∠(ω, Iω) =
+// 0.097° from the scene's ω and `tumble info`'s moments. Mid-flip ω leans far
+// off L: on the separatrix, half-way between ±e₂, L is 32° from e₃ and ω 60°.
 TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   const tumble::scene::Scene s =
       tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov.toml");
@@ -89,19 +91,24 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   while (k1 + 1 < clock.count() && clock.time(k1) < 1.80) ++k1;
   const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
-  auto readout = [&](long k) {
+  // The readout's two lines: what stays fixed, what changes.
+  auto readout = [&](long k, const std::string& what) {
     for (const tumble::viz::View& v : fb.build(k).views)
       for (const tumble::viz::TextItem& t : v.texts)
-        if (t.text.find("|L| = ") != std::string::npos) return t.text.substr(t.text.find("E = "));
+        if (t.text.find(what) != std::string::npos) return t.text.substr(t.text.find(what));
     return std::string();
   };
-  while (k0 < k1 && readout(k0).empty()) ++k0;  // the first frame after the title card
+  while (k0 < k1 && readout(k0, "E = ").empty()) ++k0;  // the first frame after the title card
   ASSERT_LT(clock.time(k0), 0.05);
-  const std::string start = readout(k0), flip = readout(k1);
-  EXPECT_EQ(start, "E = 1.17 J   |L| = 0.293 kg\u00b7m\u00b2/s   |\u03c9| = 8.00 rad/s");
-  ASSERT_FALSE(flip.empty());
-  EXPECT_EQ(flip.substr(0, flip.find("|\u03c9|")), start.substr(0, start.find("|\u03c9|")));
-  EXPECT_NE(flip, start);  // |ω| changes at the flip
+  EXPECT_EQ(readout(k0, "E = "), "E = 1.17 J   |L| = 0.293 kg\u00b7m\u00b2/s");
+  EXPECT_EQ(readout(k0, "|\u03c9| = "), "|\u03c9| = 8.00 rad/s   \u2220(\u03c9, L) = 0.1\u00b0");
+  EXPECT_EQ(readout(k1, "E = "), readout(k0, "E = "));
+  const std::string flip = readout(k1, "|\u03c9| = ");
+  ASSERT_NE(flip.find("\u2220(\u03c9, L) = "), std::string::npos);
+  const double angle = std::stod(flip.substr(flip.find("= ", flip.find("\u2220")) + 2));
+  EXPECT_GT(angle, 20.0) << flip;  // ω far off L mid-flip
+  EXPECT_LT(angle, 30.0) << flip;  // and no further than on the separatrix (28°)
+  EXPECT_NE(flip.substr(0, flip.find("   ")), readout(k0, "|\u03c9| = ").substr(0, flip.find("   ")));  // |ω| changes
 }
 
 }  // namespace

@@ -163,11 +163,16 @@ TEST(GltfExport, NodeNamesSurviveThreeJsAndBlender) {
 }
 
 TEST(GltfExport, SceneCameraAndLight) {
-  scene::Scene s = scene::load_scene(kScenes / "dzhanibekov.toml");
-  // A fixed camera at (1.15, -1.7, 0.85), looking at 0 (the demo itself looks across L).
-  s.render.camera.across = 0;
-  s.render.camera.automatic = false;
-  s.render.camera.position = Eigen::Vector3d(1.15, -1.7, 0.85);
+  // One T-handle at the origin, seen by a fixed camera at (1.15, -1.7, 0.85) that looks at it: the exporter's
+  // camera and light, whatever the shipped demo shows.
+  const scene::Scene s = scene::load_scene_from_string(
+      "[simulation]\nmethod = \"splitting\"\ndt = 1e-3\nduration = 1\nfps = 30\n"
+      "[[bodies]]\nname = \"t_handle\"\n"
+      "shape = { type = \"t_handle\", handle_length = 0.8, stem_length = 0.4, thickness = 0.1, resolution = 50, mass = 1.0 }\n"
+      "omega_body = [0.02, 8.0, 0.02]\n"
+      "[output]\nwidth = 1280\nheight = 720\n"
+      "[camera]\nposition = [1.15, -1.7, 0.85]\nfov_y = 35\n",
+      "camera.toml");
   const fs::path out = fs::path(::testing::TempDir()) / "camera.gltf";
   gltf::export_gltf(s, out);
   const tinygltf::Model m = load(out);

@@ -26,10 +26,10 @@ constexpr double kFillMargin = 0.1;  // room around what a camera moved closer f
 
 class WorldPanel : public Panel {
  public:
-  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewCamera* own = nullptr,
+  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewConfig* vc = nullptr,
              std::optional<std::size_t> only = std::nullopt)
-      : ctx_(ctx), run_(run), keyed_(keyed), own_(own && own->position ? own : nullptr),
-        across_(own && own->across != 0 ? own : nullptr), only_(only) {}
+      : ctx_(ctx), run_(run), keyed_(keyed), vc_(vc), own_(vc && vc->camera.position ? &vc->camera : nullptr),
+        across_(vc && vc->camera.across != 0 ? &vc->camera : nullptr), only_(only) {}
   std::string name() const override { return "world"; }
   // A view of one body is keyed as a classic scene's legend: arrow swatches, and the box.
   std::vector<viz::KeyEntry> key() const override {
@@ -110,6 +110,7 @@ class WorldPanel : public Panel {
   // it). A name with no room along its arrow turns beside the tip
   // (viz::label_arrow_tips): a name's width across, half a line up and down.
   Margins tip_margins(glm::vec2 size) const {
+    if (vc_ && !vc_->tip_names) return 0.0;
     const double px = viz::text_px(viz::TextRole::label, ctx_.frame_h, ctx_.text_scale());
     return {1.4 * px / (0.5 * std::max(size.x, 1.0f)), 0.6 * px / (0.5 * std::max(size.y, 1.0f))};
   }
@@ -119,6 +120,12 @@ class WorldPanel : public Panel {
     if (only_)
       for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_)) v.polylines.push_back(std::move(p));
     v.name = name();
+    // A view of small bodies may draw its arrows thicker, and leave their names to the key.
+    for (viz::ArrowItem& a : v.arrows) {
+      if (!vc_) break;
+      a.radius *= vc_->line_scale;
+      if (!vc_->tip_names) a.tip.clear();
+    }
     return v;
   }
 
@@ -126,6 +133,7 @@ class WorldPanel : public Panel {
   const PanelContext& ctx_;
   std::size_t run_;
   bool keyed_;
+  const scene::ViewConfig* vc_;  // the view's options (none: a classic view or a [compare] cell)
   const scene::ViewCamera* own_;  // the view's own camera (a world view's `camera` table), else the scene's
   const scene::ViewCamera* across_;  // the view's camera across L
   std::optional<std::size_t> only_;  // the view's body alone
@@ -179,7 +187,7 @@ viz::Color run_color(const scene::Run& run) {
 std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index) {
   const scene::ViewConfig& v = ctx.scene.render.explain.views[index];
   const std::optional<std::size_t> only = v.body.empty() ? std::nullopt : std::optional<std::size_t>(view_body(ctx, index));
-  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &v.camera, only);
+  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &v, only);
 }
 
 std::unique_ptr<Panel> make_run_panel(const PanelContext& ctx, std::size_t r) {
