@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -111,6 +112,18 @@ std::string state_readout(const viz::BodySnapshot& b) {
          " kg\u00b7m\u00b2/s   |\u03c9| = " + three_digits(omega_world(*b.model, b.state).norm()) + " rad/s";
 }
 
+// The angle between the first body's ω and L (world), degrees: 0 for a spin
+// about a principal axis; through a flip ω swings away from L and back.
+std::string angle_readout(const viz::BodySnapshot& b) {
+  const Eigen::Vector3d w = omega_world(*b.model, b.state), L = b.state.L;
+  const double c = w.norm() > 0 && L.norm() > 0 ? std::clamp(w.dot(L) / (w.norm() * L.norm()), -1.0, 1.0) : 1.0;
+  const double deg = std::acos(c) * 180 / std::numbers::pi;
+  char text[48];
+  // Digits are two spaces wide: padded so that the readout never moves.
+  std::snprintf(text, sizeof text, "\u2220(\u03c9, L) = %s%.1f\u00b0", deg < 10 ? "  " : "", deg);
+  return text;
+}
+
 // The overlay lines: time, method, step, energy error, state, as the scene's overlay asks;
 // the energy error on a line of its own where cells are narrow ([compare] arrange = "side").
 std::vector<std::string> overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
@@ -148,6 +161,7 @@ std::vector<std::string> overlay_line(const scene::OverlayItems& items, const sc
   if (energy_apart && items.energy && !line.empty()) lines.push_back(std::exchange(line, std::string()));
   part(items.energy, energy);
   part(items.state && !snaps.empty(), snaps.empty() ? std::string() : state_readout(snaps.front()));
+  part(items.angle && !snaps.empty(), snaps.empty() ? std::string() : angle_readout(snaps.front()));
   lines.push_back(line);
   return lines;
 }

@@ -1,6 +1,8 @@
 // The frame builder's text: the overlay line keeps clear of the view title and the name labels.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -102,6 +104,37 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   ASSERT_FALSE(flip.empty());
   EXPECT_EQ(flip.substr(0, flip.find("|\u03c9|")), start.substr(0, start.find("|\u03c9|")));
   EXPECT_NE(flip, start);  // |ω| changes at the flip
+}
+
+// dzhanibekov_explained's readout of the angle between ω and L: at the start
+// the exact angle of ω_body = (0.5, 8, 0.35) rad/s and L = Iω (principal
+// moments from the model), and at flip 1's hold ω swung well away from L.
+TEST(Overlay, AngleReadoutShowsOmegaLeavingL) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov_explained.toml");
+  ASSERT_TRUE(s.render.draw.overlay_items.angle);
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k0 = 0, k1 = 0;
+  while (k1 + 1 < clock.count() && clock.time(k1) < 1.40) ++k1;  // flip 1 is at 1.34 s (tumble info)
+  const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
+  auto readout = [&](long k) {
+    for (const tumble::viz::View& v : fb.build(k).views)
+      for (const tumble::viz::TextItem& t : v.texts)
+        if (const auto at = t.text.find("\u2220(\u03c9, L) = "); at != std::string::npos) return t.text.substr(at);
+    return std::string();
+  };
+  while (k0 < k1 && readout(k0).empty()) ++k0;  // the first frame after the title card
+  ASSERT_LT(clock.time(k0), 0.01);
+  const Eigen::Vector3d w(0.5, 8.0, 0.35), L = s.bodies[0].model.inertia.cwiseProduct(w);
+  const double deg = std::acos(w.dot(L) / (w.norm() * L.norm())) * 180 / std::numbers::pi;
+  char want[48];
+  std::snprintf(want, sizeof want, "\u2220(\u03c9, L) =   %.1f\u00b0", deg);
+  EXPECT_EQ(readout(k0), want);
+  const std::string flip = readout(k1);
+  ASSERT_FALSE(flip.empty());
+  EXPECT_GT(std::stod(flip.substr(flip.find('=') + 1)), 20.0) << flip;  // 28° at the middle of the flip
 }
 
 }  // namespace
