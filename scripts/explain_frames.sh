@@ -14,7 +14,7 @@ if [ ! -x "$tumble" ]; then
   exit 1
 fi
 # scene frame docs-name: frame 40 = the title card; 628 = the stop just
-# after the first flip (t = 1.51 s); 878 = t = 2.2 s, Π near −e₂ between the
+# after the first flip (t = 1.51 s); 878 = t = 2.3 s, Π near −e₂ between the
 # flips; poinsot 1038 = t = 3 s;
 # tennis_racket 500 = the hold at the middle racket's first flip (t = 0.47 s);
 # dzhanibekov 290 = the demo's hold before flip 1 (t = 1.70 s: the T seen
