@@ -106,6 +106,25 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   EXPECT_NE(flip, start);  // |ω| changes at the flip
 }
 
+// tennis_racket's racket views have cameras fixed in space (follow = false):
+// L stands still there, so no trail of L's tip as the body sees it is drawn
+// (it turned with the racket beside a still L, unexplained).
+TEST(BodyFrame, AFixedCameraDrawsNoTrailOfL) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/tennis_racket.toml");
+  const double fps = s.render.output.fps;
+  const long k = 700;  // past flip 1: the middle racket's L has moved far in its own axes
+  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 640, 360);
+  int views = 0;
+  for (const tumble::viz::View& v : fb.build(k).views) {
+    if (v.name != "body_frame") continue;
+    ++views;
+    for (const tumble::viz::PolylineItem& p : v.polylines) EXPECT_NE(p.name, "L_trail");
+  }
+  EXPECT_EQ(views, 3);
+}
+
 // dzhanibekov_explained's readout of the angle between ω and L: at the start
 // the exact angle of ω_body = (0.5, 8, 0.35) rad/s and L = Iω (principal
 // moments from the model), and at flip 1's hold ω swung well away from L.
