@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -105,16 +106,32 @@ std::string three_digits(double v) {
   return text;
 }
 
+// The angle between the first body's ω and L (world), degrees.
+double omega_L_degrees(const viz::BodySnapshot& b) {
+  const Eigen::Vector3d w = omega_world(*b.model, b.state), L = b.state.L;
+  return std::atan2(w.cross(L).norm(), w.dot(L)) * 180 / std::numbers::pi;
+}
+
 // The first body's energy and |L| (world), which stay fixed in a free body,
 // then on a line of their own what changes: |ω| and the angle between ω and L
 // (ω·L = 2E fixes only ω's part along L, so ω leans off L as it grows).
 std::array<std::string, 2> state_readout(const viz::BodySnapshot& b) {
   const Eigen::Vector3d w = omega_world(*b.model, b.state), L = b.state.L;
   char angle[40];
-  std::snprintf(angle, sizeof angle, "%.1f\u00b0", std::atan2(w.cross(L).norm(), w.dot(L)) * 180 / M_PI);
+  std::snprintf(angle, sizeof angle, "%.1f\u00b0", omega_L_degrees(b));
   return {"E = " + three_digits(total_energy(*b.model, b.state)) + " J   |L| = " + three_digits(L.norm()) +
               " kg\u00b7m\u00b2/s",
           "|\u03c9| = " + three_digits(w.norm()) + " rad/s   \u2220(\u03c9, L) = " + angle};
+}
+
+// The angle between the first body's ω and L (world), degrees: 0 for a spin
+// about a principal axis; through a flip ω swings away from L and back.
+std::string angle_readout(const viz::BodySnapshot& b) {
+  const double deg = omega_L_degrees(b);
+  char text[48];
+  // Digits are two spaces wide: padded so that the readout never moves.
+  std::snprintf(text, sizeof text, "\u2220(\u03c9, L) = %s%.1f\u00b0", deg < 10 ? "  " : "", deg);
+  return text;
 }
 
 // The overlay lines: time, method, step, energy error, state, as the scene's overlay asks;
@@ -158,6 +175,7 @@ std::vector<std::string> overlay_line(const scene::OverlayItems& items, const sc
     part(true, state[0]);
     lines.push_back(std::exchange(line, state[1]));
   }
+  part(items.angle && !snaps.empty(), snaps.empty() ? std::string() : angle_readout(snaps.front()));
   lines.push_back(line);
   return lines;
 }

@@ -126,14 +126,15 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.tip_names_further = r.boolean("tip_names_further").value_or(d.tip_names_further);
   if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
     // A list of the overlay's items: only those are shown.
-    d.overlay_items = {false, false, false, false, false};
+    d.overlay_items = {false, false, false, false, false, false};
     for (const std::string& item : r.strings("overlay").value_or(std::vector<std::string>{})) {
       if (item == "time") d.overlay_items.time = true;
       else if (item == "method") d.overlay_items.method = true;
       else if (item == "step") d.overlay_items.step = true;
       else if (item == "energy") d.overlay_items.energy = true;
       else if (item == "state") d.overlay_items.state = true;
-      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", \"state\", found " + quote_token(item));
+      else if (item == "angle") d.overlay_items.angle = true;
+      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", \"state\", \"angle\", found " + quote_token(item));
     }
     d.overlay = d.overlay_items.any();
   } else {

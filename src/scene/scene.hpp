@@ -90,7 +90,8 @@ struct CameraConfig {
 struct OverlayItems {
   bool time = true, method = true, step = true, energy = true;
   bool state = false;  ///< E, |L| and |ω| of the first body: only when asked for
-  bool any() const { return time || method || step || energy || state; }
+  bool angle = false;  ///< ∠(ω, L) of the first body, degrees: only when asked for
+  bool any() const { return time || method || step || energy || state || angle; }
 };
 
 /// `[draw]`: viz's options for the bodies (box, axes, particles, L, ω,

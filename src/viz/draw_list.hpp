@@ -52,7 +52,7 @@ struct ArrowItem {
 struct PointItem {
   glm::dvec3 position;      ///< world, m
   double radius;            ///< m
-  Color color;
+  Color color;              ///< drawn opaque (a lit ball): its alpha is not used, so fade a point by its rgb
   std::string name = {};    ///< in the layout report, e.g. "momentum_point" (empty: not reported)
 };
 

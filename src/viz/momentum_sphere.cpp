@@ -154,7 +154,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   view.camera = sphere_camera(in.pose, in.camera);
   if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
   // An opaque ball a hair inside the sphere hides the curves on its far side.
-  view.points.push_back({{0, 0, 0}, kSphereBall, {0.93f, 0.94f, 0.97f, 1.0f}});
+  view.points.push_back({{0, 0, 0}, kSphereBall, kSphereBallColor});
   if (L <= 0) {
     add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
     return;

@@ -70,6 +70,8 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in);
 
 /// Radius of the opaque ball inside the sphere that hides the far side, in |L|.
 inline constexpr double kSphereBall = 0.985;
+/// The ball's colour (lit); what shows through it is drawn part way to it.
+inline constexpr Color kSphereBallColor{0.93f, 0.94f, 0.97f, 1.0f};
 
 /// Fills `view` (camera included): drawn in units of |L| (sphere of radius 1).
 /// The Π dot is the point named "momentum_point"; e₁, e₂, e₃ label the axes'

@@ -32,6 +32,7 @@ Color faint(Color c) {
   return c;
 }
 
+
 // Where the eye's ray towards p first meets the sphere of radius r (p itself when it misses).
 glm::dvec3 near_side(const glm::dvec3& eye, const glm::dvec3& p, double r) {
   const glm::dvec3 d = p - eye;
@@ -115,8 +116,13 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       const InkSpan ink = text_ink(t.text, label_px);
       const glm::vec2 along = tip - base;
       const float len = glm::length(along);
-      // Seen end-on (pointing at the viewer): beside its tip, up and right.
-      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : glm::vec2(0.7071f, -0.7071f);
+      // Seen end-on (pointing at the viewer): beside its tip, up and right; the
+      // shorter the axis as drawn, the more its label leans that way, so that a
+      // turning camera moves it smoothly, never by a jump.
+      const glm::vec2 end_on(0.7071f, -0.7071f);
+      const float lean = std::clamp(len / (1.5f * label_px), 0.0f, 1.0f);
+      const glm::vec2 mixed = len > 0 ? (1 - lean) * end_on + lean * (along / len) : end_on;
+      const glm::vec2 d0 = glm::length(mixed) > 0.2f ? glm::normalize(mixed) : (len > 0 ? along / len : end_on);
       const glm::vec2 from = tip;
       const float past = sign > 0 ? head_px : 1.0f;
       // Along the axis as drawn, else turned a little at a time until clear of the axes and inside the view;
@@ -175,6 +181,11 @@ void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve,
   }
 }
 
+Color faint_marker(Color c) {
+  // Points are drawn opaque (lit balls, no blending): two thirds of the ball's colour instead of a third of the opacity.
+  return {glm::mix(glm::vec3(c), glm::vec3(kSphereBallColor), 0.68f), 1.0f};
+}
+
 void show_far_side(View& view, std::size_t first_polyline, double ball) {
   const glm::dvec3 eye = view.camera.position;
   const double front = 1.0 + 0.5 * (1.0 - ball);  // above the ball, below nothing on the sphere
@@ -205,7 +216,7 @@ void show_far_side(View& view, std::size_t first_polyline, double ball) {
   for (PointItem& pt : view.points)
     if (glm::length(pt.position) > 0.5 && hidden_by_ball(eye, pt.position, ball)) {
       pt.position = near_side(eye, pt.position, front + pt.radius);
-      pt.color = faint(pt.color);
+      pt.color = faint_marker(pt.color);
       pt.radius *= 0.8;
     }
 }

@@ -43,9 +43,13 @@ void add_saddles(View& view);
 void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve, const Eigen::Vector3d& inertia,
                           int count, Color color, double size);
 
+/// How a marker (a point) behind the ball is drawn: its colour two thirds of
+/// the way to the ball's, opaque (points are drawn as opaque lit balls).
+Color faint_marker(Color c);
+
 /// The far-side parts of polylines [`first`, end) and of the named points of
 /// `view` (units of |L|): brought along the eye's rays to the ball's near side
-/// (same pixels) and drawn faint, so they show through it; the far runs of
+/// (same pixels) and drawn faint (points: faint_marker), so they show through it; the far runs of
 /// the separatrix are dropped (through the ball they read as a ring round a pole).
 void show_far_side(View& view, std::size_t first_polyline, double ball);
 

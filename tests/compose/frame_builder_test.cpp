@@ -1,6 +1,8 @@
 // The frame builder's text: the overlay line keeps clear of the view title and the name labels.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -109,6 +111,56 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   EXPECT_GT(angle, 20.0) << flip;  // ω far off L mid-flip
   EXPECT_LT(angle, 30.0) << flip;  // and no further than on the separatrix (28°)
   EXPECT_NE(flip.substr(0, flip.find("   ")), readout(k0, "|\u03c9| = ").substr(0, flip.find("   ")));  // |ω| changes
+}
+
+// tennis_racket's racket views have cameras fixed in space (follow = false):
+// L stands still there, so no trail of L's tip as the body sees it is drawn
+// (it turned with the racket beside a still L, unexplained).
+TEST(BodyFrame, AFixedCameraDrawsNoTrailOfL) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/tennis_racket.toml");
+  const double fps = s.render.output.fps;
+  const long k = 700;  // past flip 1: the middle racket's L has moved far in its own axes
+  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 640, 360);
+  int views = 0;
+  for (const tumble::viz::View& v : fb.build(k).views) {
+    if (v.name != "body_frame") continue;
+    ++views;
+    for (const tumble::viz::PolylineItem& p : v.polylines) EXPECT_NE(p.name, "L_trail");
+  }
+  EXPECT_EQ(views, 3);
+}
+
+// dzhanibekov_explained's readout of the angle between ω and L: at the start
+// the exact angle of ω_body = (0.5, 8, 0.35) rad/s and L = Iω (principal
+// moments from the model), and at flip 1's hold ω swung well away from L.
+TEST(Overlay, AngleReadoutShowsOmegaLeavingL) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/dzhanibekov_explained.toml");
+  ASSERT_TRUE(s.render.draw.overlay_items.angle);
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k0 = 0, k1 = 0;
+  while (k1 + 1 < clock.count() && clock.time(k1) < 1.40) ++k1;  // flip 1 is at 1.34 s (tumble info)
+  const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
+  auto readout = [&](long k) {
+    for (const tumble::viz::View& v : fb.build(k).views)
+      for (const tumble::viz::TextItem& t : v.texts)
+        if (const auto at = t.text.find("\u2220(\u03c9, L) = "); at != std::string::npos) return t.text.substr(at);
+    return std::string();
+  };
+  while (k0 < k1 && readout(k0).empty()) ++k0;  // the first frame after the title card
+  ASSERT_LT(clock.time(k0), 0.01);
+  const Eigen::Vector3d w(0.5, 8.0, 0.35), L = s.bodies[0].model.inertia.cwiseProduct(w);
+  const double deg = std::acos(w.dot(L) / (w.norm() * L.norm())) * 180 / std::numbers::pi;
+  char want[48];
+  std::snprintf(want, sizeof want, "\u2220(\u03c9, L) =   %.1f\u00b0", deg);
+  EXPECT_EQ(readout(k0), want);
+  const std::string flip = readout(k1);
+  ASSERT_FALSE(flip.empty());
+  EXPECT_GT(std::stod(flip.substr(flip.find('=') + 1)), 20.0) << flip;  // 28° at the middle of the flip
 }
 
 }  // namespace

@@ -165,7 +165,9 @@ TEST(MomentumSphere, DotStaysOnTheSphereAndTheEnergyEllipsoid) {
       // Behind the ball it shows through, faintly: drawn where Π's own pixel is (on the eye's ray to Π).
       const glm::dvec3 a = glm::normalize(d - v.camera.position), b = glm::normalize(lifted - v.camera.position);
       EXPECT_NEAR(glm::dot(a, b), 1.0, 1e-9);
-      EXPECT_LT(dot->color.a, 0.5f);
+      // Points are drawn opaque: faint is a colour near the ball's (a pale grey for the black dot).
+      EXPECT_EQ(dot->color.a, 1.0f);
+      EXPECT_GT(glm::length(glm::vec3(dot->color)), 1.0f);
     } else {
       // In front it is lifted a little off the sphere, along Π, so no curve on the sphere covers it.
       EXPECT_NEAR(glm::dot(glm::normalize(d), u), 1.0, 1e-12);

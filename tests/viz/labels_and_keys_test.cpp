@@ -11,6 +11,7 @@
 #include "viz/captions.hpp"
 #include "viz/key.hpp"
 #include "viz/momentum_sphere.hpp"
+#include "viz/sphere_figure.hpp"
 #include "viz/poinsot.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/text_layout.hpp"
@@ -36,7 +37,10 @@ bool drawn(const View& v, Swatch s, const Color& c) {
       for (const BoxItem& b : v.boxes)
         if (same_rgb(b.face, c)) return true;
       return any_rgb(v.surfaces, c, all);
-    case Swatch::dot: return any_rgb(v.points, c, [](const PointItem& p) { return !p.name.empty(); });
+    case Swatch::dot: {  // a marker behind a momentum sphere's ball counts too, drawn faint
+      const auto named = [](const PointItem& p) { return !p.name.empty(); };
+      return any_rgb(v.points, c, named) || any_rgb(v.points, faint_marker(c), named);
+    }
     case Swatch::line: return any_rgb(v.arrows, c, all) || any_rgb(v.polylines, c, all);
     case Swatch::trail: return any_rgb(v.polylines, c, all);
     case Swatch::arrow: return any_rgb(v.arrows, c, all);
@@ -72,8 +76,15 @@ void expect_key_lists_what_is_drawn(const std::vector<KeyEntry>& key, const View
   for (const PolylineItem& p : v.polylines) {
     if (!p.name.empty()) { EXPECT_TRUE(keyed(key, p.color) || labelled(p)) << what << ": curve " << p.name; }
   }
+  // A marker behind a momentum sphere's ball is drawn faint: a keyed colour taken towards the ball's.
+  const auto faint_keyed = [&](const Color& c) {
+    for (const KeyEntry& e : key)
+      for (const Color& k : e.colors)
+        if (same_rgb(faint_marker(k), c)) return true;
+    return false;
+  };
   for (const PointItem& p : v.points) {
-    if (!p.name.empty()) { EXPECT_TRUE(keyed(key, p.color)) << what << ": point " << p.name; }
+    if (!p.name.empty()) { EXPECT_TRUE(keyed(key, p.color) || faint_keyed(p.color)) << what << ": point " << p.name; }
   }
   for (const SurfaceItem& s : v.surfaces) {
     // The invariable plane is keyed by its grid's colour; its surface is a pale backdrop under it.

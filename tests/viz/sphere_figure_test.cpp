@@ -179,6 +179,33 @@ TEST(SphereFigure, SaddlesMarkedAndTheSeparatrixFarHalfNotDrawn) {
   EXPECT_GT(behind, 0);  // the textbook view does see the separatrix run round behind the ball
 }
 
+// A marker on the far hemisphere (here the −e₂ saddle, seen from 30° off +e₃
+// towards +e₂ with +e₂ up) is drawn faint. Points are drawn opaque (lit balls:
+// the renderer does not blend them), so faint means its colour taken most of
+// the way to the ball's, not a lower alpha; the near saddle keeps its colour.
+TEST(SphereFigure, AFarHemisphereMarkerIsDrawnFaint) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera.follow = false;
+  in.camera.azimuth_deg = 90, in.camera.elevation_deg = 60, in.camera.distance = 14;
+  in.camera.up = Eigen::Vector3d::UnitY();
+  View v;
+  build_momentum_sphere(v, in);
+  ASSERT_TRUE(hidden_by_ball(v.camera.position, {0, -1, 0}, kSphereBall));
+  ASSERT_FALSE(hidden_by_ball(v.camera.position, {0, 1, 0}, kSphereBall));
+  const glm::vec3 ring(color_of(Meaning::separatrix)), ball(kSphereBallColor);
+  int seen = 0;
+  for (const PointItem& p : v.points) {
+    if (p.name != "saddle_-e2" && p.name != "saddle_+e2") continue;
+    ++seen;
+    EXPECT_EQ(p.color.a, 1.0f) << p.name;  // what the renderer draws anyway
+    const float share = glm::length(glm::vec3(p.color) - ball) / glm::length(ring - ball);
+    if (p.name == "saddle_-e2") EXPECT_LT(share, 0.4f);  // mostly the ball's colour
+    else EXPECT_NEAR(share, 1.0f, 1e-6f);
+  }
+  EXPECT_EQ(seen, 2);
+}
+
 TEST(SphereFigure, EnergyEllipsoidHasItsOwnColourAndCanBeTurnedOff) {
   const Eigen::Vector3d pi = near_saddle();
   MomentumSphereInput in{kI, pi, {}, two_E(pi)};

@@ -102,7 +102,9 @@ class BodyFramePanel : public Panel {
     if (vc_.camera.follow.value_or(true))
       for (viz::SurfaceItem& sf : v.surfaces)
         if (sf.name.empty()) sf.color.a = std::min(sf.color.a, kBodyAlpha);
-    if (kk >= 0) add_L_trail(v, kk);
+    // L's path as the body sees it, only where the camera turns with the body: from a camera fixed in
+    // space L stands still, and a curve turning with the body beside it reads as a trail of nothing shown.
+    if (kk >= 0 && vc_.camera.follow.value_or(true)) add_L_trail(v, kk);
     return v;
   }
 
