@@ -75,7 +75,8 @@ struct ViewConfig {
   ViewCamera camera;
   bool energy_ellipsoid = true;     ///< momentum_sphere: the energy ellipsoid (when it fits)
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
-  double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot, times this
+  double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
+  bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)
   int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range

@@ -125,17 +125,21 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
                                 std::string* written = nullptr);
 
-// A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels.
+// A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels; a world view's line_scale and tip_names.
 void read_sphere_options(TableReader& r, ViewConfig& v) {
-  for (std::string_view key : {"energy_ellipsoid", "path", "line_scale", "levels"})
+  for (std::string_view key : {"energy_ellipsoid", "path", "levels"})
     if (r.has(key) && v.kind != ViewKind::momentum_sphere) r.error(key, "only a momentum_sphere view takes " + std::string(key));
+  if (r.has("line_scale") && v.kind != ViewKind::momentum_sphere && v.kind != ViewKind::world)
+    r.error("line_scale", "only a momentum_sphere or world view takes line_scale");
+  if (r.has("tip_names") && v.kind != ViewKind::world) r.error("tip_names", "only a world view takes tip_names");
+  v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
+  v.tip_names = r.boolean("tip_names").value_or(true);
   if (v.kind != ViewKind::momentum_sphere) return;
   v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
   if (const auto path = r.string("path")) {
     if (*path != "polhode" && *path != "trail") r.error("path", "expected \"polhode\" or \"trail\", found " + quote_token(*path));
     v.path_trail = *path == "trail";
   }
-  v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
   v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
 }
 
@@ -175,7 +179,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
-                   "key", "path", "line_scale", "levels", "shade_speeds"});
+                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {

@@ -222,7 +222,9 @@ void body_labels_clear_of_bodies() {
         }
       EXPECT_EQ(bad, 0) << scene << " at " << h << "p";
     }
-  EXPECT_GT(labels, 1000) << "body labels drawn over all frames";
+  // No shipped lesson names its bodies beside them now (poinsot's views' titles
+  // name its boxes), so this holds for any that will; none is counted here.
+  (void)labels;
 }
 
 // A name placed once per run: each body's name and each curve's name
@@ -249,8 +251,8 @@ void names_pinned_once_per_run() {
                                    << " places over the run";
       }
     }
-  EXPECT_GE(pinned, 3 * 8) << "names checked (poinsot's eight: polhode, herpolhode and the plane in each Poinsot view, the two "
-                              "bodies' names in space; at three sizes)";
+  EXPECT_GE(pinned, 3 * 6) << "names checked (poinsot's six: polhode, herpolhode and the plane in each Poinsot view; at three "
+                              "sizes)";
 }
 
 // Layout by construction: every reported 3D item (arrow whole, marker, body

@@ -144,6 +144,14 @@ kind = "plot"
   EXPECT_NE(error_of("[[views]]\nkind = \"poinsot\"\ncamera = { elevation = 95 }\n").find("elevation"),
             std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"body_frame\"\ncamera = { zoom = 2 }\n").find("zoom"), std::string::npos);
+  // A world view draws its arrows thicker (line_scale) and may leave their names to the key (tip_names).
+  const auto w = load("[[views]]\nkind = \"world\"\nline_scale = 2.5\ntip_names = false\n").render.explain.views;
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].line_scale, 2.5);
+  EXPECT_FALSE(w[0].tip_names);
+  EXPECT_TRUE(load("[[views]]\nkind = \"world\"\n").render.explain.views[0].tip_names);
+  EXPECT_NE(error_of("[[views]]\nkind = \"poinsot\"\ntip_names = false\n").find("tip_names"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nline_scale = 2\n").find("line_scale"), std::string::npos);
 }
 
 TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {

@@ -22,9 +22,9 @@ constexpr double kFillMargin = 0.1;  // room around what a camera moved closer f
 
 class WorldPanel : public Panel {
  public:
-  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewCamera* own = nullptr)
-      : ctx_(ctx), run_(run), keyed_(keyed), own_(own && own->position ? own : nullptr),
-        across_(own && own->across != 0 ? own : nullptr) {}
+  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewConfig* vc = nullptr)
+      : ctx_(ctx), run_(run), keyed_(keyed), vc_(vc), own_(vc && vc->camera.position ? &vc->camera : nullptr),
+        across_(vc && vc->camera.across != 0 ? &vc->camera : nullptr) {}
   std::string name() const override { return "world"; }
   std::vector<viz::KeyEntry> key() const override { return keyed_ ? bodies_key(ctx_, std::nullopt) : std::vector<viz::KeyEntry>{}; }
   std::vector<std::string> overlay(long k) const override { return ctx_.world.overlay(run_, k); }
@@ -92,6 +92,7 @@ class WorldPanel : public Panel {
   // it). A name with no room along its arrow turns beside the tip
   // (viz::label_arrow_tips): a name's width across, half a line up and down.
   Margins tip_margins(glm::vec2 size) const {
+    if (vc_ && !vc_->tip_names) return 0.0;
     const double px = viz::text_px(viz::TextRole::label, ctx_.frame_h, ctx_.text_scale());
     return {1.4 * px / (0.5 * std::max(size.x, 1.0f)), 0.6 * px / (0.5 * std::max(size.y, 1.0f))};
   }
@@ -99,6 +100,12 @@ class WorldPanel : public Panel {
   viz::View content(long k) const override {
     viz::View v = ctx_.world.view(run_, k, camera_, int(size_.x), int(size_.y));
     v.name = name();
+    // A view of small bodies may draw its arrows thicker, and leave their names to the key.
+    for (viz::ArrowItem& a : v.arrows) {
+      if (!vc_) break;
+      a.radius *= vc_->line_scale;
+      if (!vc_->tip_names) a.tip.clear();
+    }
     return v;
   }
 
@@ -106,6 +113,7 @@ class WorldPanel : public Panel {
   const PanelContext& ctx_;
   std::size_t run_;
   bool keyed_;
+  const scene::ViewConfig* vc_;  // the view's options (none: a classic view or a [compare] cell)
   const scene::ViewCamera* own_;  // the view's own camera (a world view's `camera` table), else the scene's
   const scene::ViewCamera* across_;  // the view's camera across L
   glm::vec2 size_{1, 1};
@@ -147,7 +155,7 @@ viz::Color run_color(const scene::Run& run) {
 }
 
 std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index) {
-  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &ctx.scene.render.explain.views[index].camera);
+  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &ctx.scene.render.explain.views[index]);
 }
 
 std::unique_ptr<Panel> make_run_panel(const PanelContext& ctx, std::size_t r) {
