@@ -56,7 +56,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
       world_(s, runs, scene::frame_clock(s, fps), viz::text_px(viz::TextRole::label, height, s.render.draw.text_scale)),
       context_{s, runs, world_, height} {
   const auto& views = s.render.explain.views;
-  // A [compare] grid's cells, in one row above the plots of its runs when it has any.
+  // A [compare] grid's cells, in one row above the plots of its runs when it has any (or beside them).
   if (views.empty() || !s.render.compare_methods.empty()) {
     for (std::size_t r = 0; r < runs.size(); ++r) {
       if (!has_cell(s, runs[r])) continue;
@@ -108,14 +108,21 @@ FrameNeeds FrameBuilder::frame_needs() const {
   // and a spinning body needs height); a [compare] grid's, one key in rows above the captions.
   const bool single = cells_ == 1 && views.empty();
   if (cells_ > 0 && !single) needs.frame_key = legend();
-  // Plots under a [compare] grid: the cells share the band above the highest plot.
-  double band = 1;
+  // Plots beside a [compare] grid: the cells share the band above the highest plot
+  // (arrange = "row"), or the band left of the leftmost plot, in one row ("side").
+  double band = 1, side = 1;
   if (cells_ > 0)
-    for (const scene::ViewConfig& v : views) band = std::min(band, v.viewport ? (*v.viewport)[1] : 1.0);
+    for (const scene::ViewConfig& v : views) {
+      band = std::min(band, v.viewport ? (*v.viewport)[1] : 1.0);
+      side = std::min(side, v.viewport ? (*v.viewport)[0] : 1.0);
+    }
+  const bool stacked = scene_.render.compare_arrange == scene::CompareArrange::side && side > 0 && side < 1;
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     ViewNeeds v;
     const scene::ViewConfig* vc = i < cells_ ? nullptr : &views[i - cells_];
     if (vc) v.viewport = vc->viewport;
+    else if (stacked)
+      v.viewport = std::array<double, 4>{side * double(i) / double(cells_), 0, side / double(cells_), 1};
     else if (!views.empty())
       v.viewport = std::array<double, 4>{double(i) / double(cells_), 0, 1.0 / double(cells_), band};
     v.kind = panels_[i]->name();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "base/format.hpp"
 #include "core/dynamics.hpp"
@@ -110,9 +111,11 @@ std::string state_readout(const viz::BodySnapshot& b) {
          " kg\u00b7m\u00b2/s   |\u03c9| = " + three_digits(omega_world(*b.model, b.state).norm()) + " rad/s";
 }
 
-// The overlay line: time, method, step, energy error, state, as the scene's overlay asks.
-std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
-                         const std::vector<viz::BodySnapshot>& snaps, double t, double floor) {
+// The overlay lines: time, method, step, energy error, state, as the scene's overlay asks;
+// the energy error on a line of its own where cells are narrow ([compare] arrange = "side").
+std::vector<std::string> overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
+                                      const std::vector<viz::BodySnapshot>& snaps, double t, double floor,
+                                      bool energy_apart) {
   // Largest relative energy error over the bodies: the failure users look
   // for. Only where energy is conserved (gravity is in it, as potential):
   // a thruster, torque or damping does work, and its change is no error.
@@ -141,9 +144,17 @@ std::string overlay_line(const scene::OverlayItems& items, const scene::Run& run
   part(items.time, time);
   part(items.method && run_count == 1, run.label);
   part(items.step, run.step_label);
+  std::vector<std::string> lines;
+  if (energy_apart && items.energy && !line.empty()) lines.push_back(std::exchange(line, std::string()));
   part(items.energy, energy);
   part(items.state && !snaps.empty(), snaps.empty() ? std::string() : state_readout(snaps.front()));
-  return line;
+  lines.push_back(line);
+  return lines;
+}
+
+bool energy_apart(const scene::Scene& s) {
+  return s.render.compare_arrange == scene::CompareArrange::side && s.render.draw.overlay_items.energy &&
+         (s.render.draw.overlay_items.time || s.render.draw.overlay_items.step);
 }
 
 }  // namespace
@@ -282,16 +293,16 @@ std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {
   const long last = static_cast<long>(run.frames.size()) - 1;
   const long kk = std::min(k, last);
   if (scene_.render.draw.overlay && kk >= 0)
-    out.push_back(overlay_line(scene_.render.draw.overlay_items, run, runs_.size(),
-                               snapshots(scene_, run.frames[static_cast<size_t>(kk)]), clock_.time(k),
-                               energy_floor(scene_)));
+    out = overlay_line(scene_.render.draw.overlay_items, run, runs_.size(),
+                       snapshots(scene_, run.frames[static_cast<size_t>(kk)]), clock_.time(k), energy_floor(scene_),
+                       energy_apart(scene_));
   if (run.diverged && k > last)
     out.push_back("diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s");
   return out;
 }
 
 int WorldViews::overlay_lines(std::size_t r) const {
-  return (scene_.render.draw.overlay ? 1 : 0) + (runs_[r].diverged ? 1 : 0);
+  return (scene_.render.draw.overlay ? (energy_apart(scene_) ? 2 : 1) : 0) + (runs_[r].diverged ? 1 : 0);
 }
 
 }  // namespace tumble::compose

@@ -194,6 +194,18 @@ void read_compare_steps(TableReader& r, Scene& s) {
   }
 }
 
+// Where the cells stand: one name of kCompareArranges.
+void read_compare_arrange(TableReader& r, Scene& s) {
+  const auto a = r.string("arrange");
+  if (!a) return;
+  std::string names;
+  for (const auto& [value, name] : kCompareArranges) {
+    if (*a == name) return void(s.render.compare_arrange = value);
+    names += std::string(names.empty() ? "" : " or ") + '"' + name + '"';
+  }
+  r.error("arrange", "expected " + names + ", found " + quote_token(*a));
+}
+
 void read_compare(TableReader& r, Scene& s) {
   auto names = r.strings("methods");
   if (!names) {
@@ -220,6 +232,7 @@ void read_compare(TableReader& r, Scene& s) {
   }
   read_compare_cells(r, s);
   read_compare_steps(r, s);
+  read_compare_arrange(r, s);
 }
 
 }  // namespace
@@ -245,7 +258,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {
-    TableReader r(*t, "compare", ctx.diag, {"methods", "cells", "steps"});
+    TableReader r(*t, "compare", ctx.diag, {"methods", "cells", "steps", "arrange"});
     read_compare(r, scene);
   }
 }

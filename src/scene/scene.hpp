@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -99,6 +100,13 @@ struct DrawConfig : viz::DrawOptions {
   OverlayItems overlay_items;            ///< which parts of the overlay line (overlay = true)
 };
 
+/// [compare] arrange: where a comparison's cells stand beside its plots.
+/// row: in one row above the highest plot; side: in one row in the band left
+/// of the leftmost plot, the views' whole height (tall cells, larger bodies).
+enum class CompareArrange { row, side };
+inline constexpr std::pair<CompareArrange, const char*> kCompareArranges[] = {{CompareArrange::row, "row"},
+                                                                             {CompareArrange::side, "side"}};
+
 struct RenderConfig {
   OutputConfig output;
   CameraConfig camera;
@@ -108,6 +116,7 @@ struct RenderConfig {
   /// [compare] steps: a method's own dt (s), e.g. Euler at a quarter of RK4's step for the same
   /// number of derivative evaluations; a method not listed takes [simulation] dt.
   std::vector<std::pair<Method, double>> compare_steps;
+  CompareArrange compare_arrange = CompareArrange::row;  ///< [compare] arrange
   ExplainConfig explain;                 ///< time_scale, slow motion, captions, title, views
 };
 

@@ -107,6 +107,8 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
   if (in.log10)  // and at the decades
     for (int d = static_cast<int>(std::ceil(in.lo - 1e-9)); d <= in.hi + 1e-9; ++d)
       line({m.at(in.t0, d), m.at(in.t1, d)}, {0.55f, 0.57f, 0.62f, 0.3f}, 1.0f, "");
+  for (double t : in.marks)  // under the curves, in the flip badge's red, thin
+    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.75f, 0.1f, 0.1f, 0.55f}, 1.5f, "mark");
   for (const Series& s : in.series) {
     std::vector<glm::dvec3> pts;
     for (std::size_t i = 0; i < in.times.size() && i < s.values.size(); ++i)

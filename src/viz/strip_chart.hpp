@@ -33,6 +33,8 @@ struct StripChartInput {
   std::vector<Band> shaded;
   int frame_h = 0;             ///< frame height for the text roles' sizes (0: every text at font_px)
   double text_scale = 1;       ///< the scene's text scale ([draw] text_scale), with frame_h
+  /// Times (s) marked by a thin vertical line once the playhead has passed them (a lesson's flips).
+  std::vector<double> marks;
   /// Values are log10 of the quantity: the value axis is ticked at its decades (10⁻⁸, 10⁻⁴, …).
   bool log10 = false;
   /// Each series named at its curve's head, in its colour (no key row): a few curves told apart at a glance.

@@ -285,27 +285,34 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
   const compose::FrameBuilder fb(s, runs, fps, 1920, 1080);
   const FramePlan& p = fb.plan();
   ASSERT_EQ(p.views.size(), 4u);  // [compare] cells: explicit Euler and RK4 (the exact body as their ghost); two plots
-  for (std::size_t r = 0; r < 2; ++r) {  // one row of cells, left to right, above the plots
+  // arrange = "side": one row of tall cells, left to right, left of the plots; the plots stacked, log over linear.
+  for (std::size_t r = 0; r < 2; ++r) {
     EXPECT_EQ(p.views[r].y, p.views[0].y) << r;
     if (r > 0) { EXPECT_GT(p.views[r].x, p.views[r - 1].x) << r; }
-    for (std::size_t plot : {2u, 3u}) EXPECT_LE(p.views[r].y + p.views[r].height, p.views[plot].y + 1) << r;
+    for (std::size_t plot : {2u, 3u}) EXPECT_LE(p.views[r].x + p.views[r].width, p.views[plot].x + 1) << r;
+    EXPECT_GE(p.views[r].height, p.views[2].height + p.views[3].height - 2) << "a cell the views' whole height";
   }
-  EXPECT_EQ(p.views[2].y, p.views[3].y);  // side by side, across the frame
-  EXPECT_GE(p.views[2].width + p.views[3].width, 1900);
+  EXPECT_EQ(p.views[2].x, p.views[3].x);  // stacked
+  EXPECT_LT(p.views[2].y, p.views[3].y);
+  EXPECT_GE(p.views[2].height, 300) << "a chart a hall can read";
   const viz::DrawList dl = fb.build(count - 1);
   ASSERT_EQ(dl.views.size(), 4u);
   std::map<std::string, viz::Color> cell_colour;  // each cell's title and readout share its method's colour
   for (std::size_t r = 0; r < 2; ++r) {
     const viz::TextItem* title = nullptr;
+    int readouts = 0;  // the narrow cell's readout in two lines: t and dt, then ΔE/E
     for (const viz::TextItem& t : dl.views[r].texts) {
       if (t.name == "view_title") title = &t;
       if (t.name == "overlay") {
+        ++readouts;
+        EXPECT_LE(t.position_px.x + viz::text_width(t.text, t.size_px), float(p.views[r].width)) << t.text;
         ASSERT_NE(title, nullptr);
         EXPECT_EQ(t.color, title->color) << runs[r].label;
         EXPECT_GE(t.size_px, viz::text_px(viz::TextRole::view_title, 1080, 1) - 1e-3f) << "a readout a hall can read";
       }
     }
     ASSERT_NE(title, nullptr);
+    EXPECT_EQ(readouts, 2) << runs[r].label;
     cell_colour[runs[r].label] = title->color;
     cell_colour[runs[r].title.substr(0, runs[r].title.find(','))] = title->color;  // as the plot names it
   }
@@ -323,6 +330,11 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
     EXPECT_EQ(std::count(named.begin(), named.end(), "exact"), 0) << plot;
     EXPECT_EQ(std::count(named.begin(), named.end(), "explicit Euler"), 1) << plot;
     EXPECT_EQ(std::count(named.begin(), named.end(), "RK4"), 1) << plot;
+    // The flips ([draw] flips) marked on the time axis: five by 16 s.
+    EXPECT_EQ(std::count_if(dl.views[plot].polylines.begin(), dl.views[plot].polylines.end(),
+                            [](const viz::PolylineItem& l) { return l.name == "mark"; }),
+              5)
+        << plot;
   }
 }
 

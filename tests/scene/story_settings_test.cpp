@@ -254,6 +254,23 @@ TEST(StorySettings, AComparisonsCellsAreSomeOfItsMethods) {
   }
 }
 
+TEST(StorySettings, AComparisonsCellsStandInARowOrBesideThePlots) {
+  auto with_arrange = [](const std::string& arrange) {  // into [compare], before [draw]
+    std::string text = compare_scene("");
+    return text.replace(text.find("[draw]"), 0, "arrange = " + arrange + "\n");
+  };
+  EXPECT_EQ(load_scene_from_string(compare_scene(""), "cmp.toml").render.compare_arrange, CompareArrange::row) << "unset";
+  EXPECT_EQ(load_scene_from_string(with_arrange("\"row\""), "cmp.toml").render.compare_arrange, CompareArrange::row);
+  EXPECT_EQ(load_scene_from_string(with_arrange("\"side\""), "cmp.toml").render.compare_arrange, CompareArrange::side);
+  for (const char* bad : {"\"left\"", "1", "[\"side\"]"}) {
+    const std::string error = scene_error(with_arrange(bad), "cmp.toml");
+    EXPECT_NE(error.find("cmp.toml:"), std::string::npos) << bad << error;
+    EXPECT_NE(error.find("compare.arrange"), std::string::npos) << bad << error;
+  }
+  EXPECT_NE(scene_error(with_arrange("\"left\""), "cmp.toml").find("expected \"row\" or \"side\", found \"left\""),
+            std::string::npos);
+}
+
 TEST(StorySettings, AComparisonsStepsAreItsFixedStepMethodsOwn) {
   auto with_steps = [](const std::string& steps, const std::string& methods = "[\"euler\", \"exact\"]") {
     const std::string usual = "[\"euler\", \"exact\"]";

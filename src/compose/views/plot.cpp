@@ -9,6 +9,7 @@
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
 #include "core/observables.hpp"
+#include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "viz/palette.hpp"
 #include "viz/strip_chart.hpp"
@@ -83,6 +84,8 @@ class PlotPanel : public Panel {
     lo_ = lo - pad, hi_ = hi + pad;
     if (vc_.y_range) lo_ = (*vc_.y_range)[0], hi_ = (*vc_.y_range)[1];  // the scene's own value axis
     if (vc_.y_range && vc_.y_log) lo_ = std::log10(lo_), hi_ = std::log10(hi_);
+    if (compare && ctx.scene.render.explain.flip_marks)  // a comparison's flips, marked on the time axis too
+      marks_ = scene::body_flip_times(ctx.scene, *ctx.scene.render.explain.flip_marks);
   }
   std::string name() const override { return "plot"; }
   void fit(glm::vec2 size) override { size_ = size; }
@@ -98,6 +101,7 @@ class PlotPanel : public Panel {
     in.direct_labels = ctx_.runs.size() > 1;
     for (const scene::SlowMotion& sm : ctx_.scene.render.explain.slow_motion)
       if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
+    in.marks = marks_;
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
     for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
@@ -124,6 +128,7 @@ class PlotPanel : public Panel {
   std::size_t body_;
   std::vector<std::size_t> runs_;  // the runs plotted
   double lo_ = -1, hi_ = 1;
+  std::vector<double> marks_;  // s: the flips' times ([draw] flips)
   glm::vec2 size_{1, 1};
 
   // A series' value at a frame of run r; on a log scale log10 |value| (none at 0).
