@@ -93,7 +93,9 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
   // Names placed once for the whole run, clear of what the view shows in every frame.
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const viz::Box& c = plan_.views[i].content;
-    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0}, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale)));
+    pins_.push_back(pin_labels(*panels_[i], world_.clock(), {c.x1 - c.x0, c.y1 - c.y0},
+                               viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale),
+                               scene_.render.draw.tip_names_further));
   }
 }
 
@@ -185,13 +187,9 @@ std::string FrameBuilder::widest_status() const {
 
 // A classic scene's legend: one key for the frame, what its arrows and box mean.
 std::vector<viz::KeyEntry> FrameBuilder::legend() const {
-  const viz::DrawOptions& draw = world_.draw();
   if (!scene_.render.draw.legend) return {};
   std::vector<viz::KeyEntry> key = bodies_key(context_, std::nullopt, true);
-  if (draw.box.value_or(false) && draw.surface && !scene_.bodies.empty()) {
-    const Eigen::Vector3f c = 0.45f * scene_.bodies.front().color.cast<float>();
-    key.push_back({viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box along the principal axes"});
-  }
+  if (const auto box = box_key(context_)) key.push_back(*box);
   // A comparison's cells but the exact one carry the exact body faintly (WorldViews::view).
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
   const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
@@ -206,7 +204,8 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   const viz::Box& c = p.content;
   // Arrows are named at their tips, then labels settle inside the content
   // rectangle, clear of its other text; then move with it into the view.
-  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale));
+  viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale),
+                        scene_.render.draw.tip_names_further);
   // Pinned names go to their places for the run; the other labels settle clear of them.
   std::vector<viz::TextItem> pinned;
   std::vector<viz::Box> pinned_boxes;

@@ -22,7 +22,7 @@ viz::Box united(const viz::Box& a, const viz::Box& b) {
 }  // namespace
 
 std::map<std::string, glm::vec2> pin_labels(const Panel& panel, const scene::FrameClock& clock, glm::vec2 size_px,
-                                            float label_px) {
+                                            float label_px, bool tip_names_further) {
   viz::Occupancy taken(static_cast<int>(size_px.x), static_cast<int>(size_px.y));
   std::map<std::string, Sweep> sweeps;
   // Every frame that shows a new moment (a hold repeats the frame before it).
@@ -30,7 +30,7 @@ std::map<std::string, glm::vec2> pin_labels(const Panel& panel, const scene::Fra
     if (k > 0 && clock.time(k) == clock.time(k - 1)) continue;
     viz::View v = panel.content(k);
     if (std::none_of(v.texts.begin(), v.texts.end(), viz::is_pinned_label)) continue;
-    viz::label_arrow_tips(v, size_px.x, size_px.y, label_px);  // the arrows' names, where each frame puts them
+    viz::label_arrow_tips(v, size_px.x, size_px.y, label_px, tip_names_further);  // the arrows' names, where each frame puts them
     for (const viz::Box& b : viz::label_obstacles(v, size_px.x, size_px.y)) taken.add(b);
     for (const viz::TextItem& t : v.texts) {
       if (!viz::is_pinned_label(t)) continue;

@@ -19,7 +19,7 @@ namespace tumble::compose {
 /// named curves, other text and labels' subjects in every frame of `clock`
 /// (a label with no such place is left out here and placed frame by frame).
 std::map<std::string, glm::vec2> pin_labels(const Panel& panel, const scene::FrameClock& clock, glm::vec2 size_px,
-                                            float label_px);
+                                            float label_px, bool tip_names_further = false);
 
 /// For each of `pinned` (content px) that names a curve of `view` (TextItem::leader_to)
 /// and is not already at it: a leader, a thin line in the curve's colour drawn

@@ -59,7 +59,8 @@ struct ViewCamera {
   /// world and body_frame views: across = "L" (+1) or "-L" (−1) looks across
   /// L at t = 0, L up (down) in the picture plane (scene.hpp, CameraConfig)
   int across = 0;
-  /// world views only: as [camera] (m, world; degrees)
+  /// world views only: as [camera] (m, world; degrees); `up` also a
+  /// momentum_sphere's picture up, in principal axes (default +e₃)
   std::optional<std::array<double, 3>> position, target, up;
   std::optional<double> fov_y_deg;
 };
@@ -84,6 +85,12 @@ struct ViewConfig {
   bool y_log = false;               ///< plot: log10 of |value| (y_scale = "log"), for errors over decades
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")
+  /// momentum_sphere `turn`: from the first frame showing simulated `at`, its
+  /// fixed camera turns to `azimuth`/`elevation` over `seconds` of video (eased in and out).
+  struct Turn {
+    double at = 0, azimuth_deg = 0, elevation_deg = 0, seconds = 1;
+  };
+  std::optional<Turn> turn;
 };
 
 /// Names of the plot series, in the order of `plot_series_names()`.

@@ -112,7 +112,7 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   }
   TableReader c(*t, r.key_path("camera"), ctx.diag,
                 v.kind == ViewKind::world ? std::vector<std::string_view>{"across", "azimuth", "elevation"}
-                                          : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow"});
+                                          : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow", "up"});
   if (across) v.camera.across = read_across(c);
   v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
   // A sphere may be seen straight down an axis (its up is then the azimuth's direction); other views keep 1° off.
@@ -120,6 +120,11 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   v.camera.elevation_deg = c.number("elevation", Range::closed(-steepest, steepest));
   v.camera.distance = c.number("distance", Range::closed(1.5, 100));
   v.camera.follow = c.boolean("follow");
+  if (const auto up = c.vec3("up")) {
+    if (v.kind != ViewKind::momentum_sphere) c.error("up", "only a momentum_sphere view takes up (a principal direction)");
+    else if (up->norm() < 1e-12) c.error("up", "expected a non-zero direction");
+    else v.camera.up = std::array<double, 3>{up->x(), up->y(), up->z()};
+  }
 }
 
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
@@ -174,12 +179,30 @@ void read_kind_options(TableReader& r, ViewConfig& v) {
   }
 }
 
+// A momentum_sphere's `turn = { at, azimuth, elevation, seconds }`: its fixed camera turning at `at`.
+void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t body, ViewConfig& v) {
+  const toml::table* t = r.subtable("turn");
+  if (!t) return;
+  if (v.kind != ViewKind::momentum_sphere) return r.error("turn", "only a momentum_sphere view turns its camera");
+  if (v.camera.follow.value_or(false)) return r.error("turn", "a camera that follows Π does not turn; set follow = false");
+  TableReader c(*t, r.key_path("turn"), ctx.diag, {"at", "azimuth", "elevation", "seconds"});
+  ViewConfig::Turn turn;
+  const auto at = read_time(c, "at", s, body);
+  const auto az = c.number("azimuth", Range::closed(-360, 360)), el = c.number("elevation", Range::closed(-90, 90));
+  const auto seconds = c.number("seconds", Range::closed(0.1, 600));
+  for (const char* key : {"at", "azimuth", "elevation", "seconds"})
+    if (!c.has(key)) c.error(key, "missing; a turn needs at, azimuth, elevation and seconds (video s)");
+  if (!at || !az || !el || !seconds) return;
+  turn.at = *at, turn.azimuth_deg = *az, turn.elevation_deg = *el, turn.seconds = *seconds;
+  v.turn = turn;
+}
+
 void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
-                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names"});
+                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -211,6 +234,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     const std::size_t body = v.body.empty() || !s.find_body(v.body) ? 0 : static_cast<std::size_t>(s.find_body(v.body) - s.bodies.data());
     // A view that would appear past the run's end (a shorter --duration) never does.
     v.appear = read_time(r, "appear", s, body, &v.appear_text).value_or(r.has("appear") ? 1e300 : 0);
+    read_turn(r, ctx, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }
   // A comparison lays out its own grid of cells; plots of its runs may go beside it.

@@ -123,6 +123,7 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.arrow_width = r.number("arrow_width", Range::closed(0.25, 4)).value_or(d.arrow_width);
   d.arrow_length = r.number("arrow_length", Range::closed(0.25, 4)).value_or(d.arrow_length);
   d.text_scale = r.number("text_scale", Range::closed(0.5, 1.5)).value_or(d.text_scale);
+  d.tip_names_further = r.boolean("tip_names_further").value_or(d.tip_names_further);
   if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
     // A list of the overlay's items: only those are shown.
     d.overlay_items = {false, false, false, false, false};
@@ -254,7 +255,8 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   if (auto t = root.subtable("draw")) {
     TableReader r(*t, "draw", ctx.diag,
                   {"box", "surface", "axes", "particles", "L", "omega", "trails", "trail_axes", "grid", "overlay", "legend", "labels", "key",
-                   "flips", "arrow_width", "arrow_length", "text_scale"});
+                   "flips", "arrow_width", "arrow_length", "text_scale",
+                   "tip_names_further"});
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {

@@ -99,14 +99,17 @@ Obstacles obstacles_of(const View& view, const ViewportProjection& project) {
 // The first place, turning from along the arrow, where `a`'s name (its tip
 // projected at `base` → `tip`) fits the view clear of `o`; nullopt if none.
 std::optional<TextItem> place_tip(const ArrowItem& a, glm::vec2 base, glm::vec2 tip, float head, const Obstacles& o,
-                                  glm::vec2 view_px, float label_px) {
+                                  glm::vec2 view_px, float label_px, int reaches) {
   const InkSpan ink = text_ink(a.tip, label_px);
   const glm::vec2 along = tip - base;
   const float len = glm::length(along);
   const glm::vec2 d0 = len > 0.3f * label_px ? along / len : glm::vec2(0, -1);
+  // Just past the head; where every turn is taken (a tip inside the body, L along an axis), a line or two further out.
+  for (int r = 0; r < reaches; ++r)
   for (const float turn : kTurns) {
+    const float further = static_cast<float>(r);
     const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
-    const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.2f * label_px;
+    const float reach = head + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + (0.2f + further) * label_px;
     const glm::vec2 centre = tip + reach * d;
     TextItem t{a.tip, {centred_x(a.tip, label_px, centre.x), centre.y - 0.5f * label_px}, label_px, a.color,
                "tip:" + (a.name.empty() ? a.tip : a.name)};
@@ -120,7 +123,7 @@ std::optional<TextItem> place_tip(const ArrowItem& a, glm::vec2 base, glm::vec2 
 
 }  // namespace
 
-std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px) {
+std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px, bool further) {
   const ViewportProjection project(view.camera, width_px, height_px);
   Obstacles o = obstacles_of(view, project);
   // L first, then ω, then the axes: the quantities the lesson is about keep their place.
@@ -135,7 +138,7 @@ std::vector<std::string> label_arrow_tips(View& view, float width_px, float heig
     glm::vec2 base, tip;
     if (!project(a.origin, base) || !project(a.origin + a.vector, tip)) continue;
     const float head = screen_len(project, view.camera, a.origin + a.vector, 2.4 * a.radius);
-    std::optional<TextItem> t = place_tip(a, base, tip, head, o, {width_px, height_px}, label_px);
+    std::optional<TextItem> t = place_tip(a, base, tip, head, o, {width_px, height_px}, label_px, further ? 3 : 1);
     if (!t) {
       left_out.push_back(a.tip);
       continue;

@@ -23,6 +23,7 @@ struct DrawOptions {
   double arrow_width = 1;         ///< the arrows' (axes, L, ω) thickness, times their usual
   double arrow_length = 1;        ///< L's and ω's length, times their usual (kLReach, kOmegaReach)
   double text_scale = 1;          ///< text sizes but the title card's and captions', times their usual (viz::text_px)
+  bool tip_names_further = false; ///< a tip's name with no place beside its head may go a line or two further out
 };
 
 }  // namespace tumble::viz

@@ -12,7 +12,8 @@ namespace {
 
 const char* swatch_glyphs(Swatch s) {
   switch (s) {
-    case Swatch::line: return "\u2501";        // ━
+    case Swatch::line:
+    case Swatch::trail: return "\u2501";       // ━
     case Swatch::dot: return "\u25CF";         // ●
     case Swatch::block: return "\u25A0";       // ■
     case Swatch::arrow: return "\u2192";       // →
@@ -24,8 +25,11 @@ constexpr float kLine = 1.3f;   // line pitch, in sizes
 constexpr float kPad = 0.45f;   // backdrop margin, in sizes
 constexpr float kGap = 0.4f;    // between swatch and text, in sizes
 
-// One swatch per colour, a small gap apart so that three axis colours read as three dashes.
-float swatch_step(Swatch s, float size_px) { return text_width(swatch_glyphs(s), size_px) + 0.15f * size_px; }
+// One swatch per colour, a small gap apart so that three axis colours read as
+// three marks; a trail's colours touch (a hair of overlap), one solid line.
+float swatch_step(Swatch s, float size_px) {
+  return text_width(swatch_glyphs(s), size_px) + (s == Swatch::trail ? -0.02f : 0.15f) * size_px;
+}
 
 float swatch_width(const KeyEntry& e, float size_px) {
   return static_cast<float>(e.colors.size()) * swatch_step(e.swatch, size_px);
@@ -57,7 +61,7 @@ std::vector<KeyEntry> bodies_key(const DrawOptions& d, const std::vector<std::pa
     if (d.trail_axes[i]) trailed.push_back(Color(glm::vec3(kAxisColors[i]), arrows ? 0.4f : kAxisColors[i].a));
   if (d.axes && d.trail_seconds > 0 && !trailed.empty()) {
     const auto one = std::find(d.trail_axes.begin(), d.trail_axes.end(), true) - d.trail_axes.begin();
-    out.push_back({Swatch::line, trailed, trailed.size() == 1 ? kTrailOf[one] : "trails of their tips"});
+    out.push_back({Swatch::trail, trailed, trailed.size() == 1 ? kTrailOf[one] : "trails of their tips"});
   }
   if (d.angular_momentum) out.push_back({arrow, {color_of(Meaning::L)}, "L: angular momentum (direction)"});
   if (d.omega) out.push_back({arrow, {color_of(Meaning::omega)}, "\u03c9: angular velocity (direction)"});

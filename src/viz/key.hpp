@@ -13,7 +13,8 @@
 namespace tumble::viz {
 
 /// How an element looks in the key: a line (curves, arrows), a dot, a block (bodies) or an arrow.
-enum class Swatch { line, dot, block, arrow };
+/// `trail`: a line drawn unbroken, its colours end to end (a trail is no dashed line).
+enum class Swatch { line, dot, block, arrow, trail };
 
 struct KeyEntry {
   Swatch swatch;

@@ -142,7 +142,7 @@ void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vec
     for (const Eigen::Vector3d& x : circle) unit.push_back(to_glm(x));
     for (auto& dash : dashed(unit, 0.07, 0.045)) {
       for (glm::dvec3& x : dash) x *= in.trail ? 1.008 : 1.0;
-      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 2.5f * w, false, "separatrix"});
+      view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 1.6f * w, false, "separatrix"});
     }
   }
 }

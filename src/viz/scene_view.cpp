@@ -48,12 +48,14 @@ void TrailRecorder::record(double t, const std::vector<BodySnapshot>& bodies) {
   samples_.push_back(std::move(s));
 }
 
-std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds, std::array<bool, 3> axes) const {
+std::vector<PolylineItem> TrailRecorder::polylines(double t, double seconds, std::array<bool, 3> axes,
+                                                   std::optional<std::size_t> only) const {
   std::vector<PolylineItem> out;
   if (samples_.empty() || seconds <= 0) return out;
   const size_t nbodies = samples_.back().tips.size();
   for (size_t b = 0; b < nbodies; ++b)
     for (int i = 0; i < 3; ++i) {
+      if (only && b != *only) continue;
       if (!axes[static_cast<std::size_t>(i)]) continue;
       PolylineItem p{{}, kAxisColors[i], 2.0f};
       for (const Sample& s : samples_)

@@ -50,8 +50,9 @@ glm::dvec3 axis_tip(const RigidBodyModel& m, const BodyState& s, int i);
 class TrailRecorder {
  public:
   void record(double t, const std::vector<BodySnapshot>& bodies);
-  /// Polylines of the last `seconds` before and including `t`.
-  std::vector<PolylineItem> polylines(double t, double seconds, std::array<bool, 3> axes = {true, true, true}) const;
+  /// Polylines of the last `seconds` before and including `t`; `only`: of that body alone.
+  std::vector<PolylineItem> polylines(double t, double seconds, std::array<bool, 3> axes = {true, true, true},
+                                      std::optional<std::size_t> only = std::nullopt) const;
 
  private:
   struct Sample {

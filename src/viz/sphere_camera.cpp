@@ -77,6 +77,8 @@ Camera sphere_camera(const SpherePose& pose, const SphereCameraSettings& s) {
     // Straight down ±e3 the azimuth's direction is up (elevation 90, azimuth 90: +e2 at the top).
     const bool down_e3 = std::abs(std::abs(s.elevation_deg) - 90) < 1e-9;
     up = down_e3 ? Eigen::Vector3d(std::cos(az), std::sin(az), 0) : Eigen::Vector3d::UnitZ();
+    // A chosen up (e.g. +e₂, as the body's own view stands), unless it lies along the view.
+    if (s.up.norm() > 0 && s.up.normalized().cross(dir).norm() > 1e-3) up = s.up.normalized();
   }
   Camera c;
   const Eigen::Vector3d eye = s.distance * dir.normalized();
@@ -97,7 +99,7 @@ SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen
   auto sign = [](double x) { return x < 0 ? -1.0 : 1.0; };
   // 12°: the pole's loop is seen nearly from above, both separatrix circles
   // open (they lean about 30° from e₃ for a T-handle, either way), ±e₂ on the
-  // rim left and right; the far end of the pole's axis is named at the rim.
+  // rim left and right; the far end of the pole's axis is behind the ball.
   constexpr double kTilt = 12 * kDeg;
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   d[pole] = std::cos(kTilt) * sign(pi0[pole]);

@@ -32,6 +32,7 @@ struct SphereCameraSettings {
   double follow_s = 0.15;      ///< time constant of the filter, simulated s
   double max_lag_deg = 35;     ///< the followed direction stays this close to Π̂
   double max_turn_deg = 60;    ///< ... and this close to where it started: the figure never turns round
+  Eigen::Vector3d up{0, 0, 0}; ///< fixed camera: the picture's up (principal axes); zero: +e3
   double reach = 1.5;          ///< half the view's height, in |L| (the momentum sphere: its axis labels)
 };
 
@@ -44,8 +45,8 @@ inline constexpr double kSphereReach = 1.5;
 /// tilted 12° from it towards the other pole's axis, with ±e₂ across the
 /// picture on the rim: the whole polhode lies in front (a loop near the
 /// separatrix runs from saddle to saddle over the near hemisphere); the far
-/// end of the pole's axis, behind the ball, is named at the rim; from far
-/// away (distance 14), nearly without perspective.
+/// end of the pole's axis lies behind the ball (not named); from far away
+/// (distance 14), nearly without perspective.
 SphereCameraSettings textbook_camera(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi0);
 
 /// Poses at each sample (times `t`, s, ascending; Π in the principal frame).

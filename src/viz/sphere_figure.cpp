@@ -91,15 +91,13 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
   static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
   static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
   const ViewportProjection project(view.camera, width_px, height_px);
-  // The sphere's radius on screen (a perspective silhouette is a little wider than |L|).
-  glm::vec2 c0, c1;
-  const glm::dvec3 side = glm::normalize(glm::cross(view.camera.target - view.camera.position, view_up(view.camera)));
-  const float ball_px = project(glm::dvec3(0), c0) && project(1.06 * side, c1) ? glm::length(c1 - c0) : 0.0f;
   float head_px = 0;
   for (int i = 0; i < 3; ++i) {
     glm::dvec3 e(0);
     e[i] = kAxisReach;
-    view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
+    // A + end the ball hides is not drawn (nothing of it would show) and not named.
+    if (!hidden_by_ball(view.camera.position, e, 1.0))
+      view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
     view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.75f), 2.0f, false});
     glm::vec2 tip, head;
     if (project(e, tip) && project(e + 0.029 * glm::normalize(view.camera.up), head))
@@ -111,33 +109,35 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       end[i] = sign * kAxisReach;
       glm::vec2 tip, base;
       if (!project(end, tip) || !project(glm::dvec3(0), base)) continue;
-      // An end behind the ball is named too, at the rim where its axis goes
-      // behind (its line shows through faintly, show_far_side).
+      // Each end is named at its own tip; an end the ball hides (pointing away) is not named: nothing of it shows.
+      if (hidden_by_ball(view.camera.position, end, 1.0)) continue;
       TextItem t{sign > 0 ? kPlus[i] : kMinus[i], {0, 0}, label_px, kAxisColors[i]};
       const InkSpan ink = text_ink(t.text, label_px);
       const glm::vec2 along = tip - base;
       const float len = glm::length(along);
-      // An end seen end-on: the one pointing at the viewer is named beside the centre (not at the rim, far
-      // from it); the one pointing away lies wholly behind the ball and is not named (nothing of it shows).
-      const bool end_on = len <= 0.25f * label_px, behind = hidden_by_ball(view.camera.position, end, 1.0);
-      if (end_on && behind) continue;
-      const bool facing = end_on;
-      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : facing ? glm::vec2(0.7071f, -0.7071f) : glm::vec2(0, -1);
-      // An end in front of the ball (or behind it): its label at the ball's rim, off the curves on it.
-      const glm::vec2 from = facing ? base : len < ball_px ? base + ball_px * d0 : tip;
+      // Seen end-on (pointing at the viewer): beside its tip, up and right.
+      const glm::vec2 d0 = len > 0.25f * label_px ? along / len : glm::vec2(0.7071f, -0.7071f);
+      const glm::vec2 from = tip;
       const float past = sign > 0 ? head_px : 1.0f;
-      // Along the axis as drawn, else turned a little at a time until clear of the axes.
-      for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f}) {
+      // Along the axis as drawn, else turned a little at a time until clear of the axes and inside the view;
+      // where no turn is, along the axis pushed back inside (a narrow view, an axis along its edge).
+      auto at = [&](float turn) {
         const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
         const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.25f * label_px;
         const glm::vec2 centre = from + reach * d;
         t.position_px = {centred_x(t.text, label_px, centre.x), centre.y - 0.5f * label_px};
-        if (!on_an_axis(project, text_box(t), head_px)) break;
+        const Box b = text_box(t);
+        return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= width_px && b.y1 <= height_px && !on_an_axis(project, b, head_px);
+      };
+      bool placed = false;
+      for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f, 2.4f, -2.4f})
+        if ((placed = at(turn))) break;
+      if (!placed) {
+        at(0.0f);
+        const Box b = text_box(t);
+        t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - width_px);
+        t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - height_px);
       }
-      // Pushed back inside the view where it would leave it (a narrow view, an axis along its edge).
-      const Box b = text_box(t);
-      t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - width_px);
-      t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - height_px);
       t.name = std::string(sign > 0 ? "axis_label_e" : "axis_label_-e") + char('1' + i);
       view.texts.push_back(std::move(t));
     }
@@ -187,6 +187,11 @@ void show_far_side(View& view, std::size_t first_polyline, double ball) {
       const bool hidden = hidden_by_ball(eye, p.points[start], ball);
       std::size_t end = start + 1;
       while (end + 1 < p.points.size() && hidden_by_ball(eye, p.points[end], ball) == hidden) ++end;
+      // The separatrix's back half is not drawn: seen through the ball it reads as a ring round the near pole.
+      if (hidden && p.name == "separatrix") {
+        start = end;
+        continue;
+      }
       PolylineItem run{{}, hidden ? faint(p.color) : p.color, hidden ? 0.75f * p.width_px : p.width_px, p.fade,
                        hidden ? "" : p.name};
       for (std::size_t j = start; j <= end; ++j)
@@ -196,8 +201,9 @@ void show_far_side(View& view, std::size_t first_polyline, double ball) {
     }
   }
   view.polylines = std::move(out);
+  // Every marker on the sphere (not the ball itself, at the centre): a saddle's white core too.
   for (PointItem& pt : view.points)
-    if (!pt.name.empty() && hidden_by_ball(eye, pt.position, ball)) {
+    if (glm::length(pt.position) > 0.5 && hidden_by_ball(eye, pt.position, ball)) {
       pt.position = near_side(eye, pt.position, front + pt.radius);
       pt.color = faint(pt.color);
       pt.radius *= 0.8;

@@ -2,8 +2,8 @@
 // refined where they bend; ±e₁, ±e₂, ±e₃ labelled at every end that can be
 // seen; the saddles ±e₂ marked; arrows along the level curves giving the
 // direction of motion (dΠ/dt = Π × ω, ω = I⁻¹Π); and the far side of what a
-// viewer follows (separatrix, polhode, Π) shown faintly through the ball, as a
-// textbook draws a sphere's hidden half. GL-free.
+// viewer follows (polhode, Π, saddles) shown faintly through the ball, as a
+// textbook draws a sphere's hidden half; the separatrix's far half not drawn. GL-free.
 #pragma once
 
 #include <functional>
@@ -29,10 +29,10 @@ std::vector<double> refined_params(const std::function<Eigen::Vector3d(double)>&
 inline constexpr double kAxisReach = 1.22, kAxisLabelReach = 1.37;
 
 /// Adds the axes through the sphere (+e_i arrows, −e_i lines) and a label at
-/// each end the ball does not hide and the view shows ("e₁" named
-/// axis_label_e1, "−e₁" named axis_label_-e1, ...): just past the end on
-/// screen, along the axis as drawn (at the ball's rim when the axis points at
-/// the camera), turned until it is clear of the six half-axes.
+/// each end the ball does not hide ("e₁" named axis_label_e1, "−e₁" named
+/// axis_label_-e1, ...): just past its own tip on screen, along the axis as
+/// drawn (up and right of an end pointing at the camera), turned until it is
+/// clear of the six half-axes. An end behind the ball is not named.
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px);
 
 /// The saddles ±e₂ (points named saddle_+e2, saddle_-e2) on the unit sphere.
@@ -45,7 +45,8 @@ void add_direction_arrows(View& view, const std::vector<Eigen::Vector3d>& curve,
 
 /// The far-side parts of polylines [`first`, end) and of the named points of
 /// `view` (units of |L|): brought along the eye's rays to the ball's near side
-/// (same pixels) and drawn faint, so they show through it.
+/// (same pixels) and drawn faint, so they show through it; the far runs of
+/// the separatrix are dropped (through the ball they read as a ring round a pole).
 void show_far_side(View& view, std::size_t first_polyline, double ball);
 
 }  // namespace tumble::viz

@@ -111,8 +111,9 @@ std::optional<glm::vec2> clear_spot(const Box& near, glm::vec2 size, float gap, 
 /// head along the arrow as drawn, else turned a little at a time, clear of
 /// every arrow, named curve, opaque surface part, the view's text and the names
 /// placed before it (lower `tip_rank` first), inside the width × height view.
-/// Returns the names with no such place (left out).
-std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px);
+/// `further`: where no turn is free, a line or two further out along the same
+/// turns. Returns the names with no such place (left out).
+std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px, bool further = false);
 
 /// The box `points` cover as `camera` sees them in a width × height view,
 /// grown by `pad_px` and clipped to the view; nullopt when none of it shows.

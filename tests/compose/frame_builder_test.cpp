@@ -1,4 +1,5 @@
 // The frame builder's text: the overlay line keeps clear of the view title and the name labels.
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -46,7 +47,8 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
   long k = 0;
-  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 0.5)) ++k;
+  // The intro stops (t = 0, 0.155, 0.345 s) come before flip 1 (t = 0.47 s): the first hold past 0.4 s is flip 1's.
+  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 0.4)) ++k;
   ASSERT_TRUE(clock.in_hold(k));
   long last = k;  // the hold's last frame: still named, however long the hold
   while (last + 1 < clock.count() && clock.in_hold(last + 1)) ++last;
@@ -62,11 +64,16 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   };
   EXPECT_TRUE(has(fb.build(k), "paused at flip 1"));
   EXPECT_TRUE(has(fb.build(last), "paused at flip 1"));
-  // A hold elsewhere (the stop at the start, the one after the flip) stays "paused".
+  // A hold elsewhere (the stop at the start, the one after the flip) is "paused", not "paused at flip 1"
+  // (the one after may still carry the flip's mark, "flip 1 · paused", within its 2 s of running video).
   long start = 0;
   while (start + 1 < clock.count() && !clock.in_hold(start)) ++start;
   EXPECT_TRUE(has(fb.build(start), "paused"));
-  EXPECT_TRUE(has(fb.build(after), "paused"));
+  const tumble::viz::DrawList at_after = fb.build(after);
+  EXPECT_FALSE(has(at_after, "paused at flip 1"));
+  EXPECT_TRUE(std::any_of(at_after.texts.begin(), at_after.texts.end(), [](const tumble::viz::TextItem& t) {
+    return t.text.size() >= 6 && t.text.compare(t.text.size() - 6, 6, "paused") == 0;
+  }));
 }
 
 // The demo's readout: E and |L| read the same at the start and mid-flip-1
@@ -95,6 +102,64 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   ASSERT_FALSE(flip.empty());
   EXPECT_EQ(flip.substr(0, flip.find("|\u03c9|")), start.substr(0, start.find("|\u03c9|")));
   EXPECT_NE(flip, start);  // |ω| changes at the flip
+}
+
+}  // namespace
+
+namespace {
+
+// A world view with `body` shows that body alone, its box and its trails, and
+// the readout (the first body's E, |L|, |ω|) only in the first body's view.
+TEST(ViewText, AWorldViewOfOneBodyShowsItAloneWithItsTrails) {
+  const tumble::scene::Scene s = tumble::scene::load_scene_from_string(R"(
+name = "two"
+[simulation]
+duration = 1.0
+fps = 30
+[[bodies]]
+name = "a"
+shape = { type = "box", size = [0.3, 0.2, 0.1], resolution = [3, 2, 1], mass = 1.0 }
+omega_body = [0.1, 5.0, 0.1]
+[[bodies]]
+name = "b"
+shape = { type = "box", size = [0.3, 0.2, 0.1], resolution = [3, 2, 1], mass = 1.0 }
+position = [3.0, 0.0, 0.0]
+omega_body = [5.0, 0.1, 0.1]
+[draw]
+box = true
+trails = 0.5
+overlay = ["time", "state"]
+[[views]]
+kind = "world"
+body = "a"
+viewport = [0.0, 0.0, 0.5, 1.0]
+[[views]]
+kind = "world"
+body = "b"
+viewport = [0.5, 0.0, 0.5, 1.0]
+)", "two.toml");
+  ASSERT_EQ(s.bodies.size(), 2u);
+  const double fps = s.render.output.fps;
+  const long k = 15;  // t = 0.5 s
+  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 640, 360);
+  const tumble::viz::DrawList dl = fb.build(k);
+  ASSERT_EQ(dl.views.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const tumble::viz::View& v = dl.views[i];
+    EXPECT_EQ(v.boxes.size(), 1u) << "view " << i << ": one body's box";
+    const Eigen::Vector3d c = runs[0].frames[static_cast<std::size_t>(k)][i].c;
+    int trails = 0;
+    for (const tumble::viz::PolylineItem& p : v.polylines) {
+      ++trails;
+      for (const glm::dvec3& x : p.points)
+        EXPECT_LT(glm::length(x - glm::dvec3(c.x(), c.y(), c.z())), 1.0) << "view " << i << ": its own body's trail";
+    }
+    EXPECT_EQ(trails, 3) << "view " << i << ": the trails of its body's three axis tips";
+    int readouts = 0;
+    for (const tumble::viz::TextItem& t : v.texts) readouts += t.text.rfind("t =", 0) == 0;
+    EXPECT_EQ(readouts, i == 0 ? 1 : 0) << "view " << i << ": the readout is the first body's";
+  }
 }
 
 }  // namespace

@@ -1,11 +1,13 @@
 // What the lessons draw, checked on the draw list (no GL): every momentum
-// sphere labels all six ends ±e₁, ±e₂, ±e₃ (but one end-on behind the ball) in every frame of every shipped
-// scene that has one; a generated shape is drawn at the size the scene
+// sphere labels each end of ±e₁, ±e₂, ±e₃ that the ball does not hide, at its
+// own tip, in every frame of every shipped scene that has one; a generated shape is drawn at the size the scene
 // declares (not its lattice's extent); a body_frame view shows its own body
 // only; the ground grid stays put.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -14,7 +16,10 @@
 #include "scene/frame_runs.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/scene.hpp"
+#include "viz/captions.hpp"
 #include "viz/draw_list.hpp"
+#include "viz/sphere_camera.hpp"
+#include "viz/sphere_figure.hpp"
 #include "viz/text_layout.hpp"
 
 namespace {
@@ -36,15 +41,14 @@ std::vector<fs::path> sphere_scenes() {
   return out;
 }
 
-// Whether the axis end `name` ("axis_label_-e3") points straight away from the camera (within 3°).
-bool points_away(const tumble::viz::Camera& cam, const std::string& name) {
-  const bool minus = name.find("_-e") != std::string::npos;
+// The axis end `name` ("axis_label_-e3") in units of |L|.
+glm::dvec3 axis_end(const std::string& name) {
   glm::dvec3 e(0);
-  e[name.back() - '1'] = minus ? -1 : 1;
-  return glm::dot(e, glm::normalize(cam.position - cam.target)) < -std::cos(glm::radians(3.0));
+  e[name.back() - '1'] = (name.find("_-e") != std::string::npos ? -1 : 1) * tumble::viz::kAxisReach;
+  return e;
 }
 
-TEST(LessonFigures, EverySphereLabelsAllSixAxisEndsInEveryFrame) {
+TEST(LessonFigures, EverySphereLabelsEachVisibleAxisEndAtItsTipInEveryFrame) {
   const std::vector<fs::path> scenes = sphere_scenes();
   ASSERT_GE(scenes.size(), 2u);  // dzhanibekov_explained, tennis_racket
   const char* const kNames[] = {"axis_label_e1", "axis_label_e2", "axis_label_e3",
@@ -63,18 +67,85 @@ TEST(LessonFigures, EverySphereLabelsAllSixAxisEndsInEveryFrame) {
           if (v.name != "momentum_sphere") continue;
           ++spheres;
           const float vw = static_cast<float>(v.viewport->z * w), vh = static_cast<float>(v.viewport->w * h);
+          const tumble::viz::ViewportProjection project(v.camera, vw, vh);
           for (const char* name : kNames) {
             const auto it = std::find_if(v.texts.begin(), v.texts.end(), [&](const auto& t) { return t.name == name; });
-            if (it == v.texts.end() && points_away(v.camera, name)) continue;  // end-on behind the ball: nothing shows
+            const bool hidden = tumble::viz::hidden_by_ball(v.camera.position, axis_end(name), 1.0);
+            EXPECT_FALSE(hidden && it != v.texts.end()) << p.filename() << " frame " << k << ": " << name << " named behind the ball";
+            if (hidden) continue;  // pointing away, behind the ball: nothing of it shows
             ASSERT_NE(it, v.texts.end()) << p.filename() << " " << w << "x" << h << " frame " << k << ": no " << name;
             const tumble::viz::Box b = tumble::viz::text_box(*it);
             EXPECT_TRUE(b.x0 >= 0 && b.y0 >= 0 && b.x1 <= vw && b.y1 <= vh)
                 << p.filename() << " frame " << k << ": " << name << " leaves its view";
+            // On its own pole: the box within three label heights of the end's tip as drawn (past the
+            // arrowhead, and moved off a curve it would sit on); a label at the rim was six and more away.
+            glm::vec2 tip;
+            ASSERT_TRUE(project(axis_end(name), tip));
+            const float dx = std::max({b.x0 - tip.x, 0.0f, tip.x - b.x1}), dy = std::max({b.y0 - tip.y, 0.0f, tip.y - b.y1});
+            EXPECT_LE(std::hypot(dx, dy), 3.0f * it->size_px)
+                << p.filename() << " " << w << "x" << h << " frame " << k << ": " << name << " is " << std::hypot(dx, dy)
+                << " px from its tip";
           }
         }
       }
       EXPECT_GT(spheres, 0) << p.filename();
     }
+}
+
+// dzhanibekov_explained's sphere turns slowly in its end hold (its view's
+// `turn`): from where it stood when the hold began to the turn's direction, a
+// little each frame, and then stands; the loops round ±e₁ are seen open, not edge-on.
+TEST(LessonFigures, TheSphereTurnsSlowlyInTheEndHold) {
+  const tumble::scene::Scene s = tumble::scene::load_scene(fs::path(TUMBLE_SOURCE_DIR) / "scenes" / "dzhanibekov_explained.toml");
+  const auto turn_of = std::find_if(s.render.explain.views.begin(), s.render.explain.views.end(),
+                                    [](const auto& v) { return v.turn.has_value(); });
+  ASSERT_NE(turn_of, s.render.explain.views.end());
+  const auto& turn = *turn_of->turn;
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  const auto runs = simulate_runs(s, clock.count(), fps);
+  const FrameBuilder fb(s, runs, fps, 960, 540);
+  auto eye = [&](long k) {
+    for (const tumble::viz::View& v : fb.build(k).views)
+      if (v.name == "momentum_sphere") return glm::normalize(v.camera.position - v.camera.target);
+    ADD_FAILURE() << "no sphere in frame " << k;
+    return glm::dvec3(0);
+  };
+  const long k0 = std::lround(clock.video_time(turn.at) * fps), k1 = k0 + std::lround(turn.seconds * fps);
+  ASSERT_LT(k1, clock.count());
+  const double az = glm::radians(turn.azimuth_deg), el = glm::radians(turn.elevation_deg);
+  const glm::dvec3 target{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+  EXPECT_LT(glm::dot(eye(k0), target), 0.9);             // it starts elsewhere
+  EXPECT_NEAR(glm::dot(eye(k1), target), 1.0, 1e-9);     // and ends there
+  EXPECT_NEAR(glm::dot(eye(clock.count() - 1), target), 1.0, 1e-9);
+  double widest = 0;
+  for (long k = k0; k < k1; ++k) widest = std::max(widest, std::acos(std::min(1.0, glm::dot(eye(k), eye(k + 1)))));
+  EXPECT_LT(glm::degrees(widest), 1.0);  // slowly: under 1° a frame
+  // At the end, e₁ is at least 30° from edge-on (its loops open).
+  EXPECT_GT(std::abs(target.x), std::sin(glm::radians(30.0)));
+}
+
+// [draw] tip_names_further: on dzhanibekov_explained's T-handle at the stop after flip 1
+// (frame 700, 960×540) the tips of ω and e₃ lie on the handle; without it
+// their names are left out, with it they are drawn a line or two further out.
+TEST(LessonFigures, TipNamesFurtherOutNameOmegaAndE3OnTheHandle) {
+  tumble::scene::Scene s = tumble::scene::load_scene(fs::path(TUMBLE_SOURCE_DIR) / "scenes" / "dzhanibekov_explained.toml");
+  ASSERT_TRUE(s.render.draw.tip_names_further);
+  const double fps = s.render.output.fps;
+  const auto runs = simulate_runs(s, 701, fps);
+  auto names = [&](bool further) {
+    s.render.draw.tip_names_further = further;
+    const FrameBuilder fb(s, runs, fps, 960, 540);
+    std::set<std::string> out;
+    for (const tumble::viz::View& v : fb.build(700).views)
+      for (const tumble::viz::TextItem& t : v.texts)
+        if (t.name.rfind("tip:", 0) == 0) out.insert(t.name);
+    return out;
+  };
+  const std::set<std::string> with = names(true), without = names(false);
+  EXPECT_TRUE(with.count("tip:omega") && with.count("tip:e3"));
+  EXPECT_FALSE(without.count("tip:omega") && without.count("tip:e3"));
+  for (const std::string& n : without) EXPECT_TRUE(with.count(n)) << n << " lost";
 }
 
 // A phone: 75.8 × 160.8 × 7.8 mm, three lattice cells through its thickness

@@ -220,6 +220,27 @@ TEST(StorySettings, ShadeSpeedsOnPlotsOnly) {
       << error_of("shade_speeds = false\n");
 }
 
+// A momentum sphere's fixed camera may turn at an anchored time; other kinds, and a following camera, refuse it.
+TEST(StorySettings, ASphereTurnsAtAnAnchoredTime) {
+  const Scene s = load("[[views]]\nkind = \"momentum_sphere\"\nturn = { at = \"flip 1\", azimuth = 40, elevation = 30, seconds = 6 }\n");
+  ASSERT_TRUE(s.render.explain.views[1].turn);
+  const auto& t = *s.render.explain.views[1].turn;
+  EXPECT_GT(t.at, 1.0);  // flip 1, about 1.45 s
+  EXPECT_EQ(t.azimuth_deg, 40);
+  EXPECT_EQ(t.elevation_deg, 30);
+  EXPECT_EQ(t.seconds, 6);
+  EXPECT_FALSE(load("[[views]]\nkind = \"momentum_sphere\"\n").render.explain.views[1].turn);
+  EXPECT_NE(error_of("turn = { at = 1, azimuth = 0, elevation = 0, seconds = 1 }\n").find("story.toml:12:8: error: views[0].turn: only a momentum_sphere"),
+            std::string::npos)
+      << error_of("turn = { at = 1, azimuth = 0, elevation = 0, seconds = 1 }\n");
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\ncamera = { follow = true }\nturn = { at = 1, azimuth = 0, elevation = 0, seconds = 1 }\n")
+                .find("a camera that follows Π does not turn"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nturn = { at = 1, azimuth = 0, elevation = 0 }\n").find("views[1].turn.seconds: missing"),
+            std::string::npos)
+      << error_of("[[views]]\nkind = \"momentum_sphere\"\nturn = { at = 1, azimuth = 0, elevation = 0 }\n");
+}
+
 // The same T-handle as a [compare] of two methods, without views.
 std::string compare_scene(const std::string& extra) {
   std::string base = kBase;

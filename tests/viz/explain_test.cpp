@@ -14,6 +14,7 @@
 #include "viz/poinsot.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/strip_chart.hpp"
+#include "viz/text_layout.hpp"
 
 namespace tumble::viz {
 namespace {
@@ -448,13 +449,34 @@ TEST(Keys, ArrowsAndTrailsNeverShareASwatch) {
   ASSERT_EQ(arrows.size(), 4u);
   EXPECT_TRUE(same_entry(plain[0], KeyEntry{Swatch::line, plain[0].colors, plain[0].text}));  // as before
   EXPECT_EQ(arrows[0].swatch, Swatch::arrow);  // e₁ e₂ e₃
-  EXPECT_EQ(arrows[1].swatch, Swatch::line);   // their trails, faded
+  EXPECT_EQ(arrows[1].swatch, Swatch::trail);  // their trails, faded
   for (const Color& c : arrows[1].colors) EXPECT_LT(c.a, 0.5f);
   EXPECT_EQ(arrows[2].swatch, Swatch::arrow);  // L
   EXPECT_EQ(arrows[3].swatch, Swatch::arrow);  // ω
   View v;
   add_key(v, arrows, {0, 0}, 12.0f);
   EXPECT_EQ(v.texts[0].text, "\u2192");
+}
+
+// The trails are drawn as solid lines: their key swatches touch, where the
+// axes' three marks keep a gap.
+TEST(Keys, TrailSwatchesTouchAsOneSolidLine) {
+  DrawOptions d;
+  d.trail_seconds = 1;
+  const std::vector<KeyEntry> entries = bodies_key(d, {});
+  ASSERT_EQ(entries.size(), 2u);
+  ASSERT_EQ(entries[1].colors.size(), 3u);
+  View v;
+  add_key(v, entries, {0, 0}, 12.0f);
+  std::vector<const TextItem*> axes, trails;
+  for (const TextItem& t : v.texts)
+    if (t.name == "key_swatch") (axes.size() < 3 ? axes : trails).push_back(&t);
+  ASSERT_EQ(trails.size(), 3u);
+  const float glyph = text_width("\u2501", 12.0f);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_LE(trails[i + 1]->position_px.x - trails[i]->position_px.x, glyph) << "trail swatches " << i << " and " << i + 1 << " touch";
+    EXPECT_GT(axes[i + 1]->position_px.x - axes[i]->position_px.x, glyph) << "the axes' marks keep a gap";
+  }
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ bool drawn(const View& v, Swatch s, const Color& c) {
       return any_rgb(v.surfaces, c, all);
     case Swatch::dot: return any_rgb(v.points, c, [](const PointItem& p) { return !p.name.empty(); });
     case Swatch::line: return any_rgb(v.arrows, c, all) || any_rgb(v.polylines, c, all);
+    case Swatch::trail: return any_rgb(v.polylines, c, all);
     case Swatch::arrow: return any_rgb(v.arrows, c, all);
   }
   return false;

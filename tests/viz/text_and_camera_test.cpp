@@ -258,5 +258,23 @@ TEST(SphereCamera, StraightDownE3PutsTheAzimuthAtTheTop) {
   }
 }
 
+// A chosen up (+e₂, 30° in front from elevation 60) is the picture's up: +e₂
+// projects above the centre, −e₂ below; along the view it is ignored.
+TEST(SphereCamera, AChosenUpIsThePicturesUp) {
+  SphereCameraSettings s;
+  s.follow = false;
+  s.azimuth_deg = 90;
+  s.elevation_deg = 60;
+  s.up = {0, 1, 0};
+  const Camera c = sphere_camera({}, s);
+  const glm::dvec3 up = view_up(c);
+  EXPECT_NEAR(glm::dot(up, glm::dvec3(0, 1, 0)), 1, 1e-12);  // +e₂ up (the lookAt projects it)
+  s.up = {0, 0.5, std::sqrt(3.0) / 2};  // along the view: the default up
+  const glm::dvec3 along = view_up(sphere_camera({}, s));
+  s.up = {0, 0, 0};
+  EXPECT_NEAR(glm::length(along - view_up(sphere_camera({}, s))), 0, 1e-12);
+  EXPECT_LT(glm::dot(up, view_up(sphere_camera({}, s))), 0.9);  // and the chosen up did turn the picture
+}
+
 }  // namespace
 }  // namespace tumble::viz

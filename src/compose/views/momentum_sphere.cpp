@@ -7,6 +7,7 @@
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
 #include "core/dynamics.hpp"
+#include "scene/frame_clock.hpp"
 #include "viz/momentum_sphere.hpp"
 #include "viz/sphere_camera.hpp"
 
@@ -23,6 +24,7 @@ viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::Spher
   s.elevation_deg = c.elevation_deg.value_or(s.elevation_deg);
   s.distance = c.distance.value_or(s.distance);
   s.follow = c.follow.value_or(s.follow);
+  if (c.up) s.up = Eigen::Vector3d((*c.up)[0], (*c.up)[1], (*c.up)[2]);
   return s;
 }
 
@@ -72,11 +74,24 @@ class SpherePanel : public Panel {
     for (std::size_t j = 0; j < run.path_end(kk); ++j)
       if (run.path_t[j] >= since) in.history.push_back(momentum_body(run.path[j][body_]));
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
+    turn(k, in.camera);
     viz::build_momentum_sphere(v, in);
     return v;
   }
 
  private:
+  // A fixed camera turning (the view's `turn`): eased from where it stands to
+  // the turn's direction over its video seconds, from the first frame showing `at`.
+  void turn(long k, viz::SphereCameraSettings& c) const {
+    const auto& t = ctx_.scene.render.explain.views[index_].turn;
+    if (!t || c.follow) return;
+    const scene::FrameClock& clock = ctx_.world.clock();
+    const double u = std::clamp((static_cast<double>(k) / clock.fps() - clock.video_time(t->at)) / t->seconds, 0.0, 1.0);
+    const double s = u * u * (3 - 2 * u);  // smoothstep: no jerk at either end
+    c.azimuth_deg += s * (t->azimuth_deg - c.azimuth_deg);
+    c.elevation_deg += s * (t->elevation_deg - c.elevation_deg);
+  }
+
   viz::MomentumSphereInput input(long kk) const {
     const RigidBodyModel& m = ctx_.scene.bodies[body_].model;
     viz::MomentumSphereInput in;

@@ -1,14 +1,18 @@
 // The `world` view kind (and each cell of a scene without [[views]]): the
 // bodies in space seen by the scene's camera, the overlay line in the title
-// strip, the bodies' key beside them. The camera keeps the scene's direction
+// strip, the bodies' key beside them. A view with `body` shows that body
+// alone, with its trails, and the readout only when it is the first body's
+// (the readout's E, |L| and |ω| are the first body's). The camera keeps the scene's direction
 // and backs off, if it must, until every body and arrow of the whole video is
 // inside the content rectangle.
 #include <algorithm>
+#include <cmath>
 
 #include "compose/camera_fit.hpp"
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
 #include "viz/palette.hpp"
+#include "viz/scene_view.hpp"
 #include "viz/text_layout.hpp"
 
 namespace tumble::compose {
@@ -22,24 +26,38 @@ constexpr double kFillMargin = 0.1;  // room around what a camera moved closer f
 
 class WorldPanel : public Panel {
  public:
-  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewConfig* vc = nullptr)
+  WorldPanel(const PanelContext& ctx, std::size_t run, bool keyed, const scene::ViewConfig* vc = nullptr,
+             std::optional<std::size_t> only = std::nullopt)
       : ctx_(ctx), run_(run), keyed_(keyed), vc_(vc), own_(vc && vc->camera.position ? &vc->camera : nullptr),
-        across_(vc && vc->camera.across != 0 ? &vc->camera : nullptr) {}
+        across_(vc && vc->camera.across != 0 ? &vc->camera : nullptr), only_(only) {}
   std::string name() const override { return "world"; }
-  std::vector<viz::KeyEntry> key() const override { return keyed_ ? bodies_key(ctx_, std::nullopt) : std::vector<viz::KeyEntry>{}; }
-  std::vector<std::string> overlay(long k) const override { return ctx_.world.overlay(run_, k); }
-  int overlay_lines() const override { return ctx_.world.overlay_lines(run_); }
+  // A view of one body is keyed as a classic scene's legend: arrow swatches, and the box.
+  std::vector<viz::KeyEntry> key() const override {
+    if (!keyed_) return {};
+    std::vector<viz::KeyEntry> k = bodies_key(ctx_, only_, only_.has_value());
+    if (const auto box = box_key(ctx_); box && only_) k.push_back(*box);
+    return k;
+  }
+  std::vector<std::string> overlay(long k) const override {
+    return read_out() ? ctx_.world.overlay(run_, k) : std::vector<std::string>{};
+  }
+  int overlay_lines() const override { return read_out() ? ctx_.world.overlay_lines(run_) : 0; }
 
   void fit(glm::vec2 size) override {
     size_ = size;
     const double aspect = size.x / std::max(size.y, 1.0f);
     camera_ = own_ ? view_camera(*own_) : scene_camera(ctx_.scene, ctx_.runs, aspect);
     if (across_) {
-      // The scene camera's target and distance, turned to look across the first body's L.
+      // The scene camera's target and distance, turned to look across the first body's L
+      // (a view of one body: at that body, across its L).
       const scene::CameraConfig& sc = ctx_.scene.render.camera;
-      const double dist = glm::length(camera_.position - camera_.target) * 2;
-      camera_ = across_camera(Eigen::Vector3d(camera_.target.x, camera_.target.y, camera_.target.z),
-                              ctx_.scene.bodies.front().initial.L, across_->across,
+      const scene::Body& b = ctx_.scene.bodies[only_.value_or(0)];
+      // One body: from twice the distance at which its box fills the view (the fit then comes closer).
+      const double dist = only_ ? 2.3 * viz::box_radius(b.model) / std::sin(glm::radians(camera_.fov_y_deg) / 2)
+                                : glm::length(camera_.position - camera_.target) * 2;
+      const Eigen::Vector3d target =
+          only_ ? b.initial.c : Eigen::Vector3d(camera_.target.x, camera_.target.y, camera_.target.z);
+      camera_ = across_camera(target, b.initial.L, across_->across,
                               across_->azimuth_deg.value_or(sc.azimuth_deg), across_->elevation_deg.value_or(sc.elevation_deg),
                               dist, camera_.fov_y_deg);
     }
@@ -53,7 +71,7 @@ class WorldPanel : public Panel {
       if (!grid && r != run_) continue;
       for (long i = 0; i < std::min(n, kFitSamples); ++i) {
         const long k = n <= kFitSamples ? i : i * (n - 1) / (kFitSamples - 1);
-        const viz::View v = ctx_.world.view(r, k, camera_, int(size.x), int(size.y));
+        const viz::View v = ctx_.world.view(r, k, camera_, int(size.x), int(size.y), only_);
         shots.push_back(solid_shot(v, outlines));
       }
     }
@@ -98,7 +116,9 @@ class WorldPanel : public Panel {
   }
 
   viz::View content(long k) const override {
-    viz::View v = ctx_.world.view(run_, k, camera_, int(size_.x), int(size_.y));
+    viz::View v = ctx_.world.view(run_, k, camera_, int(size_.x), int(size_.y), only_);
+    if (only_)
+      for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_)) v.polylines.push_back(std::move(p));
     v.name = name();
     // A view of small bodies may draw its arrows thicker, and leave their names to the key.
     for (viz::ArrowItem& a : v.arrows) {
@@ -116,7 +136,10 @@ class WorldPanel : public Panel {
   const scene::ViewConfig* vc_;  // the view's options (none: a classic view or a [compare] cell)
   const scene::ViewCamera* own_;  // the view's own camera (a world view's `camera` table), else the scene's
   const scene::ViewCamera* across_;  // the view's camera across L
+  std::optional<std::size_t> only_;  // the view's body alone
   glm::vec2 size_{1, 1};
+
+  bool read_out() const { return !only_ || *only_ == 0; }
 
   viz::Camera view_camera(const scene::ViewCamera& c) const {
     auto g = [](const std::array<double, 3>& a) { return glm::dvec3(a[0], a[1], a[2]); };
@@ -145,6 +168,13 @@ std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std
   return viz::bodies_key(ctx.world.draw(), bodies, arrows);
 }
 
+std::optional<viz::KeyEntry> box_key(const PanelContext& ctx) {
+  const viz::DrawOptions& draw = ctx.world.draw();
+  if (!draw.box.value_or(false) || !draw.surface || ctx.scene.bodies.empty()) return std::nullopt;
+  const Eigen::Vector3f c = 0.45f * ctx.scene.bodies.front().color.cast<float>();
+  return viz::KeyEntry{viz::Swatch::line, {viz::Color(c.x(), c.y(), c.z(), 0.5f)}, "box along the principal axes"};
+}
+
 viz::Color run_color(const scene::Run& run) {
   // Crimson, ochre and violet: apart from the axes' vermillion, green and blue, L's black and each other.
   static const std::pair<const char*, viz::Color> kColors[] = {
@@ -155,7 +185,9 @@ viz::Color run_color(const scene::Run& run) {
 }
 
 std::unique_ptr<Panel> make_world(const PanelContext& ctx, std::size_t index) {
-  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &ctx.scene.render.explain.views[index]);
+  const scene::ViewConfig& v = ctx.scene.render.explain.views[index];
+  const std::optional<std::size_t> only = v.body.empty() ? std::nullopt : std::optional<std::size_t>(view_body(ctx, index));
+  return std::make_unique<WorldPanel>(ctx, 0, ctx.scene.render.explain.key, &v, only);
 }
 
 std::unique_ptr<Panel> make_run_panel(const PanelContext& ctx, std::size_t r) {
