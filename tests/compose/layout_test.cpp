@@ -209,8 +209,8 @@ void keys_cover_no_body_or_momentum_point() {
 }
 
 // A body's name sits beside its body, not on it. No
-// visible body label overlaps a body's box (its own or another's) in its view,
-// in any frame.
+// visible body label overlaps a body's box or drawn surface (its extent on
+// screen; its own or another's) in its view, in any frame.
 // No shipped lesson names its bodies beside them now (poinsot's views' titles
 // name its boxes), so poinsot with [draw] labels = true gives the check its
 // labels: two boxes named in the view of both, at 960×540.
@@ -235,7 +235,8 @@ void body_labels_clear_of_bodies() {
           if (l.name.rfind("label:", 0) != 0 || !l.visible) continue;
           ++labels;
           for (const LayoutItem& b : layouts.frames[k])
-            if (b.kind == "body" && b.visible && b.view == l.view && b.box.overlaps(l.box) && bad++ < 3)
+            if ((b.kind == "body" || b.kind == "surface") && b.visible && b.view == l.view && b.box.overlaps(l.box) &&
+                bad++ < 3)
               ADD_FAILURE() << scene << " at " << h << "p frame " << k << ": \"" << l.text << "\" (" << l.view
                             << ") lies on a body's box";
         }
