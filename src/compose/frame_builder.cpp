@@ -201,12 +201,20 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   const ViewPlan& p = plan_.views[i];
   viz::View v = panels_[i]->content(k);
   const viz::Box& c = p.content;
-  // Arrows are named at their tips, then labels settle inside the content
-  // rectangle, clear of its other text; then move with it into the view.
+  // Pinned names go to their places for the run, with their leaders; then
+  // arrows are named at their tips and labels settle inside the content
+  // rectangle, clear of the view's other text and of the leaders (named
+  // "leader" meanwhile, as obstacles; drawn unnamed, as annotations); then all
+  // move with it into the view.
+  std::vector<viz::TextItem> pinned;
+  for (viz::TextItem& t : v.texts)
+    if (const auto pin = pins_[i].find(t.name); pin != pins_[i].end()) t.position_px = pin->second, pinned.push_back(t);
+  const std::size_t first_leader = v.polylines.size();
+  add_leaders(v, pinned, {c.x1 - c.x0, c.y1 - c.y0});
+  for (std::size_t j = first_leader; j < v.polylines.size(); ++j) v.polylines[j].name = "leader";
   viz::label_arrow_tips(v, c.x1 - c.x0, c.y1 - c.y0, viz::text_px(viz::TextRole::label, height_, scene_.render.draw.text_scale),
                         scene_.render.draw.tip_names_further);
-  // Pinned names go to their places for the run; the other labels settle clear of them.
-  std::vector<viz::TextItem> pinned;
+  pinned.clear();
   std::vector<viz::Box> pinned_boxes;
   for (auto t = v.texts.begin(); t != v.texts.end();) {
     const auto pin = pins_[i].find(t->name);
@@ -222,7 +230,8 @@ viz::View FrameBuilder::view_at(std::size_t i, long k, std::vector<std::string>&
   for (const viz::TextItem& t : viz::settle_labels(v, c.x1 - c.x0, c.y1 - c.y0, pinned_boxes))
     notes.push_back(view_name(i, panels_[i]->name(), titles_[i]) + ": label '" + t.text + "' left out: no place beside it clear of " +
                     "the view's other text, bodies, arrows and curves");
-  add_leaders(v, pinned, {c.x1 - c.x0, c.y1 - c.y0});
+  for (std::size_t j = first_leader; j < v.polylines.size(); ++j)
+    if (v.polylines[j].name == "leader") v.polylines[j].name.clear();
   v.texts.insert(v.texts.end(), pinned.begin(), pinned.end());
   for (viz::TextItem& t : v.texts) move_text(t, {c.x0, c.y0});
   v.content_px = glm::vec4(c.x0, c.y0, c.x1, c.y1);

@@ -83,6 +83,9 @@ struct ViewConfig {
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range
   bool shade_speeds = true;         ///< plot: the slow-motion stretches shaded, one shade and key entry a speed
   bool y_log = false;               ///< plot: log10 of |value| (y_scale = "log"), for errors over decades
+  /// plot of energy_error: dashed lines at L²/2I₁ and L²/2I₂ (and L²/2I₃), the energies a fixed |L| allows
+  /// for a pure e₁ spin, the separatrix and a pure e₃ spin, as ΔE/E of the start's energy
+  bool energy_levels = false;
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")
   /// momentum_sphere `turn`: from the first frame showing simulated `at`, its

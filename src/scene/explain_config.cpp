@@ -148,7 +148,7 @@ void read_sphere_options(TableReader& r, ViewConfig& v) {
   v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
 }
 
-// Keys only some kinds take: the sphere's (above), y_scale and y_range (plot).
+// Keys only some kinds take: the sphere's (above), y_scale, shade_speeds, energy_levels and y_range (plot).
 void read_kind_options(TableReader& r, ViewConfig& v) {
   read_sphere_options(r, v);
   if (const auto scale = r.string("y_scale")) {
@@ -159,6 +159,12 @@ void read_kind_options(TableReader& r, ViewConfig& v) {
   if (const auto shade = r.boolean("shade_speeds")) {
     if (v.kind != ViewKind::plot) r.error("shade_speeds", "only a plot view shades its speeds");
     else v.shade_speeds = *shade;
+  }
+  if (const auto lv = r.boolean("energy_levels")) {
+    if (v.kind != ViewKind::plot) r.error("energy_levels", "only a plot view draws energy levels");
+    else if (std::find(v.series.begin(), v.series.end(), "energy_error") == v.series.end())
+      r.error("energy_levels", "the levels are energies: expected series = [\"energy_error\"]");
+    else v.energy_levels = *lv;
   }
   if (const toml::node* n = r.node("y_range")) {
     if (v.kind != ViewKind::plot) {
@@ -202,7 +208,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
-                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn"});
+                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {

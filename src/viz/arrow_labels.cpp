@@ -74,7 +74,7 @@ struct Obstacles {
   }
 };
 
-Obstacles obstacles_of(const View& view, const ViewportProjection& project) {
+Obstacles obstacles_of(const View& view, const ViewportProjection& project, float leader_room) {
   Obstacles o;
   for (const ArrowItem& a : view.arrows) {
     glm::vec2 p0, p1;
@@ -84,12 +84,14 @@ Obstacles obstacles_of(const View& view, const ViewportProjection& project) {
     o.heads.push_back(p1);
     o.head_r.push_back(r + 1.5f);
   }
-  // The curves a viewer follows (named: a polhode, a herpolhode), as short segments.
+  // The curves a viewer follows (named: a polhode, a herpolhode), as short
+  // segments; a curve name's leader with `leader_room` (px) either side.
   for (const PolylineItem& l : view.polylines) {
     if (l.name.empty()) continue;
+    const float r = l.name == "leader" ? std::max(2.0f, leader_room) : 2.0f;
     glm::vec2 a, b;
     for (std::size_t i = 1; i < l.points.size(); ++i)
-      if (project(l.points[i - 1], a) && project(l.points[i], b)) o.shafts.push_back({a, b, 2.0f});
+      if (project(l.points[i - 1], a) && project(l.points[i], b)) o.shafts.push_back({a, b, r});
   }
   o.taken = part_boxes(view, project);
   for (const TextItem& t : view.texts) o.taken.push_back(text_box(t));
@@ -125,7 +127,10 @@ std::optional<TextItem> place_tip(const ArrowItem& a, glm::vec2 base, glm::vec2 
 
 std::vector<std::string> label_arrow_tips(View& view, float width_px, float height_px, float label_px, bool further) {
   const ViewportProjection project(view.camera, width_px, height_px);
-  Obstacles o = obstacles_of(view, project);
+  // A name just beside a curve name's leader reads as the one it leads to:
+  // each name looks first for a place a third of a line from every leader,
+  // then for any place clear of them.
+  Obstacles roomy = obstacles_of(view, project, 0.35f * label_px), o = obstacles_of(view, project, 0.0f);
   // L first, then ω, then the axes: the quantities the lesson is about keep their place.
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < view.arrows.size(); ++i)
@@ -138,7 +143,8 @@ std::vector<std::string> label_arrow_tips(View& view, float width_px, float heig
     glm::vec2 base, tip;
     if (!project(a.origin, base) || !project(a.origin + a.vector, tip)) continue;
     const float head = screen_len(project, view.camera, a.origin + a.vector, 2.4 * a.radius);
-    std::optional<TextItem> t = place_tip(a, base, tip, head, o, {width_px, height_px}, label_px, further ? 3 : 1);
+    std::optional<TextItem> t = place_tip(a, base, tip, head, roomy, {width_px, height_px}, label_px, further ? 3 : 1);
+    if (!t) t = place_tip(a, base, tip, head, o, {width_px, height_px}, label_px, further ? 3 : 1);
     if (!t) {
       left_out.push_back(a.tip);
       continue;
@@ -146,7 +152,7 @@ std::vector<std::string> label_arrow_tips(View& view, float width_px, float heig
     // Later names keep a gap from this one (a quarter line): names that touch read as one word ("Lω").
     const Box b = text_box(*t);
     const float gap = 0.25f * label_px;
-    o.taken.push_back({b.x0 - gap, b.y0 - gap, b.x1 + gap, b.y1 + gap});
+    for (Obstacles* x : {&roomy, &o}) x->taken.push_back({b.x0 - gap, b.y0 - gap, b.x1 + gap, b.y1 + gap});
     view.texts.push_back(std::move(*t));
   }
   return left_out;

@@ -157,6 +157,7 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const float w = line_scale(in.frame_h);
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
   PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.2f * w, false, "herpolhode"};
+  herpolhode.over_glass = true;  // under the ellipsoid's glass, seen through it in full colour (not tinted away)
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(to_glm(in.q * w * f.scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history)
     herpolhode.points.push_back(to_glm(w * f.scale - kHerpolhodeLift * p.normal));

@@ -107,6 +107,12 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
   if (in.log10)  // and at the decades
     for (int d = static_cast<int>(std::ceil(in.lo - 1e-9)); d <= in.hi + 1e-9; ++d)
       line({m.at(in.t0, d), m.at(in.t1, d)}, {0.55f, 0.57f, 0.62f, 0.3f}, 1.0f, "");
+  for (const StripChartInput::Level& l : in.levels)  // dashed: about 40 dashes across
+    if (l.value >= in.lo && l.value <= in.hi)
+      for (int i = 0; i < 40; ++i) {
+        const double t = in.t0 + (in.t1 - in.t0) * i / 40.0;
+        line({m.at(t, l.value), m.at(t + 0.6 * (in.t1 - in.t0) / 40.0, l.value)}, kLevelColor, 2.0f, "");
+      }
   for (double t : in.marks)  // under the curves, in the flip badge's red, thin
     if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.75f, 0.1f, 0.1f, 0.55f}, 1.5f, "mark");
   for (const Series& s : in.series) {
@@ -128,6 +134,14 @@ std::string decade(int d) {
   return out;
 }
 
+// Does a value tick at `y` (px, its top) keep clear of every level's name?
+bool clear_of_levels(const StripChartInput& in, const ChartMap& m, float y, float f) {
+  for (const StripChartInput::Level& l : in.levels)
+    if (l.value >= in.lo && l.value <= in.hi && std::abs(m.pixel(m.at(in.t0, l.value)).y - 0.5f * f - y) < 1.1f * f)
+      return false;
+  return true;
+}
+
 // A log axis: its decades named on the left (at most about six, evenly
 // spaced, apart; add_chart_lines draws a faint gridline at each decade).
 void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, float f) {
@@ -141,7 +155,8 @@ void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, 
   for (int d = first; d <= last; ++d) {
     if (((d - anchor) % step + step) % step != 0) continue;
     const float y = m.pixel(m.at(in.t0, d)).y;
-    view.texts.push_back({decade(d), {4.0f, y - 0.5f * f}, f, color_of(Meaning::ink), "tick"});
+    if (clear_of_levels(in, m, y - 0.5f * f, f))
+      view.texts.push_back({decade(d), {4.0f, y - 0.5f * f}, f, color_of(Meaning::ink), "tick"});
   }
 }
 
@@ -181,10 +196,23 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
   for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
   // Right of the head, clear of the playhead: over the time still to come
-  // (no curve there yet), and past the box's right edge at the end.
+  // (no curve there yet); a name that would reach the box's right edge sits
+  // past it, never across it.
+  const float right = m.pixel(m.at(in.t1, in.lo)).x;
   for (const Head& h : heads) {
     const Series& s = in.series[h.series];
-    view.texts.push_back({s.name, {h.at.x + 0.5f * f, h.y}, f, s.color, "series_label"});
+    float x = h.at.x + 0.5f * f;
+    if (x + text_width(s.name, f) > right - 0.2f * f) x = std::max(x, right + 0.4f * f);
+    view.texts.push_back({s.name, {x, h.y}, f, s.color, "series_label"});
+  }
+}
+
+// Each reference level named on the value axis, as a tick is (inside the
+// chart, a name would lie across the curves and the flips' marks).
+void add_level_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  for (const StripChartInput::Level& l : in.levels) {
+    if (l.value < in.lo || l.value > in.hi) continue;
+    view.texts.push_back({l.label, {4.0f, m.pixel(m.at(in.t0, l.value)).y - 0.5f * f}, f, kLevelColor, "level_label"});
   }
 }
 
@@ -194,18 +222,21 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   auto text = [&](const std::string& s, glm::vec2 p, Color c) {
     view.texts.push_back({s, p, f, c, "tick"});
   };
+  auto value_text = [&](const std::string& s, glm::vec2 p, Color c) {  // where no level's name is
+    if (clear_of_levels(in, m, p.y, f)) text(s, p, c);
+  };
   const glm::vec2 top_left = m.pixel(m.at(in.t0, in.hi)), bottom_left = m.pixel(m.at(in.t0, in.lo));
   const glm::vec2 bottom_right = m.pixel(m.at(in.t1, in.lo));
   if (in.log10) {
     add_decade_ticks(view, in, m, f);
   } else {
-    text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
-    text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
+    value_text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
+    value_text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
   }
   if (!in.log10 && in.lo < 0 && in.hi > 0) {
     const float y0 = m.pixel(m.at(in.t0, 0)).y - 0.5f * f;
     // Only where it clears the range's ends.
-    if (y0 > top_left.y + 0.5f * f && y0 + f < bottom_left.y - 0.5f * f) text("0", {4.0f, y0}, ink);
+    if (y0 > top_left.y + 0.5f * f && y0 + f < bottom_left.y - 0.5f * f) value_text("0", {4.0f, y0}, ink);
   }
   const std::string t1 = format_number(in.t1, 3) + " s";
   text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
@@ -220,6 +251,7 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
     if (x - half > left_end && x + half < right_end) text(label, {centred_x(label, f, x), bottom_left.y + 0.3f * f}, ink);
   }
   float x = w - head.key_w;
+  add_level_labels(view, in, m, f);
   if (in.direct_labels) add_head_labels(view, in, m, f);
   for (const Series& s : in.direct_labels ? std::vector<Series>{} : in.series) {
     TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};

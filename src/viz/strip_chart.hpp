@@ -12,6 +12,8 @@ namespace tumble::viz {
 
 /// Tint of the slowed stretches (translucent, lit face-on).
 inline constexpr Color kSlowBandColor{0.35f, 0.55f, 0.95f, 0.22f};
+/// Reference levels' dashes and names: dark grey, no series' colour.
+inline constexpr Color kLevelColor{0.25f, 0.27f, 0.32f, 0.85f};
 
 struct Series {
   std::string name;            ///< as shown in the key, e.g. "ω₁"
@@ -39,6 +41,12 @@ struct StripChartInput {
   bool log10 = false;
   /// Each series named at its curve's head, in its colour (no key row): a few curves told apart at a glance.
   bool direct_labels = false;
+  /// Reference values (the value axis' unit) drawn as dashed lines across the chart, each named on the value axis.
+  struct Level {
+    double value;
+    std::string label;
+  };
+  std::vector<Level> levels;
 };
 
 /// Fills `view` (camera included) for a viewport of `width_px` × `height_px`:

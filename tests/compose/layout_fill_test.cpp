@@ -159,11 +159,14 @@ TEST(LayoutFill, WorldViewsComeCloseEnoughForTheBodiesToFillTheirContent) {
   // With name labels a label's line stays free above and below the bodies (here about a fifth of the half
   // height, and more since the clock line shortens the content at 960x540).
   EXPECT_GT(fill(shipped("tennis_racket.toml"), 0, 960, 540), 0.7);
-  // A comparison grid's automatic camera, every cell.
+  // A comparison grid's automatic camera, every cell. Its arrows' tips, the
+  // extreme points, keep their names' room (1.4 label heights, 25 px, each
+  // side: a fifth of a 268 px cell's half width at 960x540) inside the fill
+  // margin (0.1), so the bodies reach at least 0.9 - 0.2.
   const scene::Scene mc = shipped("methods_compare.toml");
   double widest = 0;
   for (std::size_t i = 0; i < 2; ++i) widest = std::max(widest, fill(mc, i, 960, 540));  // one row above the plot
-  EXPECT_GT(widest, 0.8);
+  EXPECT_GT(widest, 0.7);
   EXPECT_LE(widest, 1.0);
 }
 

@@ -66,6 +66,27 @@ TEST(PoinsotViews, BodyFixedViewTracesLsTipAndNamesNoStillBody) {
   EXPECT_GT(trails, 10);
 }
 
+// The boxes in space are small: their arrows are drawn 2.5 times as thick as
+// the body-fixed view's (the same arrows, unscaled), and named by the key,
+// not at their tips (bunched names there collided and flickered).
+TEST(PoinsotViews, BoxesInSpaceHaveThickUnnamedArrows) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  for (const long k : {200L, 1000L}) {
+    double world_e2 = 0, body_e2 = 0;
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name == "world") {
+        for (const tumble::viz::TextItem& t : v.texts) EXPECT_NE(t.name.rfind("tip:", 0), 0u) << t.name << " at " << k;
+        for (const tumble::viz::ArrowItem& a : v.arrows) world_e2 = a.name == "e2" ? a.radius : world_e2;  // the right box's, last
+      }
+      if (v.name == "body_frame")
+        for (const tumble::viz::ArrowItem& a : v.arrows) body_e2 = a.name == "e2" ? a.radius : body_e2;
+    }
+    EXPECT_NEAR(world_e2, 2.5 * body_e2, 1e-12) << "frame " << k;
+    EXPECT_GT(body_e2, 0) << "frame " << k;
+  }
+}
+
 // Where a world point lands in the view's pixels (its content rectangle's camera).
 glm::vec2 on_screen(const tumble::viz::View& v, const glm::dvec3& p) {
   const glm::vec4 c = v.content_px.value();

@@ -152,6 +152,13 @@ kind = "plot"
   EXPECT_TRUE(load("[[views]]\nkind = \"world\"\n").render.explain.views[0].tip_names);
   EXPECT_NE(error_of("[[views]]\nkind = \"poinsot\"\ntip_names = false\n").find("tip_names"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nline_scale = 2\n").find("line_scale"), std::string::npos);
+  // A plot of the energy error may draw the energies a fixed |L| allows; no other view or series.
+  EXPECT_TRUE(load("[[views]]\nkind = \"plot\"\nseries = [\"energy_error\"]\nenergy_levels = true\n")
+                  .render.explain.views[0]
+                  .energy_levels);
+  EXPECT_FALSE(load("[[views]]\nkind = \"plot\"\nseries = [\"energy_error\"]\n").render.explain.views[0].energy_levels);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nenergy_levels = true\n").find("energy_error"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"world\"\nenergy_levels = true\n").find("energy_levels"), std::string::npos);
 }
 
 TEST(ExplainConfig, ErrorsNameTheKeyAndWhatWasExpected) {

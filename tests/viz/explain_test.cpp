@@ -282,6 +282,40 @@ TEST(StripChart, SeriesAndPlayheadLandOnTheChartMap) {
   EXPECT_LT(px.x, 400);
 }
 
+TEST(StripChart, ReferenceLevelsAreDashedLinesNamedOnTheValueAxis) {
+  StripChartInput in;
+  in.times = {0, 1};
+  in.series = {{"e", {0.0, 0.1}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 4, in.lo = -0.2, in.hi = 1, in.playhead = 1;
+  in.levels = {{0.97, "L\u00b2/2I\u2081"}, {-0.33, "below the axis"}};
+  View v;
+  build_strip_chart(v, in, 600, 300, 12.0f);
+  const ChartMap m(in, 600, 300, 12.0f);
+  int dashes = 0;
+  for (const PolylineItem& p : v.polylines)
+    if (p.color == kLevelColor) {
+      ++dashes;
+      ASSERT_EQ(p.points.size(), 2u);
+      EXPECT_NEAR(p.points[0].y, m.at(0, 0.97).y, 1e-9) << "on the level's value";
+      EXPECT_NEAR(p.points[1].y, p.points[0].y, 1e-12) << "level";
+    }
+  EXPECT_EQ(dashes, 40) << "one dashed line; the level outside [lo, hi] is left out";
+  int names = 0;
+  bool top_tick = false;
+  const float y = m.pixel(m.at(0, 0.97)).y;
+  for (const TextItem& t : v.texts) {
+    if (t.name == "level_label") {
+      ++names;
+      EXPECT_EQ(t.text, "L\u00b2/2I\u2081");
+      EXPECT_NEAR(t.position_px.y + 0.5f * t.size_px, y, 1e-3) << "centred on its line";
+      EXPECT_LT(t.position_px.x + text_width(t.text, t.size_px), m.pixel(m.at(0, 0.97)).x) << "left of the chart";
+    }
+    top_tick = top_tick || (t.name == "tick" && t.text == "1" && t.position_px.x == 4.0f);  // the value axis's, not time's 1 s
+  }
+  EXPECT_EQ(names, 1);
+  EXPECT_FALSE(top_tick) << "the value tick 1, a line from the level's name, gives way to it";
+}
+
 TEST(Captions, FadeInHoldFadeOut) {
   EXPECT_EQ(fade_alpha(0.9, 1, 3), 0.0f);
   EXPECT_NEAR(fade_alpha(1.2, 1, 3), 0.5f, 1e-6);
@@ -426,6 +460,26 @@ TEST(StripChart, DirectLabelsStayOffThePlayheadAndBordersAtTheEnd) {
     EXPECT_LT(t.position_px.y + 12.0f, bottom_right.y) << t.text;
   }
   EXPECT_EQ(named, 2);
+}
+
+TEST(StripChart, DirectLabelsNearTheEndSitPastTheRightBorderNotAcrossIt) {
+  StripChartInput in;
+  in.times = {0, 1, 2, 3, 3.5};
+  in.series = {{"explicit Euler", {0.1, 0.2, 0.3, 0.4, 0.45}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 4, in.lo = 0, in.hi = 1, in.playhead = 3.5;  // the head less than a name's width from the right border
+  in.direct_labels = true;
+  View v;
+  build_strip_chart(v, in, 600, 200, 12.0f);
+  const ChartMap m(in, 600, 200, 12.0f);
+  const float right = m.pixel(m.at(4, 0)).x;
+  int named = 0;
+  for (const TextItem& t : v.texts) {
+    if (t.name != "series_label") continue;
+    ++named;
+    const float x0 = t.position_px.x, x1 = x0 + text_width(t.text, 12.0f);
+    EXPECT_TRUE(x1 < right || x0 > right) << "\"" << t.text << "\" spans " << x0 << "-" << x1 << " across the border at " << right;
+  }
+  EXPECT_EQ(named, 1);
 }
 
 TEST(StripChart, DirectLabelsKeepTheirOrderWhenACurveDipsForAMoment) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "compose/panel.hpp"
+#include "viz/strip_chart.hpp"
 
 namespace tumble::compose {
 
@@ -23,6 +24,10 @@ std::unique_ptr<Panel> make_poinsot(const PanelContext& ctx, std::size_t index);
 std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only, bool arrows = false);
 /// The key entry of the box outline drawn around a surface (none when no such box is drawn).
 std::optional<viz::KeyEntry> box_key(const PanelContext& ctx);
+
+/// The energies a free body with `b`'s starting |L| can have: L²/2I₁ (a pure e₁ spin, the most), L²/2I₂ (the
+/// separatrix), L²/2I₃ (a pure e₃ spin, the least), as ΔE/E of the start's energy `e0` (J); log10: log10 |ΔE/E|.
+std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, double e0, bool log10);
 
 /// Value of plot series `name` (scene::plot_series_names) for body `m` in state `s`; `e0` = energy at t = 0 (J).
 double series_value(const std::string& name, const RigidBodyModel& m, const BodyState& s, double e0);

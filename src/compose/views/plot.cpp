@@ -84,6 +84,8 @@ class PlotPanel : public Panel {
     lo_ = lo - pad, hi_ = hi + pad;
     if (vc_.y_range) lo_ = (*vc_.y_range)[0], hi_ = (*vc_.y_range)[1];  // the scene's own value axis
     if (vc_.y_range && vc_.y_log) lo_ = std::log10(lo_), hi_ = std::log10(hi_);
+    if (vc_.energy_levels && !runs_.empty())
+      levels_ = energy_levels(ctx.scene.bodies[body_], ctx.runs[runs_[0]].energy0[body_], vc_.y_log);
     if (compare && ctx.scene.render.explain.flip_marks)  // a comparison's flips, marked on the time axis too
       marks_ = scene::body_flip_times(ctx.scene, *ctx.scene.render.explain.flip_marks);
   }
@@ -102,6 +104,7 @@ class PlotPanel : public Panel {
     for (const scene::SlowMotion& sm : ctx_.scene.render.explain.slow_motion)
       if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.marks = marks_;
+    in.levels = levels_;
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
     for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
@@ -129,6 +132,7 @@ class PlotPanel : public Panel {
   std::vector<std::size_t> runs_;  // the runs plotted
   double lo_ = -1, hi_ = 1;
   std::vector<double> marks_;  // s: the flips' times ([draw] flips)
+  std::vector<viz::StripChartInput::Level> levels_;  // energy_levels: L²/2I₁, L²/2I₂, L²/2I₃ as ΔE/E
   glm::vec2 size_{1, 1};
 
   // A series' value at a frame of run r; on a log scale log10 |value| (none at 0).
@@ -148,6 +152,22 @@ double series_value(const std::string& name, const RigidBodyModel& m, const Body
   double v[kMaxComponents];
   o->value(m, s, e0, v);
   return v[i];
+}
+
+// The energies a free body with the start's |L| can have at most and least,
+// and at the separatrix (L²/2I₁, L²/2I₃; L²/2I₂), as ΔE/E of the start's
+// energy E0 (its other terms, translation and potential, kept as they were).
+std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, double e0, bool log10) {
+  static const char* const kNames[3] = {"L\u00b2/2I\u2081", "L\u00b2/2I\u2082", "L\u00b2/2I\u2083"};
+  const Eigen::Vector3d l_body = b.initial.q.conjugate() * b.initial.L;
+  const double rot0 = 0.5 * l_body.cwiseProduct(l_body).dot(b.model.inv_inertia);
+  std::vector<viz::StripChartInput::Level> out;
+  for (int k = 0; k < 3; ++k) {
+    const double v = (0.5 * b.initial.L.squaredNorm() * b.model.inv_inertia[k] - rot0) / std::max(std::abs(e0), 1e-300);
+    if (!log10) out.push_back({v, kNames[k]});
+    else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k]});  // rounding's 0: none
+  }
+  return out;
 }
 
 std::unique_ptr<Panel> make_plot(const PanelContext& ctx, std::size_t index) {

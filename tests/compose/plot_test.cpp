@@ -1,0 +1,48 @@
+// The plot view's energy levels against the exact answer: a body spun about
+// e₂ has the separatrix's energy, L²/2I₂, and a fixed |L| allows at most
+// L²/2I₁ (a pure e₁ spin) and at least L²/2I₃, so the levels, as ΔE/E, are
+// 0, I₂/I₁ − 1 and I₂/I₃ − 1. GL-free.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "compose/views/kinds.hpp"
+#include "core/dynamics.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+using namespace tumble;
+
+constexpr const char* kSpinAboutE2 = R"(name = "levels"
+[simulation]
+method = "exact"
+duration = 1.0
+[[bodies]]
+name = "box"
+shape = { type = "box", size = [0.6, 0.36, 0.15], resolution = [12, 8, 4], mass = 1.0 }
+orientation = [0.9, 0.3, -0.2, 0.1]
+omega_body = [0.0, 5.0, 0.0]
+)";
+
+TEST(PlotLevels, EnergiesAFixedLAllowsForASpinAboutE2) {
+  const scene::Scene s = scene::load_scene_from_string(kSpinAboutE2, "levels.toml");
+  const scene::Body& b = s.bodies[0];
+  const double e0 = total_energy(b.model, b.initial);
+  const Eigen::Vector3d& i = b.model.inertia;
+  const auto levels = compose::energy_levels(b, e0, false);
+  ASSERT_EQ(levels.size(), 3u);
+  EXPECT_NEAR(levels[0].value, i[1] / i[0] - 1, 1e-9) << levels[0].label;
+  EXPECT_NEAR(levels[1].value, 0.0, 1e-9) << levels[1].label;
+  EXPECT_NEAR(levels[2].value, i[1] / i[2] - 1, 1e-9) << levels[2].label;
+  EXPECT_EQ(levels[0].label, "L\u00b2/2I\u2081");
+  EXPECT_EQ(levels[1].label, "L\u00b2/2I\u2082");
+  // On a log scale: log10 |ΔE/E|; the separatrix's 0 (to rounding) has none.
+  const auto logs = compose::energy_levels(b, e0, true);
+  ASSERT_EQ(logs.size(), 2u);
+  EXPECT_NEAR(logs[0].value, std::log10(i[1] / i[0] - 1), 1e-9);
+  EXPECT_NEAR(logs[1].value, std::log10(1 - i[1] / i[2]), 1e-9);
+}
+
+}  // namespace
