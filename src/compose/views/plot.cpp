@@ -105,6 +105,7 @@ class PlotPanel : public Panel {
       if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.marks = marks_;
     in.levels = levels_;
+    in.percent = !vc_.y_log && std::all_of(vc_.series.begin(), vc_.series.end(), [](const std::string& n) { return n == "energy_error"; });
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
     for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
@@ -159,13 +160,15 @@ double series_value(const std::string& name, const RigidBodyModel& m, const Body
 // energy E0 (its other terms, translation and potential, kept as they were).
 std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, double e0, bool log10) {
   static const char* const kNames[3] = {"L\u00b2/2I\u2081", "L\u00b2/2I\u2082", "L\u00b2/2I\u2083"};
+  static const char* const kMeanings[3] = {"pure e\u2081 spin", "separatrix", "pure e\u2083 spin"};
   const Eigen::Vector3d l_body = b.initial.q.conjugate() * b.initial.L;
   const double rot0 = 0.5 * l_body.cwiseProduct(l_body).dot(b.model.inv_inertia);
   std::vector<viz::StripChartInput::Level> out;
   for (int k = 0; k < 3; ++k) {
     const double v = (0.5 * b.initial.L.squaredNorm() * b.model.inv_inertia[k] - rot0) / std::max(std::abs(e0), 1e-300);
-    if (!log10) out.push_back({v, kNames[k]});
-    else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k]});  // rounding's 0: none
+    // Linear: the axis reads ΔE/E in per cent, the line says which energy it is.
+    if (!log10) out.push_back({v, viz::percent_text(v), std::string(kNames[k]) + ": " + kMeanings[k]});
+    else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k], ""});  // rounding's 0: none
   }
   return out;
 }
