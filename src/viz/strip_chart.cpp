@@ -222,19 +222,14 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   }
 }
 
-// Each reference level labelled on the value axis, as a tick is, and named
-// on its line: under it, ending at the chart's right border (the time still
-// to come, where no curve is drawn until the last seconds).
+// Each reference level labelled on the value axis, as a tick is (inside the
+// chart, a name would lie across the curves, the flips' marks and the playhead).
 void add_level_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   for (const StripChartInput::Level& l : in.levels) {
     if (l.value < in.lo || l.value > in.hi) continue;
-    const glm::vec2 at = m.pixel(m.at(in.t1, l.value));
-    view.texts.push_back({l.label, {4.0f, at.y - 0.5f * f}, f, kLevelColor, "level_label"});
-    if (!l.name.empty())
-      view.texts.push_back({l.name, {right_aligned_x(l.name, f, at.x - 0.3f * f), at.y + 0.15f * f}, f, kLevelColor, "level_name"});
+    view.texts.push_back({l.label, {4.0f, m.pixel(m.at(in.t0, l.value)).y - 0.5f * f}, f, kLevelColor, "level_label"});
   }
 }
-
 
 // The time axis: numbers centred under their ticks, the unit once, after the
 // last ("0 … 16 s"), whole steps between where they clear the ends.

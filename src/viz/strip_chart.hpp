@@ -41,12 +41,11 @@ struct StripChartInput {
   bool log10 = false;
   /// Each series named at its curve's head, in its colour (no key row): a few curves told apart at a glance.
   bool direct_labels = false;
-  /// Reference values (the value axis' unit) drawn as dashed lines across the chart, each `label`led on the
-  /// value axis (as a tick is) and `name`d on the line itself, under it at the chart's right end.
+  /// Reference values (the value axis' unit) drawn as dashed lines across the chart, each labelled on the
+  /// value axis, as a tick is (the view's title says what each is).
   struct Level {
     double value;
     std::string label;
-    std::string name;
   };
   std::vector<Level> levels;
   /// A linear value axis of fractions ticked in per cent ("+120 %", "0", "−10 %"): a relative error read as such.

@@ -238,32 +238,6 @@ TEST(StripChart, APercentAxisReadsTheFractionInPerCent) {
   EXPECT_EQ(std::find(values.begin(), values.end(), "1.2"), values.end()) << "no bare fraction";
 }
 
-// A level says what it is on its line: under it, ending at the chart's right
-// border, where the curves arrive last.
-TEST(StripChart, ALevelIsNamedOnItsLineAtTheRightEnd) {
-  StripChartInput in;
-  in.times = {0, 1};
-  in.series = {{"e", {0.0, 0.1}, {1, 0, 0, 1}}};
-  in.t0 = 0, in.t1 = 16, in.lo = -0.3, in.hi = 1.2, in.playhead = 1;
-  in.levels = {{0.86, "+86 %", "L\u00b2/2I\u2081: pure e\u2081 spin"}};
-  const float f = 22.0f;
-  View v;
-  build_strip_chart(v, in, 640, 380, f);
-  const ChartMap m(in, 640, 380, f);
-  const glm::vec2 end = m.pixel(m.at(16, 0.86));
-  int names = 0;
-  for (const TextItem& t : v.texts)
-    if (t.name == "level_name") {
-      ++names;
-      const float right = t.position_px.x + text_width(t.text, f);
-      EXPECT_LE(right, end.x) << "inside the chart";
-      EXPECT_GT(right, end.x - f) << "at its right end";
-      EXPECT_GT(t.position_px.y, end.y) << "under the line, not across it";
-      EXPECT_LT(t.position_px.y, end.y + 0.5f * f) << "close under it";
-    }
-  EXPECT_EQ(names, 1);
-}
-
 // A curve lying on a level (RK4's error on the separatrix's) has its name
 // just above the dashed line, not struck through by it; the names above make way.
 TEST(StripChart, ACurveNameStaysOffALevelsLine) {
@@ -271,7 +245,7 @@ TEST(StripChart, ACurveNameStaysOffALevelsLine) {
   in.times = {0, 1, 2, 3, 4};
   in.series = {{"Euler", {0.0, 0.02, 0.05, 0.08, 0.1}, {1, 0, 0, 1}}, {"RK4", {0, 0, 0, 0, 0}, {0.8f, 0.6f, 0, 1}}};
   in.t0 = 0, in.t1 = 16, in.lo = -0.3, in.hi = 1.2, in.playhead = 4, in.direct_labels = true;
-  in.levels = {{0.0, "0", "separatrix"}};
+  in.levels = {{0.0, "0"}};
   const float f = 22.0f;
   View v;
   build_strip_chart(v, in, 640, 380, f);

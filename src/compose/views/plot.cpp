@@ -160,15 +160,13 @@ double series_value(const std::string& name, const RigidBodyModel& m, const Body
 // energy E0 (its other terms, translation and potential, kept as they were).
 std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, double e0, bool log10) {
   static const char* const kNames[3] = {"L\u00b2/2I\u2081", "L\u00b2/2I\u2082", "L\u00b2/2I\u2083"};
-  static const char* const kMeanings[3] = {"pure e\u2081 spin", "separatrix", "pure e\u2083 spin"};
   const Eigen::Vector3d l_body = b.initial.q.conjugate() * b.initial.L;
   const double rot0 = 0.5 * l_body.cwiseProduct(l_body).dot(b.model.inv_inertia);
   std::vector<viz::StripChartInput::Level> out;
   for (int k = 0; k < 3; ++k) {
     const double v = (0.5 * b.initial.L.squaredNorm() * b.model.inv_inertia[k] - rot0) / std::max(std::abs(e0), 1e-300);
-    // Linear: the axis reads ΔE/E in per cent, the line says which energy it is.
-    if (!log10) out.push_back({v, viz::percent_text(v), std::string(kNames[k]) + ": " + kMeanings[k]});
-    else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k], ""});  // rounding's 0: none
+    if (!log10) out.push_back({v, viz::percent_text(v)});  // linear: the axis reads ΔE/E, in per cent
+    else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k]});  // rounding's 0: none
   }
   return out;
 }
