@@ -84,7 +84,7 @@ TEST(PoinsotViews, BoxViewDrawsLBoldToASphereOutsideTheBox) {
         if (a.name == "L") L = glm::length(a.vector), L_radius = a.radius;
         else thickest_other = std::max(thickest_other, a.radius);
       EXPECT_GT(L, box) << "frame " << k;
-      EXPECT_GT(L_radius, 1.5 * thickest_other) << "frame " << k;
+      EXPECT_GT(L_radius, 1.3 * thickest_other) << "frame " << k;  // the boldest arrow (it was thinner than the axes)
       const auto sphere = std::find_if(v.surfaces.begin(), v.surfaces.end(), [](const auto& s) { return s.name == "L_sphere"; });
       ASSERT_NE(sphere, v.surfaces.end()) << "frame " << k;
       EXPECT_NEAR(glm::length(glm::dvec3(sphere->model[0])), L, 1e-9) << "frame " << k;
