@@ -120,8 +120,8 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
         const double t = in.t0 + (in.t1 - in.t0) * i / 40.0;
         line({m.at(t, l.value), m.at(t + 0.6 * (in.t1 - in.t0) / 40.0, l.value)}, kLevelColor, 2.0f, "");
       }
-  for (double t : in.marks)  // under the curves, in the flip badge's red, thin
-    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.75f, 0.1f, 0.1f, 0.55f}, 1.5f, "mark");
+  for (double t : in.marks)  // under the curves, thin, grey: no method's colour (explicit Euler's is a red)
+    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.35f, 0.36f, 0.40f, 0.6f}, 1.5f, "mark");
   for (const Series& s : in.series) {
     std::vector<glm::dvec3> pts;
     for (std::size_t i = 0; i < in.times.size() && i < s.values.size(); ++i)
