@@ -13,9 +13,9 @@ if [ ! -x "$tumble" ]; then
   echo "explain_frames: $tumble not found; build first: cmake --build --preset release --target tumble" >&2
   exit 1
 fi
-# scene frame docs-name: frame 40 = the title card; 628 = the stop just
-# after the first flip (t = 1.51 s); 878 = t = 2.3 s, Π near −e₂ between the
-# flips; poinsot 1038 = t = 3 s;
+# scene frame docs-name: frame 40 = the title card; 628 = the stop at the
+# first flip (t = 1.34 s, the stem across L); 878 = t = 2.3 s, Π near −e₂
+# between the flips; poinsot 1038 = t = 3 s;
 # tennis_racket 500 = the hold at the middle racket's first flip (t = 0.47 s);
 # dzhanibekov 700 = the demo's hold at flip 2 (t = 5.09 s: ω 28° off L,
 # the two stable spins beside the T); methods_compare 900 = the hold at t = 10 s,

@@ -188,7 +188,7 @@ bool energy_apart(const scene::Scene& s) {
 }  // namespace
 
 viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& L, int sign, double azimuth_deg,
-                          double elevation_deg, double distance, double fov_y_deg) {
+                          double elevation_deg, double distance, double fov_y_deg, double roll_deg) {
   const Eigen::Vector3d l = L.norm() > 0 ? Eigen::Vector3d(sign * L.normalized()) : Eigen::Vector3d::UnitZ();
   Eigen::Vector3d u = -Eigen::Vector3d::UnitY() + l.y() * l;  // the side nearest world −y
   if (u.norm() < 1e-3) u = Eigen::Vector3d::UnitX() - l.x() * l;
@@ -199,7 +199,10 @@ viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& 
   viz::Camera c;
   c.target = to_glm(target);
   c.position = to_glm(target + distance * d);
-  c.up = to_glm(l);
+  // Rolled about the line of sight by `roll_deg`: L turns clockwise in the picture (90: L points right).
+  const Eigen::Vector3d right = (-d).cross(l).normalized();
+  const double roll = roll_deg * M_PI / 180;
+  c.up = to_glm(std::cos(roll) * l - std::sin(roll) * right);
   c.fov_y_deg = fov_y_deg;
   c.near_m = 0.02 * distance;
   c.far_m = 50 * distance;
@@ -220,7 +223,7 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<gl
           reach = std::max(reach, glm::length(p - to_glm(c.target)) + 3 * viz::box_radius(s.bodies[i].model));
     const double half = 0.5 * c.fov_y_deg * M_PI / 180 * std::min(1.0, aspect);
     return across_camera(c.target, b->initial.L, c.across, c.azimuth_deg, c.elevation_deg,
-                         std::max(reach, 1e-3) / std::sin(half), c.fov_y_deg);
+                         std::max(reach, 1e-3) / std::sin(half), c.fov_y_deg, c.roll_deg);
   }
   if (c.automatic) {
     // Frame every body over the whole run (all runs: a failing method may drift).

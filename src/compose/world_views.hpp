@@ -28,9 +28,10 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<gl
 /// A camera looking across `L` at `target` (`sign` +1: L up in the picture,
 /// −1: down): from `azimuth_deg` around L (0: the side nearest world −y) and
 /// `elevation_deg` towards it, `distance` m away. L then lies in (or, with an
-/// elevation, near) the picture plane, as long as the picture is high.
+/// elevation, near) the picture plane, as long as the picture is high;
+/// `roll_deg` turns L clockwise in the picture (90: L points right, along a wide picture).
 viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& L, int sign, double azimuth_deg,
-                          double elevation_deg, double distance, double fov_y_deg);
+                          double elevation_deg, double distance, double fov_y_deg, double roll_deg = 0);
 
 /// The exact solution's body in the other methods' cells of a [compare] grid:
 /// a pale, cool grey, faint, so it reads as "where the body should be" and not

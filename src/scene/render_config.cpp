@@ -57,8 +57,10 @@ void read_camera(TableReader& r, const LoadContext& ctx, Scene& s) {
     if (r.has("auto")) r.error("across", "a camera across L is placed by L; remove 'auto'");
     c.azimuth_deg = r.number("azimuth", Range::closed(-360, 360)).value_or(c.azimuth_deg);
     c.elevation_deg = r.number("elevation", Range::closed(-80, 80)).value_or(c.elevation_deg);
-  } else if (r.has("azimuth") || r.has("elevation")) {
-    r.error(r.has("azimuth") ? "azimuth" : "elevation", "only a camera across L (across = \"L\") takes azimuth and elevation");
+    c.roll_deg = r.number("roll", Range::closed(-180, 180)).value_or(c.roll_deg);
+  } else if (r.has("azimuth") || r.has("elevation") || r.has("roll")) {
+    const char* key = r.has("azimuth") ? "azimuth" : r.has("elevation") ? "elevation" : "roll";
+    r.error(key, "only a camera across L (across = \"L\") takes azimuth, elevation and roll");
   }
   const bool has_position = r.has("position");
   c.automatic = r.boolean("auto").value_or(!has_position);
@@ -251,7 +253,7 @@ void read_output_config(TableReader& root, LoadContext& ctx, Scene& scene) {
 void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
   read_output_config(root, ctx, scene);
   if (auto t = root.subtable("camera")) {
-    TableReader r(*t, "camera", ctx.diag, {"position", "target", "up", "fov_y", "auto", "follow", "across", "azimuth", "elevation"});
+    TableReader r(*t, "camera", ctx.diag, {"position", "target", "up", "fov_y", "auto", "follow", "across", "azimuth", "elevation", "roll"});
     read_camera(r, ctx, scene);
   }
   if (auto t = root.subtable("draw")) {

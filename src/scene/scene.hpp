@@ -84,6 +84,9 @@ struct CameraConfig {
   /// from `azimuth` around L and `elevation` towards it (degrees); 0: not.
   int across = 0;
   double azimuth_deg = 25, elevation_deg = 12;
+  /// With `across`: degrees L is turned clockwise in the picture from up (90: L
+  /// points right, so a long L lies along a wide view).
+  double roll_deg = 0;
 };
 
 /// Lines of the overlay, each switchable (`[draw] overlay = ["time", ...]`).
