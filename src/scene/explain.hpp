@@ -60,7 +60,8 @@ struct ViewCamera {
   /// L at t = 0, L up (down) in the picture plane (scene.hpp, CameraConfig)
   int across = 0;
   /// world views only: as [camera] (m, world; degrees); `up` also a
-  /// momentum_sphere's picture up, in principal axes (default +e₃)
+  /// momentum_sphere's picture up, in principal axes (default +e₃), and a
+  /// body_frame's: its camera then fixed in principal axes (azimuth, elevation as a sphere's)
   std::optional<std::array<double, 3>> position, target, up;
   std::optional<double> fov_y_deg;
 };

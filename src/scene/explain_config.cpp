@@ -121,7 +121,9 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   v.camera.distance = c.number("distance", Range::closed(1.5, 100));
   v.camera.follow = c.boolean("follow");
   if (const auto up = c.vec3("up")) {
-    if (v.kind != ViewKind::momentum_sphere) c.error("up", "only a momentum_sphere view takes up (a principal direction)");
+    if (v.kind != ViewKind::momentum_sphere && v.kind != ViewKind::body_frame)
+      c.error("up", "only a momentum_sphere or body_frame view takes up (a principal direction)");
+    else if (across) c.error("up", "a body_frame camera looks across L or from principal axes (up), not both");
     else if (up->norm() < 1e-12) c.error("up", "expected a non-zero direction");
     else v.camera.up = std::array<double, 3>{up->x(), up->y(), up->z()};
   }

@@ -72,6 +72,13 @@ glm::vec2 ChartMap::pixel(const glm::dvec3& p) const {
   return {static_cast<float>((p.x / aspect_ * 0.5 + 0.5) * w_), static_cast<float>((0.5 - p.y * 0.5) * h_)};
 }
 
+// A fraction in per cent, signed: "+120 %", "0", "−10 %".
+std::string percent_text(double v) {
+  const double p = 100 * v;
+  if (std::abs(p) < 0.5) return "0";
+  return (p > 0 ? "+" : "\u2212") + std::to_string(std::lround(std::abs(p))) + " %";
+}
+
 namespace {
 
 // A time tick's step: 1, 2 or 5 times a power of ten, about six across.
@@ -113,8 +120,8 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
         const double t = in.t0 + (in.t1 - in.t0) * i / 40.0;
         line({m.at(t, l.value), m.at(t + 0.6 * (in.t1 - in.t0) / 40.0, l.value)}, kLevelColor, 2.0f, "");
       }
-  for (double t : in.marks)  // under the curves, in the flip badge's red, thin
-    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.75f, 0.1f, 0.1f, 0.55f}, 1.5f, "mark");
+  for (double t : in.marks)  // under the curves, thin, grey: no method's colour (explicit Euler's is a red)
+    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.35f, 0.36f, 0.40f, 0.6f}, 1.5f, "mark");
   for (const Series& s : in.series) {
     std::vector<glm::dvec3> pts;
     for (std::size_t i = 0; i < in.times.size() && i < s.values.size(); ++i)
@@ -190,8 +197,16 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   // Inside the chart's box: under its top border, over its bottom one.
   const float top = m.pixel(m.at(in.t0, in.hi)).y + 0.15f * f, bottom = m.pixel(m.at(in.t0, in.lo)).y - 1.2f * f;
   for (std::size_t i = 0; i < heads.size(); ++i) {
+    // Off a reference level's dashed line: just above it (a name struck
+    // through reads as crossed out); the names above it then make way upwards.
+    bool on_level = false;
+    for (const StripChartInput::Level& l : in.levels) {
+      const float ly = m.pixel(m.at(in.t0, l.value)).y;
+      if (l.value >= in.lo && l.value <= in.hi && heads[i].y < ly + 0.1f * f && heads[i].y + f > ly - 0.1f * f)
+        heads[i].y = ly - 1.1f * f, on_level = true;
+    }
     heads[i].y = std::clamp(heads[i].y, top, bottom);
-    if (i > 0) heads[i].y = std::max(heads[i].y, heads[i - 1].y + 1.1f * f);
+    if (i > 0 && !on_level) heads[i].y = std::max(heads[i].y, heads[i - 1].y + 1.1f * f);
   }
   if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
   for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
@@ -207,12 +222,31 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   }
 }
 
-// Each reference level named on the value axis, as a tick is (inside the
-// chart, a name would lie across the curves and the flips' marks).
+// Each reference level labelled on the value axis, as a tick is (inside the
+// chart, a name would lie across the curves, the flips' marks and the playhead).
 void add_level_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   for (const StripChartInput::Level& l : in.levels) {
     if (l.value < in.lo || l.value > in.hi) continue;
     view.texts.push_back({l.label, {4.0f, m.pixel(m.at(in.t0, l.value)).y - 0.5f * f}, f, kLevelColor, "level_label"});
+  }
+}
+
+// The time axis: numbers centred under their ticks, the unit once, after the
+// last ("0 … 16 s"), whole steps between where they clear the ends.
+void add_time_ticks(View& view, const StripChartInput& in, const ChartMap& m, float w, float f) {
+  const Color ink = color_of(Meaning::ink);
+  const glm::vec2 bottom_left = m.pixel(m.at(in.t0, in.lo)), bottom_right = m.pixel(m.at(in.t1, in.lo));
+  const float y = bottom_left.y + 0.3f * f;
+  const std::string t0 = format_number(in.t0, 3), t1 = format_number(in.t1, 3) + " s";
+  const float x1 = std::min(centred_x(format_number(in.t1, 3), f, bottom_right.x), w - 0.2f * f - text_width(t1, f));
+  view.texts.push_back({t0, {bottom_left.x, y}, f, ink, "tick"});
+  view.texts.push_back({t1, {x1, y}, f, ink, "tick"});
+  const double step = time_step(in.t1 - in.t0);
+  const float left_end = bottom_left.x + text_width(t0, f) + 0.5f * f, right_end = x1 - 0.5f * f;
+  for (double t = std::ceil(in.t0 / step + 1e-9) * step; t < in.t1 - 1e-9; t += step) {
+    const std::string label = format_number(t, 3);
+    const float x = m.pixel(m.at(t, in.lo)).x, half = 0.5f * text_width(label, f);
+    if (x - half > left_end && x + half < right_end) view.texts.push_back({label, {centred_x(label, f, x), y}, f, ink, "tick"});
   }
 }
 
@@ -226,30 +260,19 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
     if (clear_of_levels(in, m, p.y, f)) text(s, p, c);
   };
   const glm::vec2 top_left = m.pixel(m.at(in.t0, in.hi)), bottom_left = m.pixel(m.at(in.t0, in.lo));
-  const glm::vec2 bottom_right = m.pixel(m.at(in.t1, in.lo));
   if (in.log10) {
     add_decade_ticks(view, in, m, f);
   } else {
-    value_text(format_number(in.hi, 3), {4.0f, top_left.y - 0.5f * f}, ink);
-    value_text(format_number(in.lo, 3), {4.0f, bottom_left.y - 0.5f * f}, ink);
+    auto number = [&](double v) { return in.percent ? percent_text(v) : format_number(v, 3); };
+    value_text(number(in.hi), {4.0f, top_left.y - 0.5f * f}, ink);
+    value_text(number(in.lo), {4.0f, bottom_left.y - 0.5f * f}, ink);
   }
   if (!in.log10 && in.lo < 0 && in.hi > 0) {
     const float y0 = m.pixel(m.at(in.t0, 0)).y - 0.5f * f;
     // Only where it clears the range's ends.
     if (y0 > top_left.y + 0.5f * f && y0 + f < bottom_left.y - 0.5f * f) value_text("0", {4.0f, y0}, ink);
   }
-  const std::string t1 = format_number(in.t1, 3) + " s";
-  text(format_number(in.t0, 3) + " s", {bottom_left.x, bottom_left.y + 0.3f * f}, ink);
-  text(t1, {right_aligned_x(t1, f, bottom_right.x), bottom_left.y + 0.3f * f}, ink);
-  // Whole steps between, where they clear the ends' labels.
-  const double step = time_step(in.t1 - in.t0);
-  const float left_end = bottom_left.x + text_width(format_number(in.t0, 3) + " s", f) + 0.5f * f;
-  const float right_end = right_aligned_x(t1, f, bottom_right.x) - 0.5f * f;
-  for (double t = std::ceil(in.t0 / step + 1e-9) * step; t < in.t1 - 1e-9; t += step) {
-    const std::string label = format_number(t, 3);
-    const float x = m.pixel(m.at(t, in.lo)).x, half = 0.5f * text_width(label, f);
-    if (x - half > left_end && x + half < right_end) text(label, {centred_x(label, f, x), bottom_left.y + 0.3f * f}, ink);
-  }
+  add_time_ticks(view, in, m, w, f);
   float x = w - head.key_w;
   add_level_labels(view, in, m, f);
   if (in.direct_labels) add_head_labels(view, in, m, f);

@@ -41,17 +41,23 @@ struct StripChartInput {
   bool log10 = false;
   /// Each series named at its curve's head, in its colour (no key row): a few curves told apart at a glance.
   bool direct_labels = false;
-  /// Reference values (the value axis' unit) drawn as dashed lines across the chart, each named on the value axis.
+  /// Reference values (the value axis' unit) drawn as dashed lines across the chart, each labelled on the
+  /// value axis, as a tick is (the view's title says what each is).
   struct Level {
     double value;
     std::string label;
   };
   std::vector<Level> levels;
+  /// A linear value axis of fractions ticked in per cent ("+120 %", "0", "−10 %"): a relative error read as such.
+  bool percent = false;
 };
 
 /// Fills `view` (camera included) for a viewport of `width_px` × `height_px`:
 /// the series' key (name in its colour) top-right; ticks at `font_px`.
 void build_strip_chart(View& view, const StripChartInput& in, int width_px, int height_px, float font_px);
+
+/// A fraction in per cent, signed and whole: "+86 %", "0" (under half a per cent), "−10 %".
+std::string percent_text(double fraction);
 
 /// Maps chart coordinates (t, value) to the world plane the chart is drawn in.
 class ChartMap {

@@ -18,7 +18,7 @@ namespace {
 TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
   const tumble::scene::Scene s = tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/poinsot.toml");
   const double fps = s.render.output.fps;
-  // A frame after the world and body_frame views appear (t = 3.4 s): the
+  // A frame after the body_frame view appears (t = 3.4 s): the
   // scene's title card and holds decide which frame that is.
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
   long k = 0;
@@ -39,7 +39,7 @@ TEST(ViewText, OverlayClearsTheViewTitleAndTheNameLabels) {
       }
     }
   }
-  EXPECT_EQ(overlays, 2);  // the two world views (the poinsot views have none)
+  EXPECT_EQ(overlays, 1);  // the body_frame view (the poinsot views have none)
 }
 
 // A stop at a flip reads as a deliberate hold, named: "paused at flip 1", not a bare "paused".

@@ -212,8 +212,9 @@ void keys_cover_no_body_or_momentum_point() {
 // visible body label overlaps a body's box or drawn surface (its extent on
 // screen; its own or another's) in its view, in any frame.
 // No shipped lesson names its bodies beside them now (poinsot's views' titles
-// name its boxes), so poinsot with [draw] labels = true gives the check its
-// labels: two boxes named in the view of both, at 960×540.
+// name its boxes), so poinsot with [draw] labels = true, its body_frame view
+// made a world view, gives the check its labels: two boxes named in the view
+// of both, at 960×540.
 void body_labels_clear_of_bodies() {
   const fs::path poinsot = fs::path(TUMBLE_SOURCE_DIR) / "scenes" / "poinsot.toml";
   std::ifstream in(poinsot);
@@ -223,6 +224,14 @@ void body_labels_clear_of_bodies() {
   const std::size_t at = labelled.find("\nlabels = false");
   ASSERT_NE(at, std::string::npos) << "poinsot.toml's [draw] labels = false";
   labelled.replace(at, 15, "\nlabels = true");
+  // Its box's own view made a view of both boxes in space, where they are named.
+  const std::string own = "kind = \"body_frame\"\nbody = \"tumbling\"\n";
+  const std::size_t view = labelled.find(own);
+  ASSERT_NE(view, std::string::npos) << "poinsot.toml's body_frame view of the tumbling box";
+  labelled.replace(view, own.size(), "kind = \"world\"\n");
+  const std::size_t camera = labelled.find("camera = { up", view);
+  ASSERT_NE(camera, std::string::npos) << "poinsot.toml's body_frame camera";
+  labelled.erase(camera, labelled.find('\n', camera) - camera);
   std::map<std::string, std::map<int, Layouts>> scenes = all_layouts();
   scenes["poinsot, labels = true"] = layouts_of(
       tumble::scene::load_scene_from_string(labelled, "poinsot.toml, labels = true", poinsot.parent_path()), {kSizes[1]});

@@ -10,6 +10,7 @@
 #include "compose/views/kinds.hpp"
 #include "core/dynamics.hpp"
 #include "scene/scene.hpp"
+#include "viz/strip_chart.hpp"
 
 namespace {
 
@@ -36,13 +37,17 @@ TEST(PlotLevels, EnergiesAFixedLAllowsForASpinAboutE2) {
   EXPECT_NEAR(levels[0].value, i[1] / i[0] - 1, 1e-9) << levels[0].label;
   EXPECT_NEAR(levels[1].value, 0.0, 1e-9) << levels[1].label;
   EXPECT_NEAR(levels[2].value, i[1] / i[2] - 1, 1e-9) << levels[2].label;
-  EXPECT_EQ(levels[0].label, "L\u00b2/2I\u2081");
-  EXPECT_EQ(levels[1].label, "L\u00b2/2I\u2082");
+  // A linear axis reads ΔE/E: each level labelled in per cent (the view's title names them).
+  EXPECT_EQ(levels[0].label, viz::percent_text(i[1] / i[0] - 1));
+  EXPECT_EQ(levels[1].label, "0");
+  EXPECT_EQ(levels[2].label.rfind("\u2212", 0), 0u) << "below the start's energy: " << levels[2].label;
   // On a log scale: log10 |ΔE/E|; the separatrix's 0 (to rounding) has none.
   const auto logs = compose::energy_levels(b, e0, true);
   ASSERT_EQ(logs.size(), 2u);
   EXPECT_NEAR(logs[0].value, std::log10(i[1] / i[0] - 1), 1e-9);
   EXPECT_NEAR(logs[1].value, std::log10(1 - i[1] / i[2]), 1e-9);
+  EXPECT_EQ(logs[0].label, "L\u00b2/2I\u2081");
+  EXPECT_EQ(logs[1].label, "L\u00b2/2I\u2083");
 }
 
 }  // namespace

@@ -1,8 +1,11 @@
 // poinsot.toml's views, checked on the draw list (no GL): the Poinsot views
-// and the view of the bodies in space look from one direction (so e₁ points
-// the same way in an ellipsoid and in its box), and the body-fixed view draws
-// the path of L's tip, ending at L's tip, with no name on its still body.
+// look from one direction, and the body-fixed view stands in the box's axes
+// (e₂ across), draws L bold to a sphere round the box and the path of L's
+// tip on it, ending at L's tip, with no name on its still body.
+#include <algorithm>
 #include <filesystem>
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +15,7 @@
 #include "scene/frame_runs.hpp"
 #include "scene/scene.hpp"
 #include "viz/draw_list.hpp"
+#include "viz/scene_view.hpp"
 #include "viz/text_layout.hpp"
 
 namespace {
@@ -28,22 +32,64 @@ struct Lesson {
 
 glm::dvec3 eye(const tumble::viz::Camera& c) { return glm::normalize(c.position - c.target); }
 
-TEST(PoinsotViews, EllipsoidsAndBoxesAreSeenFromOneDirection) {
+TEST(PoinsotViews, EllipsoidsAreSeenFromOneDirection) {
   const Lesson l;
   const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
   for (const long k : {200L, 700L, 1500L}) {
-    std::vector<tumble::viz::Camera> poinsot, world;
-    for (const tumble::viz::View& v : fb.build(k).views) {
+    std::vector<tumble::viz::Camera> poinsot;
+    for (const tumble::viz::View& v : fb.build(k).views)
       if (v.name == "poinsot") poinsot.push_back(v.camera);
-      if (v.name == "world") world.push_back(v.camera);
-    }
     ASSERT_EQ(poinsot.size(), 2u);
-    ASSERT_EQ(world.size(), 1u);
-    for (const tumble::viz::Camera& c : poinsot) {
-      EXPECT_GT(glm::dot(eye(c), eye(world[0])), 0.9999) << "frame " << k;
-      EXPECT_GT(glm::dot(glm::normalize(c.up), glm::normalize(world[0].up)), 0.9999) << "frame " << k;
-    }
+    EXPECT_GT(glm::dot(eye(poinsot[0]), eye(poinsot[1])), 0.9999) << "frame " << k;
+    EXPECT_GT(glm::dot(glm::normalize(poinsot[0].up), glm::normalize(poinsot[1].up)), 0.9999) << "frame " << k;
   }
+}
+
+// The tumbling box's own view stands as the box's principal axes do: +e₂
+// across the picture (left to right), e₃ up, so L swings from one side to
+// the other at a flip instead of pointing up at both ends of its swing (the
+// old camera, across −L at t = 0, had −e₂ and +e₃ both up: dot(right, e₂) ≈ 0).
+TEST(PoinsotViews, BoxViewHasE2AcrossAndE3Up) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  const std::size_t body = 1;  // "tumbling"
+  ASSERT_EQ(l.scene.bodies[body].name, "tumbling");
+  int seen = 0;
+  for (const long k : {100L, 700L, 1300L, l.frames - 1})
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name != "body_frame") continue;
+      const Eigen::Quaterniond q = l.runs[0].frames[static_cast<std::size_t>(k)][body].q;  // world ← principal
+      const glm::dvec3 e2 = tumble::viz::to_glm(q * Eigen::Vector3d::UnitY()), e3 = tumble::viz::to_glm(q * Eigen::Vector3d::UnitZ());
+      const glm::dvec3 ahead = glm::normalize(v.camera.target - v.camera.position);
+      const glm::dvec3 right = glm::normalize(glm::cross(ahead, v.camera.up));
+      const glm::dvec3 up = glm::cross(right, ahead);
+      EXPECT_GT(glm::dot(right, e2), 0.95) << "frame " << k;  // within 18° of across
+      EXPECT_GT(glm::dot(up, e3), 0.5) << "frame " << k;
+      ++seen;
+    }
+  EXPECT_EQ(seen, 4);
+}
+
+// L is drawn bold from the box's centre out past the box, to a faint sphere
+// (its radius is L's length), so its path lies on that sphere, outside the box.
+TEST(PoinsotViews, BoxViewDrawsLBoldToASphereOutsideTheBox) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  const double box = tumble::viz::box_radius(l.scene.bodies[1].model);
+  for (const long k : {200L, 1000L})
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name != "body_frame") continue;
+      double L = 0, L_radius = 0, thickest_other = 0;
+      for (const tumble::viz::ArrowItem& a : v.arrows)
+        if (a.name == "L") L = glm::length(a.vector), L_radius = a.radius;
+        else thickest_other = std::max(thickest_other, a.radius);
+      EXPECT_GT(L, box) << "frame " << k;
+      EXPECT_GT(L_radius, 1.3 * thickest_other) << "frame " << k;  // the boldest arrow (it was thinner than the axes)
+      const auto sphere = std::find_if(v.surfaces.begin(), v.surfaces.end(), [](const auto& s) { return s.name == "L_sphere"; });
+      ASSERT_NE(sphere, v.surfaces.end()) << "frame " << k;
+      EXPECT_NEAR(glm::length(glm::dvec3(sphere->model[0])), L, 1e-9) << "frame " << k;
+      EXPECT_LT(sphere->color.a, 0.25f) << "faint, frame " << k;
+    }
 }
 
 TEST(PoinsotViews, BodyFixedViewTracesLsTipAndNamesNoStillBody) {
@@ -64,27 +110,6 @@ TEST(PoinsotViews, BodyFixedViewTracesLsTipAndNamesNoStillBody) {
         EXPECT_NEAR(glm::length(p - L->origin), glm::length(L->vector), 1e-9) << "frame " << k;
     }
   EXPECT_GT(trails, 10);
-}
-
-// The boxes in space are small: their arrows are drawn 2.5 times as thick as
-// the body-fixed view's (the same arrows, unscaled), and named by the key,
-// not at their tips (bunched names there collided and flickered).
-TEST(PoinsotViews, BoxesInSpaceHaveThickUnnamedArrows) {
-  const Lesson l;
-  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
-  for (const long k : {200L, 1000L}) {
-    double world_e2 = 0, body_e2 = 0;
-    for (const tumble::viz::View& v : fb.build(k).views) {
-      if (v.name == "world") {
-        for (const tumble::viz::TextItem& t : v.texts) EXPECT_NE(t.name.rfind("tip:", 0), 0u) << t.name << " at " << k;
-        for (const tumble::viz::ArrowItem& a : v.arrows) world_e2 = a.name == "e2" ? a.radius : world_e2;  // the right box's, last
-      }
-      if (v.name == "body_frame")
-        for (const tumble::viz::ArrowItem& a : v.arrows) body_e2 = a.name == "e2" ? a.radius : body_e2;
-    }
-    EXPECT_NEAR(world_e2, 2.5 * body_e2, 1e-12) << "frame " << k;
-    EXPECT_GT(body_e2, 0) << "frame " << k;
-  }
 }
 
 // Where a world point lands in the view's pixels (its content rectangle's camera).

@@ -144,6 +144,13 @@ kind = "plot"
   EXPECT_NE(error_of("[[views]]\nkind = \"poinsot\"\ncamera = { elevation = 95 }\n").find("elevation"),
             std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"body_frame\"\ncamera = { zoom = 2 }\n").find("zoom"), std::string::npos);
+  // A body_frame camera fixed in principal axes (up), or across L, not both; a poinsot view takes no up.
+  const auto bf = load("[[views]]\nkind = \"body_frame\"\ncamera = { up = [0, 0, 1], azimuth = 15, elevation = 25 }\n").render.explain.views;
+  ASSERT_EQ(bf.size(), 1u);
+  EXPECT_EQ(bf[0].camera.up, (std::array<double, 3>{0, 0, 1}));
+  EXPECT_NE(error_of("[[views]]\nkind = \"body_frame\"\ncamera = { up = [0, 0, 1], across = \"-L\" }\n").find("not both"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"poinsot\"\ncamera = { up = [0, 0, 1] }\n").find("up"), std::string::npos);
   // A world view draws its arrows thicker (line_scale) and may leave their names to the key (tip_names).
   const auto w = load("[[views]]\nkind = \"world\"\nline_scale = 2.5\ntip_names = false\n").render.explain.views;
   ASSERT_EQ(w.size(), 1u);

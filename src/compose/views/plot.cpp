@@ -105,6 +105,7 @@ class PlotPanel : public Panel {
       if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.marks = marks_;
     in.levels = levels_;
+    in.percent = !vc_.y_log && std::all_of(vc_.series.begin(), vc_.series.end(), [](const std::string& n) { return n == "energy_error"; });
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
     for (long j = 0; j <= k; ++j) in.times.push_back(clock.time(j));
@@ -164,7 +165,7 @@ std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, dou
   std::vector<viz::StripChartInput::Level> out;
   for (int k = 0; k < 3; ++k) {
     const double v = (0.5 * b.initial.L.squaredNorm() * b.model.inv_inertia[k] - rot0) / std::max(std::abs(e0), 1e-300);
-    if (!log10) out.push_back({v, kNames[k]});
+    if (!log10) out.push_back({v, viz::percent_text(v)});  // linear: the axis reads ΔE/E, in per cent
     else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k]});  // rounding's 0: none
   }
   return out;
