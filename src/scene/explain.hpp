@@ -76,6 +76,9 @@ struct ViewConfig {
   std::string title;                ///< drawn in the view's corner
   ViewCamera camera;
   bool energy_ellipsoid = true;     ///< momentum_sphere: the energy ellipsoid (when it fits)
+  double ellipsoid_from = 0;        ///< momentum_sphere: simulated s from which the ellipsoid fades in (1 s of video)
+  std::optional<double> ellipsoid_opacity;  ///< momentum_sphere: the ellipsoid's opacity; none = the figure's veil
+  bool level_arrows = true;         ///< momentum_sphere: the other levels' direction arrows (false: a small sphere's, unseen)
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
   double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)

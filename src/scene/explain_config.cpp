@@ -210,7 +210,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
-                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels"});
+                   "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -242,6 +243,15 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     const std::size_t body = v.body.empty() || !s.find_body(v.body) ? 0 : static_cast<std::size_t>(s.find_body(v.body) - s.bodies.data());
     // A view that would appear past the run's end (a shorter --duration) never does.
     v.appear = read_time(r, "appear", s, body, &v.appear_text).value_or(r.has("appear") ? 1e300 : 0);
+    if (r.has("ellipsoid_from") && v.kind != ViewKind::momentum_sphere)
+      r.error("ellipsoid_from", "only a momentum_sphere view draws an energy ellipsoid");
+    v.ellipsoid_from = read_time(r, "ellipsoid_from", s, body).value_or(r.has("ellipsoid_from") ? 1e300 : 0);
+    if (r.has("ellipsoid_opacity") && v.kind != ViewKind::momentum_sphere)
+      r.error("ellipsoid_opacity", "only a momentum_sphere view draws an energy ellipsoid");
+    v.ellipsoid_opacity = r.number("ellipsoid_opacity", Range::closed(0.05, 1));
+    if (r.has("level_arrows") && v.kind != ViewKind::momentum_sphere)
+      r.error("level_arrows", "only a momentum_sphere view draws level curves");
+    v.level_arrows = r.boolean("level_arrows").value_or(true);
     read_turn(r, ctx, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }

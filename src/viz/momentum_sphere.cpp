@@ -82,7 +82,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
-  out.push_back(key_entry(Meaning::other_levels, "other energies (arrow: direction)"));
+  out.push_back(key_entry(Meaning::other_levels, in.level_arrows ? "other energies (arrow: direction)" : "other energies"));
   return out;
 }
 
@@ -159,7 +159,10 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
     return;
   }
-  if (draws_energy_ellipsoid(in)) view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
+  if (draws_energy_ellipsoid(in) && in.ellipsoid_alpha > 0) {
+    view.surfaces.push_back(energy_ellipsoid(I, L, in.two_E));
+    view.surfaces.back().color.a = in.ellipsoid_alpha;
+  }
   auto scaled = [&](const std::vector<Eigen::Vector3d>& curve) {
     std::vector<glm::dvec3> out;
     for (const Eigen::Vector3d& x : curve) out.push_back(to_glm(x / L));
@@ -178,7 +181,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
     for (const auto& c : polhodes(I, L, two_E, 96)) {
       view.polylines.push_back({scaled(c), color_of(Meaning::other_levels, 0.55f), 1.2f * w, false});
-      add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
+      if (in.level_arrows) add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
     }
   }
   // Everything from here on shows through the ball, faintly, where it is behind it.

@@ -30,6 +30,11 @@ std::vector<std::vector<Eigen::Vector3d>> separatrix(const Eigen::Vector3d& iner
 /// separatrix itself. Principal frame, `n` points (first = last).
 std::vector<Eigen::Vector3d> own_polhode(const Eigen::Vector3d& inertia, const Eigen::Vector3d& pi, int n);
 
+/// The energy ellipsoid is drawn only if its largest semi-axis is within this many |L|.
+inline constexpr double kEnergyEllipsoidReach = 1.3;
+/// Its opacity: a veil over the sphere, in its own colour.
+inline constexpr float kEnergyEllipsoidAlpha = 0.28f;
+
 /// What the momentum-sphere view draws for one body.
 struct MomentumSphereInput {
   Eigen::Vector3d inertia;                  ///< principal moments, ascending, kg·m²
@@ -39,6 +44,7 @@ struct MomentumSphereInput {
   SpherePose pose = {};                     ///< the camera's followed direction now (follow_track)
   SphereCameraSettings camera = {};
   bool energy_ellipsoid = true;             ///< the translucent energy ellipsoid (it meets the sphere on the polhode), when it fits
+  float ellipsoid_alpha = kEnergyEllipsoidAlpha;  ///< its opacity (0: not drawn, e.g. before it fades in)
   float width_px = 640, height_px = 360;    ///< the viewport
   /// > 0: the camera's field of view shows a ball of this radius (|L|) whole in the viewport.
   double fit_radius = 0;
@@ -47,12 +53,8 @@ struct MomentumSphereInput {
   bool trail = false;                       ///< Π's path drawn as `history` (from t = 0), not its whole polhode
   float line_scale = 1;                     ///< the curves' widths and Π's dot, times this
   int levels = 10;                          ///< other energies: the levels between L²/I3 and L²/I1 in this many steps
+  bool level_arrows = true;                 ///< each other level's direction arrow (and the key's promise of it)
 };
-
-/// The energy ellipsoid is drawn only if its largest semi-axis is within this many |L|.
-inline constexpr double kEnergyEllipsoidReach = 1.3;
-/// Its opacity: a veil over the sphere, in its own colour.
-inline constexpr float kEnergyEllipsoidAlpha = 0.28f;
 
 /// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the
 /// sphere has radius 1), principal frame: only its parts outside the sphere

@@ -49,7 +49,7 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
   long k = 0;
-  // The intro stops (t = 0, 0.155, 0.345 s) come before flip 1 (t = 0.47 s): the first hold past 0.4 s is flip 1's.
+  // The intro stops (t = 0 and 0.135 s) come before flip 1 (t = 0.47 s): the first hold past 0.4 s is flip 1's.
   while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 0.4)) ++k;
   ASSERT_TRUE(clock.in_hold(k));
   long last = k;  // the hold's last frame: still named, however long the hold

@@ -132,6 +132,24 @@ TEST(Reveal, AViewAppearsAtItsAnchoredTime) {
             std::string::npos);
 }
 
+TEST(Reveal, AnEnergyEllipsoidFadesInFromItsAnchoredTime) {
+  const Scene s = load("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_from = \"flip 1 + 0.5\"\n");
+  ASSERT_EQ(s.render.explain.views.size(), 2u);
+  EXPECT_EQ(s.render.explain.views[0].ellipsoid_from, 0);
+  EXPECT_GT(s.render.explain.views[1].ellipsoid_from, 1.5);  // flip 1 near 1.45 s, plus 0.5
+  EXPECT_LT(s.render.explain.views[1].ellipsoid_from, 2.5);
+  EXPECT_FALSE(s.render.explain.views[1].ellipsoid_opacity);
+  EXPECT_TRUE(s.render.explain.views[1].level_arrows);
+  EXPECT_FALSE(load("[[views]]\nkind = \"momentum_sphere\"\nlevel_arrows = false\n").render.explain.views[1].level_arrows);
+  EXPECT_NE(error_of("level_arrows = false\n").find("only a momentum_sphere view draws level curves"), std::string::npos);
+  EXPECT_EQ(*load("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_opacity = 0.6\n").render.explain.views[1].ellipsoid_opacity, 0.6);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_opacity = 2\n").find("views[1].ellipsoid_opacity"),
+            std::string::npos);
+  EXPECT_NE(error_of("ellipsoid_from = 1\n").find("only a momentum_sphere view draws an energy ellipsoid"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_from = \"soon\"\n").find("story.toml:14:18: error: views[1].ellipsoid_from"),
+            std::string::npos);
+}
+
 TEST(StorySettings, DisplayNamesMayHaveSpacesIdentifiersMayNot) {
   std::string text = kBase;
   const std::string anchor = "name = \"t_handle\"\n";

@@ -2,6 +2,7 @@
 // smooth where they pass the saddles, arrows point the way Π moves, each axis
 // is labelled at an end that can be seen from any camera, the saddles are
 // marked, and what lies behind the ball shows through it faintly (the separatrix's far half not at all).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -219,6 +220,57 @@ TEST(SphereFigure, EnergyEllipsoidHasItsOwnColourAndCanBeTurnedOff) {
   build_momentum_sphere(off, in);
   EXPECT_TRUE(off.surfaces.empty());
   for (const KeyEntry& e : sphere_key(in)) EXPECT_EQ(e.text.find("energy ellipsoid"), std::string::npos);
+}
+
+// A lesson reveals the energy ellipsoid when its caption explains it: faded in,
+// drawn at the opacity asked (none at 0), in its own colour.
+TEST(SphereFigure, TheEnergyEllipsoidIsDrawnAtTheOpacityAsked) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  EXPECT_FLOAT_EQ(in.ellipsoid_alpha, kEnergyEllipsoidAlpha);  // the veil unless asked
+  in.ellipsoid_alpha = 0;
+  View none;
+  build_momentum_sphere(none, in);
+  EXPECT_TRUE(none.surfaces.empty());
+  in.ellipsoid_alpha = 0.3f;
+  View half;
+  build_momentum_sphere(half, in);
+  ASSERT_EQ(half.surfaces.size(), 1u);
+  EXPECT_FLOAT_EQ(half.surfaces[0].color.a, 0.3f);
+  EXPECT_EQ(glm::vec3(half.surfaces[0].color), glm::vec3(color_of(Meaning::energy_ellipsoid)));
+  in.ellipsoid_alpha = 0.7f;
+  View whole;
+  build_momentum_sphere(whole, in);
+  ASSERT_EQ(whole.surfaces.size(), 1u);
+  EXPECT_FLOAT_EQ(whole.surfaces[0].color.a, 0.7f);
+}
+
+// A small sphere's grey arrows are too small to see: without them the key no longer promises them.
+TEST(SphereFigure, WithoutLevelArrowsNoneIsDrawnOrPromised) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  auto grey_arrows = [](const View& v) {
+    return std::count_if(v.arrows.begin(), v.arrows.end(), [](const ArrowItem& a) {
+      return glm::vec3(a.color) == glm::vec3(color_of(Meaning::other_levels));
+    });
+  };
+  auto promised = [&] {
+    for (const KeyEntry& e : sphere_key(in))
+      if (e.text.find("arrow") != std::string::npos) return true;
+    return false;
+  };
+  View with;
+  build_momentum_sphere(with, in);
+  EXPECT_GT(grey_arrows(with), 0);
+  EXPECT_TRUE(promised());
+  in.level_arrows = false;
+  View without;
+  build_momentum_sphere(without, in);
+  EXPECT_EQ(grey_arrows(without), 0);
+  EXPECT_FALSE(promised());
+  EXPECT_GT(without.polylines.size(), 10u);  // the grey levels themselves stay
 }
 
 // A lesson's sphere: Π's path so far (history) instead of its whole polhode,

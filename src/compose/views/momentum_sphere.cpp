@@ -75,6 +75,7 @@ class SpherePanel : public Panel {
       if (run.path_t[j] >= since) in.history.push_back(momentum_body(run.path[j][body_]));
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
     turn(k, in.camera);
+    in.ellipsoid_alpha = static_cast<float>(ctx_.scene.render.explain.views[index_].ellipsoid_opacity.value_or(viz::kEnergyEllipsoidAlpha)) * fade_in(k);
     viz::build_momentum_sphere(v, in);
     return v;
   }
@@ -90,6 +91,16 @@ class SpherePanel : public Panel {
     const double s = u * u * (3 - 2 * u);  // smoothstep: no jerk at either end
     c.azimuth_deg += s * (t->azimuth_deg - c.azimuth_deg);
     c.elevation_deg += s * (t->elevation_deg - c.elevation_deg);
+  }
+
+  // The energy ellipsoid (the view's `ellipsoid_from`): faded in over a second of
+  // video from the first frame showing that simulated time, so the eye sees it come;
+  // its opacity the view's `ellipsoid_opacity` (a lesson's thin caps need more than the veil).
+  float fade_in(long k) const {
+    const double from = ctx_.scene.render.explain.views[index_].ellipsoid_from;
+    if (from <= 0) return 1;
+    const scene::FrameClock& clock = ctx_.world.clock();
+    return static_cast<float>(std::clamp(static_cast<double>(k) / clock.fps() - clock.video_time(from), 0.0, 1.0));
   }
 
   viz::MomentumSphereInput input(long kk) const {
@@ -110,6 +121,7 @@ class SpherePanel : public Panel {
     in.trail = view.path_trail;
     in.line_scale = static_cast<float>(view.line_scale);
     in.levels = view.levels;
+    in.level_arrows = view.level_arrows;
     return in;
   }
 
