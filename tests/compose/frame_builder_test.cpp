@@ -78,6 +78,28 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   }));
 }
 
+// Frame k's first text holding `what`, from `what` on ("" where none does).
+std::string text_from(const tumble::compose::FrameBuilder& fb, long k, const std::string& what) {
+  for (const tumble::viz::View& v : fb.build(k).views)
+    for (const tumble::viz::TextItem& t : v.texts)
+      if (const auto at = t.text.find(what); at != std::string::npos) return t.text.substr(at);
+  return std::string();
+}
+
+// The first frame whose simulated time reaches `t` (the last frame if none does).
+long frame_at(const tumble::scene::FrameClock& clock, double t) {
+  long k = 0;
+  while (k + 1 < clock.count() && clock.time(k) < t) ++k;
+  return k;
+}
+
+// The first frame up to `last` that shows `what` (the first after the title card).
+long first_showing(const tumble::compose::FrameBuilder& fb, long last, const std::string& what) {
+  long k = 0;
+  while (k < last && text_from(fb, k, what).empty()) ++k;
+  return k;
+}
+
 // The demo's readout: E and |L| read the same at the start and mid-flip-1
 // (a free body keeps both), |ω| and the angle between ω and L do not; the
 // start's values are the exact ones, E = ½ ω·Iω, |L| = |Iω| and ∠(ω, Iω) =
@@ -89,18 +111,12 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   ASSERT_TRUE(s.render.draw.overlay_items.state);
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
-  long k0 = 0, k1 = 0;
-  while (k1 + 1 < clock.count() && clock.time(k1) < 1.80) ++k1;
+  const long k1 = frame_at(clock, 1.80);
   const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
   // The readout's two lines: what stays fixed, what changes.
-  auto readout = [&](long k, const std::string& what) {
-    for (const tumble::viz::View& v : fb.build(k).views)
-      for (const tumble::viz::TextItem& t : v.texts)
-        if (t.text.find(what) != std::string::npos) return t.text.substr(t.text.find(what));
-    return std::string();
-  };
-  while (k0 < k1 && readout(k0, "E = ").empty()) ++k0;  // the first frame after the title card
+  auto readout = [&](long k, const std::string& what) { return text_from(fb, k, what); };
+  const long k0 = first_showing(fb, k1, "E = ");
   ASSERT_LT(clock.time(k0), 0.05);
   EXPECT_EQ(readout(k0, "E = "), "E = 1.17 J   |L| = 0.293 kg\u00b7m\u00b2/s");
   EXPECT_EQ(readout(k0, "|\u03c9| = "), "|\u03c9| = 8.00 rad/s   \u2220(\u03c9, L) = 0.1\u00b0");
@@ -141,17 +157,11 @@ TEST(Overlay, AngleReadoutShowsOmegaLeavingL) {
   ASSERT_TRUE(s.render.draw.overlay_items.angle);
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
-  long k0 = 0, k1 = 0;
-  while (k1 + 1 < clock.count() && clock.time(k1) < 1.40) ++k1;  // flip 1 is at 1.34 s (tumble info)
+  const long k1 = frame_at(clock, 1.40);  // flip 1 is at 1.34 s (tumble info)
   const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
-  auto readout = [&](long k) {
-    for (const tumble::viz::View& v : fb.build(k).views)
-      for (const tumble::viz::TextItem& t : v.texts)
-        if (const auto at = t.text.find("\u2220(\u03c9, L) = "); at != std::string::npos) return t.text.substr(at);
-    return std::string();
-  };
-  while (k0 < k1 && readout(k0).empty()) ++k0;  // the first frame after the title card
+  auto readout = [&](long k) { return text_from(fb, k, "\u2220(\u03c9, L) = "); };
+  const long k0 = first_showing(fb, k1, "\u2220(\u03c9, L) = ");
   ASSERT_LT(clock.time(k0), 0.01);
   const Eigen::Vector3d w(0.5, 8.0, 0.35), L = s.bodies[0].model.inertia.cwiseProduct(w);
   const double deg = std::acos(w.dot(L) / (w.norm() * L.norm())) * 180 / std::numbers::pi;
