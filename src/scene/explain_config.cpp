@@ -205,13 +205,38 @@ void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t bod
   v.turn = turn;
 }
 
+// A momentum_sphere's `build_up = { at, seconds = [sphere, ellipsoid, curves, separatrix] }` (video s).
+void read_build_up(TableReader& r, const Scene& s, std::size_t body, ViewConfig& v) {
+  const toml::table* t = r.subtable("build_up");
+  if (!t) return;
+  if (v.kind != ViewKind::momentum_sphere) return r.error("build_up", "only a momentum_sphere view builds up its figure");
+  TableReader c(*t, r.key_path("build_up"), r.diag(), {"at", "seconds"});
+  const char* steps = "4 video s, one a step: [sphere, ellipsoid, curves, separatrix]";
+  const auto at = read_time(c, "at", s, body);
+  if (!c.has("at")) c.error("at", std::string("missing; a build-up needs at (simulated s) and seconds = ") + steps);
+  const toml::array* a = c.node("seconds") ? c.node("seconds")->as_array() : nullptr;
+  if (!a || a->size() != 4)
+    return c.error("seconds", std::string(c.has("seconds") ? "expected " : "missing; expected ") + steps +
+                                  (c.has("seconds") ? ", found " + describe(*c.node("seconds")) : ""));
+  ViewConfig::BuildUp b;
+  bool ok = at.has_value();
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto x = read_number(*a->get(i), c.key_path("seconds") + "[" + std::to_string(i) + "]", Range::closed(0.1, 600), c.diag());
+    ok = ok && x;
+    if (x) b.seconds[i] = *x;
+  }
+  if (!ok) return;
+  b.at = *at;
+  v.build_up = b;
+}
+
 void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -253,6 +278,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
       r.error("level_arrows", "only a momentum_sphere view draws level curves");
     v.level_arrows = r.boolean("level_arrows").value_or(true);
     read_turn(r, ctx, s, body, v);
+    read_build_up(r, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }
   // A comparison lays out its own grid of cells; plots of its runs may go beside it.
@@ -310,17 +336,26 @@ std::optional<double> read_time(TableReader& r, std::string_view key, const Scen
   return std::clamp(flips[static_cast<std::size_t>(e->flip - 1)] + e->offset, 0.0, duration);
 }
 
+// A caption's `after` and `seconds` (video s): shown in turn within a hold; `seconds` replaces `end`.
+void read_caption_video_times(TableReader& r, Caption& c) {
+  c.after = r.number("after", Range::closed(0, 3600)).value_or(0);
+  c.seconds = r.number("seconds", Range::closed(0.1, 3600)).value_or(0);
+  if (r.has("seconds") && r.has("end"))
+    r.error("seconds", "a caption ends at `end` (simulated s) or after `seconds` (video s), not both");
+}
+
 void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("captions");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body", "position"});
+    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body", "position", "after", "seconds"});
     Caption c;
     c.body = read_body_index(r, ctx, s);
     const auto start = read_time(r, "start", s, c.body, &c.start_text);
     if (!start && r.has("start")) continue;  // said why: past the run's end, or an error
     c.start = start.value_or(0);
-    c.end = read_time(r, "end", s, c.body, &c.end_text).value_or(s.simulation.duration);
-    if (c.end <= c.start && ctx.diag.ok())
+    read_caption_video_times(r, c);
+    c.end = c.seconds > 0 ? c.start : read_time(r, "end", s, c.body, &c.end_text).value_or(s.simulation.duration);
+    if (c.seconds <= 0 && c.end <= c.start && ctx.diag.ok())
       r.error("end", "expected end > start (simulated s); found start " + format_number(c.start) + " s, end " +
                          format_number(c.end) + " s");
     auto text = r.string("text");
