@@ -132,6 +132,21 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
 std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
                                 std::string* written = nullptr);
 
+// A world view's own trail_axes (as [draw] trail_axes, for this view) and box (false: no principal-box outline).
+void read_world_look(TableReader& r, ViewConfig& v) {
+  for (std::string_view key : {"trail_axes", "box"})
+    if (r.has(key) && v.kind != ViewKind::world) r.error(key, "only a world view takes " + std::string(key));
+  v.box = r.boolean("box").value_or(true);
+  const auto axes = r.strings("trail_axes");
+  if (!axes) return;
+  std::array<bool, 3> on = {false, false, false};
+  for (const std::string& a : *axes) {
+    if (a == "e1" || a == "e2" || a == "e3") on[static_cast<std::size_t>(a[1] - '1')] = true;
+    else r.error("trail_axes", "expected items from \"e1\", \"e2\", \"e3\", found " + quote_token(a));
+  }
+  v.trail_axes = on;
+}
+
 // A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels; a world view's line_scale and tip_names.
 void read_sphere_options(TableReader& r, ViewConfig& v) {
   for (std::string_view key : {"energy_ellipsoid", "path", "levels"})
@@ -141,6 +156,7 @@ void read_sphere_options(TableReader& r, ViewConfig& v) {
   if (r.has("tip_names") && v.kind != ViewKind::world) r.error("tip_names", "only a world view takes tip_names");
   v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
   v.tip_names = r.boolean("tip_names").value_or(true);
+  read_world_look(r, v);
   if (v.kind != ViewKind::momentum_sphere) return;
   v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
   if (const auto path = r.string("path")) {
@@ -211,7 +227,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "trail_axes", "box"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -255,12 +271,13 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     read_turn(r, ctx, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }
-  // A comparison lays out its own grid of cells; plots of its runs may go beside it.
-  const bool only_plots = std::all_of(s.render.explain.views.begin(), s.render.explain.views.end(),
-                                      [](const ViewConfig& v) { return v.kind == ViewKind::plot && v.viewport; });
+  // A comparison lays out its own grid of cells; plots of its runs, or a momentum sphere with each run's Π, may go beside it.
+  const bool only_plots = std::all_of(s.render.explain.views.begin(), s.render.explain.views.end(), [](const ViewConfig& v) {
+    return (v.kind == ViewKind::plot || v.kind == ViewKind::momentum_sphere) && v.viewport;
+  });
   if (!s.render.compare_methods.empty() && !only_plots)
-    root.error("views", "with [compare], [[views]] may only add plots, each with its viewport; the comparison lays out "
-                        "its own grid of cells in the rest of the frame");
+    root.error("views", "with [compare], [[views]] may only add plots or momentum spheres, each with its viewport; the "
+                        "comparison lays out its own grid of cells in the rest of the frame");
 }
 
 // The body named by `body` (checked), else the first.

@@ -17,6 +17,8 @@ namespace {
 
 // What the content must show whole: the axes (1.22 |L|), their labels past them and a margin (the ball 70 % of it).
 constexpr double kFitRadius = 1.42;
+// The exact solution's path: the grey of its ghost body in the cells, opaque.
+constexpr viz::Color kExactPathColor{0.50f, 0.56f, 0.68f, 1.0f};
 constexpr double kPiTailSeconds = 0.4;  // simulated s of Π's path drawn behind the dot: the whole path is the polhode
 
 viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::SphereCameraSettings s) {
@@ -59,6 +61,7 @@ class SpherePanel : public Panel {
   std::vector<viz::KeyEntry> key() const override {
     if (!ctx_.scene.render.explain.key) return {};
     viz::MomentumSphereInput in = input(0);  // what it draws: Π and its energy at t = 0 (conserved)
+    in.tracks = tracks(0);
     return viz::sphere_key(in);
   }
   void fit(glm::vec2 size) override { size_ = size; }
@@ -74,6 +77,7 @@ class SpherePanel : public Panel {
     for (std::size_t j = 0; j < run.path_end(kk); ++j)
       if (run.path_t[j] >= since) in.history.push_back(momentum_body(run.path[j][body_]));
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
+    in.tracks = tracks(k);
     turn(k, in.camera);
     in.ellipsoid_alpha = static_cast<float>(ctx_.scene.render.explain.views[index_].ellipsoid_opacity.value_or(viz::kEnergyEllipsoidAlpha)) * fade_in(k);
     viz::build_momentum_sphere(v, in);
@@ -101,6 +105,29 @@ class SpherePanel : public Panel {
     if (from <= 0) return 1;
     const scene::FrameClock& clock = ctx_.world.clock();
     return static_cast<float>(std::clamp(static_cast<double>(k) / clock.fps() - clock.video_time(from), 0.0, 1.0));
+  }
+
+  // In a comparison, each run's Π from t = 0 on the one sphere: the exact
+  // solution first, wide and grey (the cells' ghost colour), each method over it
+  // in its own colour, narrower, so a method that keeps to it shows on it.
+  std::vector<viz::SphereTrack> tracks(long k) const {
+    std::vector<viz::SphereTrack> out;
+    if (ctx_.runs.size() < 2) return out;
+    for (int exact : {1, 0})
+      for (const scene::Run& run : ctx_.runs) {
+        if ((run.label == "exact") != bool(exact)) continue;
+        viz::SphereTrack t;
+        t.name = short_title(run);
+        t.color = exact ? kExactPathColor : run_color(run);
+        t.width = exact ? 1.6f : 0.45f;  // thin: Euler's loops round −e₁ stay apart
+        const long kk = last_frame(run, k);
+        if (kk >= 0 && !run.path.empty())
+          for (std::size_t j = 0; j < run.path_end(kk); ++j) t.path.push_back(momentum_body(run.path[j][body_]));
+        else if (kk >= 0)
+          for (long j = 0; j <= kk; ++j) t.path.push_back(momentum_body(run.frames[static_cast<std::size_t>(j)][body_]));
+        out.push_back(std::move(t));
+      }
+    return out;
   }
 
   viz::MomentumSphereInput input(long kk) const {
