@@ -37,6 +37,8 @@ viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& 
 /// a pale, cool grey, faint, so it reads as "where the body should be" and not
 /// as a second body of the method's own colour.
 inline constexpr viz::Color kGhostColor{0.50f, 0.56f, 0.68f, 0.32f};
+/// The exact solution's path on a comparison's momentum sphere: its ghost's grey, opaque.
+inline constexpr viz::Color kExactPathColor{0.50f, 0.56f, 0.68f, 1.0f};
 
 class WorldViews {
  public:

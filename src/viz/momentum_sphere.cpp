@@ -159,8 +159,11 @@ void add_tracks(View& view, const MomentumSphereInput& in, double L) {
     if (t.path.empty()) continue;
     std::vector<glm::dvec3> path;
     for (const Eigen::Vector3d& x : t.path) path.push_back(1.004 * to_glm(x / L));
-    if (path.size() >= 2) view.polylines.push_back({path, t.color, 3.0f * w * t.width, false, "polhode " + t.name});
-    view.points.push_back({1.02 * to_glm(t.path.back() / L), 0.03 * w * std::max(1.0f, t.width), t.color, "momentum_point " + t.name});
+    if (path.size() >= 2) view.polylines.push_back({path, t.color, 3.0f * w * t.width, false, t.reported ? "polhode " + t.name : ""});
+    // Its dot, unless the ball hides it (behind the ball, inside its outline).
+    const glm::dvec3 p = 1.02 * to_glm(t.path.back() / L), d = glm::normalize(view.camera.position - view.camera.target);
+    if (glm::dot(p, d) < 0 && glm::length(p - glm::dot(p, d) * d) < kSphereBall) continue;
+    view.points.push_back({p, 0.03 * w, t.color, ""});  // unnamed: several dots would crowd the axes' names off their tips
   }
 }
 

@@ -41,7 +41,11 @@ struct SphereTrack {
   std::vector<Eigen::Vector3d> path;  ///< Π (principal frame), kg·m²/s; the last is Π now
   Color color;
   float width = 1;                    ///< times the view's path width (a wide track under a narrow one shows both)
-  std::string name;                   ///< in the layout report ("polhode <name>", "momentum_point <name>")
+  std::string name;                   ///< the key's text
+  /// Its path named "polhode <name>" (reported, and kept clear of labels, as a curve a viewer
+  /// follows); false for paths drawn over a reported one. The dots are not named: several at a
+  /// saddle would crowd the axes' names off their tips.
+  bool reported = true;
 };
 
 /// What the momentum-sphere view draws for one body.

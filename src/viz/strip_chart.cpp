@@ -3,7 +3,6 @@
 #include "viz/surfaces.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <cstdio>
 
@@ -57,8 +56,10 @@ ChartMap::ChartMap(const StripChartInput& in, int width_px, int height_px, float
   // Margins in pixels turned into world units (half height = 1 world unit).
   const double px = 2.0 / std::max(height_px, 1);
   x0_ = -aspect_ + 5.5 * font_px * px;
-  // Head labels stay inside the box (add_head_labels): no margin kept for them.
-  x1_ = aspect_ - 1.2 * font_px * px;
+  double labels = 0;  // the widest head label, its gap from the playhead and a margin, px
+  if (in.direct_labels)
+    for (const Series& s : in.series) labels = std::max(labels, double(text_width(s.name, font_px)) + 0.9 * font_px);
+  x1_ = aspect_ - std::max(1.2 * font_px, labels) * px;
   y0_ = -1 + 2.4 * font_px * px;
   y1_ = 1 - head_layout(in, width_px, static_cast<float>(font_px)).top_px * px;
 }
@@ -171,33 +172,6 @@ void add_decade_ticks(View& view, const StripChartInput& in, const ChartMap& m, 
 // highest value so far, not of its head, so that a curve dipping under
 // another for a moment (a signed error crossing zero on a log scale) does not
 // make the two names swap places.
-// The top of a name's line over series `s`'s curve between pixel columns x0
-// and x1 (a little gap above its highest point there), or under it when the
-// box's top leaves no room; within [top, bottom].
-float clear_of_curve(const StripChartInput& in, const ChartMap& m, const Series& s, float x0, float x1, float f,
-                     float top, float bottom) {
-  float hi = 1e30f, lo = -1e30f;
-  std::optional<glm::vec2> before;  // the last sample left of the span: its segment into the span counts too
-  for (std::size_t j = 0; j < std::min(in.times.size(), s.values.size()); ++j) {
-    if (!std::isfinite(s.values[j])) continue;
-    const glm::vec2 p = m.pixel(m.at(in.times[j], std::clamp(s.values[j], in.lo, in.hi)));
-    if (p.x < x0) before = p;
-    if (p.x < x0 || p.x > x1) continue;
-    if (before) hi = std::min(hi, before->y), lo = std::max(lo, before->y), before.reset();
-    hi = std::min(hi, p.y), lo = std::max(lo, p.y);
-  }
-  if (lo < hi) return top;  // no curve there
-  float y = hi - 1.25f * f;
-  if (y < top) return std::clamp(lo + 0.35f * f, top, bottom);
-  // Off a reference level's dashed line: above it, where the box leaves room (a name struck through reads as crossed out).
-  for (const StripChartInput::Level& l : in.levels) {
-    const float ly = m.pixel(m.at(in.t0, l.value)).y;
-    if (l.value >= in.lo && l.value <= in.hi && y < ly + 0.1f * f && y + f > ly - 0.1f * f && ly - 1.1f * f >= top)
-      y = ly - 1.1f * f;
-  }
-  return y;
-}
-
 void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   struct Head {
     float y;
@@ -236,19 +210,15 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   }
   if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
   for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
-  // Right of the head, clear of the playhead: over the time still to come
-  // (no curve there yet); a name that would reach the box's right edge stays
-  // inside it, left of the head, over (or under) its own curve there.
+  // Past the box's right edge, at the head's height, from the first frame: a
+  // column of names that never moves sideways (one that starts inside and
+  // jumps out near the end reads as leaving the plot), never across the
+  // curves or the flips' marks inside the box.
   const float right = m.pixel(m.at(in.t1, in.lo)).x;
   for (const Head& h : heads) {
     const Series& s = in.series[h.series];
-    const float w = text_width(s.name, f);
-    float x = h.at.x + 0.5f * f, y = h.y;
-    if (x + w > right - 0.2f * f) {
-      x = h.at.x - 0.5f * f - w;
-      y = clear_of_curve(in, m, s, x, x + w + 0.5f * f, f, top, bottom);
-    }
-    view.texts.push_back({s.name, {x, y}, f, s.color, "series_label"});
+    const float x = right + 0.4f * f;
+    view.texts.push_back({s.name, {x, h.y}, f, s.color, "series_label"});
   }
 }
 

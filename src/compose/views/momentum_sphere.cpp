@@ -17,8 +17,6 @@ namespace {
 
 // What the content must show whole: the axes (1.22 |L|), their labels past them and a margin (the ball 70 % of it).
 constexpr double kFitRadius = 1.42;
-// The exact solution's path: the grey of its ghost body in the cells, opaque.
-constexpr viz::Color kExactPathColor{0.50f, 0.56f, 0.68f, 1.0f};
 constexpr double kPiTailSeconds = 0.4;  // simulated s of Π's path drawn behind the dot: the whole path is the polhode
 
 viz::SphereCameraSettings sphere_settings(const scene::ViewCamera& c, viz::SphereCameraSettings s) {
@@ -120,6 +118,7 @@ class SpherePanel : public Panel {
         t.name = short_title(run);
         t.color = exact ? kExactPathColor : run_color(run);
         t.width = exact ? 1.6f : 0.45f;  // thin: Euler's loops round −e₁ stay apart
+        t.reported = bool(exact);  // the methods' paths and dots, over the exact one's, may lie under the axes' names
         const long kk = last_frame(run, k);
         if (kk >= 0 && !run.path.empty())
           for (std::size_t j = 0; j < run.path_end(kk); ++j) t.path.push_back(momentum_body(run.path[j][body_]));
