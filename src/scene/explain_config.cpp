@@ -211,7 +211,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "zoom"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -252,6 +252,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     if (r.has("level_arrows") && v.kind != ViewKind::momentum_sphere)
       r.error("level_arrows", "only a momentum_sphere view draws level curves");
     v.level_arrows = r.boolean("level_arrows").value_or(true);
+    if (r.has("zoom") && v.kind != ViewKind::momentum_sphere) r.error("zoom", "only a momentum_sphere view has a zoom");
+    v.zoom = r.number("zoom", Range::closed(1, 1.5)).value_or(1);
     read_turn(r, ctx, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }

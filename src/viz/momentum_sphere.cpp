@@ -79,7 +79,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L written in body axes"));
   out.push_back(key_entry(Meaning::polhode, "polhode: \u03a0's path"));
   if (draws_energy_ellipsoid(in))
-    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
+    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, in.ellipsoid_alpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
   out.push_back(key_entry(Meaning::other_levels, in.level_arrows ? "other energies (arrow: direction)" : "other energies"));
