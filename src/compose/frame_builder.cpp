@@ -20,6 +20,7 @@ namespace {
 constexpr viz::Color kInk{0.12f, 0.13f, 0.16f, 1.0f};
 constexpr viz::Color kDiverged{0.75f, 0.1f, 0.1f, 1.0f};
 constexpr const char* kPaused = "paused";  // the badge while a [[holds]] stop lasts
+constexpr const char* kWaiting = "waiting to start";  // a stop at t = 0: nothing has moved yet, so nothing is paused
 
 int grid_columns(std::size_t runs) {
   const int n = std::max<int>(1, static_cast<int>(runs));
@@ -163,7 +164,7 @@ std::string FrameBuilder::status(long k) const {
   std::string out;
   for (std::size_t i = 0; i < flip_frames_.size(); ++i)
     if (k >= flip_frames_[i].first && k < flip_frames_[i].second) out = "flip " + std::to_string(i + 1);
-  const std::string speed = clock.in_hold(k) ? kPaused
+  const std::string speed = clock.in_hold(k) ? (clock.time(k) == 0 ? kWaiting : kPaused)
                             : rate == 1      ? ""
                                              : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
   // Held at a flip, the whole hold: a deliberate stop, named ("paused at flip 1").
@@ -259,9 +260,8 @@ std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) con
   for (std::size_t i = 0; i < captions.size(); ++i) {
     // Up from the first frame showing `start` to the last showing `end` (through a hold there); a caption
     // up to the run's end does not fade out, so the video's last frame still says what it shows.
-    const double start = clock.video_time(captions[i].start);
-    const bool to_end = captions[i].end >= scene_.simulation.duration;
-    const double last = clock.video_time_last(captions[i].end);
+    const auto [start, last] = scene::caption_video_span(clock, captions[i]);
+    const bool to_end = captions[i].seconds <= 0 && captions[i].end >= scene_.simulation.duration;
     const double end = to_end ? last + 1e6 : last;
     const float a = viz::fade_alpha(tau, start, end);
     if (a > 0) out.emplace_back(i, a);

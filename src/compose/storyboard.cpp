@@ -46,7 +46,7 @@ void add_flips(const scene::Scene& s, const scene::FrameClock& clock, std::vecto
 void add_captions(const scene::Scene& s, const scene::FrameClock& clock, std::vector<StoryMoment>& out) {
   const auto& captions = s.render.explain.captions;
   for (std::size_t i = 0; i < captions.size(); ++i) {
-    const double v0 = clock.video_time(captions[i].start), v1 = clock.video_time_last(captions[i].end);
+    const auto [v0, v1] = scene::caption_video_span(clock, captions[i]);
     // viz::fade_alpha's fade in: 0.4 s, at most a quarter of the caption's time.
     out.push_back({frame_from(v0 + std::min(0.4, 0.25 * (v1 - v0)), clock.fps()), "caption " + std::to_string(i + 1)});
   }

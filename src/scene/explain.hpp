@@ -31,6 +31,10 @@ struct Caption {
   std::string start_text, end_text;  ///< as written ("flip 1 - 0.2", "1.5")
   std::size_t body = 0;              ///< the body whose flips anchor it
   CaptionPosition position = CaptionPosition::bottom;
+  /// Video s after the first frame showing `start` before it appears, and
+  /// (> 0) how many video s it then stays up instead of until `end`: captions
+  /// in turn during one hold (a figure built up step by step while t stands still).
+  double after = 0, seconds = 0;
 };
 
 /// The animation stops for `hold` video s at simulated `at` (e.g. "flip 1"):
@@ -99,6 +103,14 @@ struct ViewConfig {
     double at = 0, azimuth_deg = 0, elevation_deg = 0, seconds = 1;
   };
   std::optional<Turn> turn;
+  /// momentum_sphere `build_up`: from the first frame showing simulated `at`,
+  /// the figure drawn in four steps of `seconds` video s each: the |L| sphere,
+  /// the energy ellipsoid, the curves where they meet, the separatrix (viz/sphere_reveal.hpp).
+  struct BuildUp {
+    double at = 0;
+    std::array<double, 4> seconds{};
+  };
+  std::optional<BuildUp> build_up;
 };
 
 /// Names of the plot series, in the order of `plot_series_names()`.

@@ -129,9 +129,6 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   }
 }
 
-std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
-                                std::string* written = nullptr);
-
 // A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels; a world view's line_scale and tip_names.
 void read_sphere_options(TableReader& r, ViewConfig& v) {
   for (std::string_view key : {"energy_ellipsoid", "path", "levels"})
@@ -187,31 +184,13 @@ void read_kind_options(TableReader& r, ViewConfig& v) {
   }
 }
 
-// A momentum_sphere's `turn = { at, azimuth, elevation, seconds }`: its fixed camera turning at `at`.
-void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t body, ViewConfig& v) {
-  const toml::table* t = r.subtable("turn");
-  if (!t) return;
-  if (v.kind != ViewKind::momentum_sphere) return r.error("turn", "only a momentum_sphere view turns its camera");
-  if (v.camera.follow.value_or(false)) return r.error("turn", "a camera that follows Π does not turn; set follow = false");
-  TableReader c(*t, r.key_path("turn"), ctx.diag, {"at", "azimuth", "elevation", "seconds"});
-  ViewConfig::Turn turn;
-  const auto at = read_time(c, "at", s, body);
-  const auto az = c.number("azimuth", Range::closed(-360, 360)), el = c.number("elevation", Range::closed(-90, 90));
-  const auto seconds = c.number("seconds", Range::closed(0.1, 600));
-  for (const char* key : {"at", "azimuth", "elevation", "seconds"})
-    if (!c.has(key)) c.error(key, "missing; a turn needs at, azimuth, elevation and seconds (video s)");
-  if (!at || !az || !el || !seconds) return;
-  turn.at = *at, turn.azimuth_deg = *az, turn.elevation_deg = *el, turn.seconds = *seconds;
-  v.turn = turn;
-}
-
 void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("views");
   for (std::size_t i = 0; i < list.size(); ++i) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "zoom"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "zoom"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -255,6 +234,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     if (r.has("zoom") && v.kind != ViewKind::momentum_sphere) r.error("zoom", "only a momentum_sphere view has a zoom");
     v.zoom = r.number("zoom", Range::closed(1, 1.5)).value_or(1);
     read_turn(r, ctx, s, body, v);
+    read_build_up(r, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }
   // A comparison lays out its own grid of cells; plots of its runs may go beside it.
@@ -273,6 +253,8 @@ std::size_t read_body_index(TableReader& r, const LoadContext& ctx, const Scene&
   const Body* b = s.find_body(*name);
   return b ? static_cast<std::size_t>(b - s.bodies.data()) : 0;
 }
+
+}  // namespace
 
 // `key` as simulated seconds or an event of body `body` (scene/events.hpp),
 // clamped to [0, duration]; `written` gets the text as the file has it. A
@@ -312,17 +294,28 @@ std::optional<double> read_time(TableReader& r, std::string_view key, const Scen
   return std::clamp(flips[static_cast<std::size_t>(e->flip - 1)] + e->offset, 0.0, duration);
 }
 
+namespace {
+
+// A caption's `after` and `seconds` (video s): shown in turn within a hold; `seconds` replaces `end`.
+void read_caption_video_times(TableReader& r, Caption& c) {
+  c.after = r.number("after", Range::closed(0, 3600)).value_or(0);
+  c.seconds = r.number("seconds", Range::closed(0.1, 3600)).value_or(0);
+  if (r.has("seconds") && r.has("end"))
+    r.error("seconds", "a caption ends at `end` (simulated s) or after `seconds` (video s), not both");
+}
+
 void read_captions(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("captions");
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body", "position"});
+    TableReader r(*list[i], indexed("captions", i), ctx.diag, {"start", "end", "text", "body", "position", "after", "seconds"});
     Caption c;
     c.body = read_body_index(r, ctx, s);
     const auto start = read_time(r, "start", s, c.body, &c.start_text);
     if (!start && r.has("start")) continue;  // said why: past the run's end, or an error
     c.start = start.value_or(0);
-    c.end = read_time(r, "end", s, c.body, &c.end_text).value_or(s.simulation.duration);
-    if (c.end <= c.start && ctx.diag.ok())
+    read_caption_video_times(r, c);
+    c.end = c.seconds > 0 ? c.start : read_time(r, "end", s, c.body, &c.end_text).value_or(s.simulation.duration);
+    if (c.seconds <= 0 && c.end <= c.start && ctx.diag.ok())
       r.error("end", "expected end > start (simulated s); found start " + format_number(c.start) + " s, end " +
                          format_number(c.end) + " s");
     auto text = r.string("text");

@@ -67,6 +67,11 @@ double FrameClock::video_time_last(double t) const {
   return it == pieces_.end() ? tau_end_ : it->tau0;  // a hold at the very end lasts to the end of the video
 }
 
+std::pair<double, double> caption_video_span(const FrameClock& clock, const Caption& c) {
+  const double first = clock.video_time(c.start) + c.after;
+  return {first, c.seconds > 0 ? first + c.seconds : clock.video_time_last(c.end)};
+}
+
 long FrameClock::frame_at(double t) const {
   const long k = std::lround(video_time(t) * fps_);
   if (k < 0 || k >= count_) return -1;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/explain.hpp"
@@ -59,6 +60,10 @@ std::vector<ClockSpan> clock_spans(const FrameClock& c);
 /// A rate as a lecturer says it: "×1/8" for 0.125 simulated s per video s,
 /// "×2" for 2, "" for real time (1) and the title card (0).
 std::string speed_text(double rate);
+
+/// Video s [first, last] during which caption `c` is up: from the first frame
+/// showing its start (plus `after`) to the last showing its end (or `seconds` on).
+std::pair<double, double> caption_video_span(const FrameClock& clock, const Caption& c);
 
 struct Scene;
 /// The clock of a scene's render at `fps` ([output] time_scale, [[slow_motion]]).

@@ -46,6 +46,15 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene);
 /// `across` of a camera table: "L" → +1, "-L" → −1 (an error otherwise, 0).
 int read_across(TableReader& r);
 
+/// `key` as simulated seconds or an event time of body `body` ("flip 1 - 0.2"),
+/// clamped to [0, duration]; `written` gets the text as the file has it (explain_config.cpp).
+std::optional<double> read_time(TableReader& r, std::string_view key, const Scene& s, std::size_t body,
+                                std::string* written = nullptr);
+
+/// A momentum_sphere view's `turn` and `build_up` (sphere_motion.cpp); errors for other kinds.
+void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t body, ViewConfig& v);
+void read_build_up(TableReader& r, const Scene& s, std::size_t body, ViewConfig& v);
+
 /// Reads [[views]], [[captions]], [title], [[slow_motion]] into scene.render.explain
 /// (after read_render_config and read_bodies: it checks body names and times).
 void read_explain_config(TableReader& root, LoadContext& ctx, Scene& scene);

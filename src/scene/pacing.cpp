@@ -38,20 +38,22 @@ void check_pacing(TableReader& root, LoadContext& ctx, const Scene& scene) {
   };
   for (std::size_t i = 0; i < captions.size(); ++i) {
     const Caption& c = captions[i];
-    const double a = clock.video_time(c.start), b = clock.video_time_last(c.end);
+    const auto [a, b] = caption_video_span(clock, c);
     const std::size_t words = word_count(c.text);
     const std::string from = c.start_text.empty() ? format_number(c.start) : c.start_text;
     const std::string to = c.end_text.empty() ? format_number(c.end) : c.end_text;
+    const std::string when = c.seconds > 0 ? "from " + seconds(c.after) + " of video after simulated " + from
+                                           : from + " to " + to + " simulated s";
     const double need = kSecondsPerWord * static_cast<double>(words);
     if (b - a < need)
       ctx.diag.warning(where(i, "text"), "captions[" + std::to_string(i) + "].text",
-                       "up for " + seconds(b - a, 2) + " of video (" + from + " to " + to + " simulated s) for " +
+                       "up for " + seconds(b - a, 2) + " of video (" + when + ") for " +
                            std::to_string(words) + " words; a hall reads about " + seconds(kSecondsPerWord) +
                            " a word, so it needs " + seconds(need) +
-                           ": move its end, slow the time down over it ([[slow_motion]], [[holds]]) or shorten it");
+                           ": move its end (or seconds), slow the time down over it ([[slow_motion]], [[holds]]) or shorten it");
     for (std::size_t j = 0; j < i; ++j) {
       const Caption& o = captions[j];
-      const double oa = clock.video_time(o.start), ob = clock.video_time_last(o.end);
+      const auto [oa, ob] = caption_video_span(clock, o);
       if (a < ob && oa < b)
         ctx.diag.warning(where(i, "start"), "captions[" + std::to_string(i) + "].start",
                          "shown at the same time as captions[" + std::to_string(j) + "] (video " +

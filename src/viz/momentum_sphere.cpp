@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "viz/captions.hpp"
+#include "viz/end_on_mark.hpp"
 #include "viz/sphere_figure.hpp"
 #include "viz/key.hpp"
 #include "viz/scene_view.hpp"
@@ -137,6 +138,7 @@ void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vec
     for (glm::dvec3& x : path) x *= 1.004;
     view.polylines.push_back({std::move(path), color_of(Meaning::polhode), 3.0f * w, false, "polhode"});
   }
+  if (!in.reveal.separatrix) return;
   for (const auto& circle : separatrix(in.inertia, 1.0, 192)) {
     std::vector<glm::dvec3> unit;
     for (const Eigen::Vector3d& x : circle) unit.push_back(to_glm(x));
@@ -176,7 +178,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
   const double lo = L * L / I[2], hi = L * L / I[0];
   const float w = in.line_scale;
-  for (int j = 1; j < in.levels; ++j) {
+  for (int j = 1; in.reveal.curves && j < in.levels; ++j) {
     const double two_E = lo + (hi - lo) * j / in.levels;
     if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
     for (const auto& c : polhodes(I, L, two_E, 96)) {
@@ -187,15 +189,17 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
   add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
+  add_end_on_marks(view, kAxisReach, 0.05);
   // The body's own polhode, wide, then the separatrix dashed over it: where
   // the two run together both stay visible (crimson edges, sky-blue dashes).
-  const auto own = in.trail ? std::vector<Eigen::Vector3d>{} : own_polhode(I, in.momentum, 192);
+  const bool whole = in.reveal.curves && (!in.trail || in.reveal.whole_polhode);
+  const auto own = whole ? own_polhode(I, in.momentum, 192) : std::vector<Eigen::Vector3d>{};
   if (!own.empty()) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
   }
   add_separatrix_and_path(view, in, scaled(in.history));
-  add_saddles(view);
+  if (in.reveal.separatrix) add_saddles(view);
   // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
   view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);

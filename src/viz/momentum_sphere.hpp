@@ -13,6 +13,7 @@
 #include "viz/draw_list.hpp"
 #include "viz/key.hpp"
 #include "viz/sphere_camera.hpp"
+#include "viz/sphere_reveal.hpp"
 
 namespace tumble::viz {
 
@@ -54,6 +55,7 @@ struct MomentumSphereInput {
   float line_scale = 1;                     ///< the curves' widths and Π's dot, times this
   int levels = 10;                          ///< other energies: the levels between L²/I3 and L²/I1 in this many steps
   bool level_arrows = true;                 ///< each other level's direction arrow (and the key's promise of it)
+  SphereReveal reveal = {};                 ///< what a build-up shows so far (the ellipsoid: energy_ellipsoid, ellipsoid_alpha)
 };
 
 /// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the

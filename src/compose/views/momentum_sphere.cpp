@@ -77,6 +77,7 @@ class SpherePanel : public Panel {
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
     turn(k, in.camera);
     in.ellipsoid_alpha = static_cast<float>(ctx_.scene.render.explain.views[index_].ellipsoid_opacity.value_or(viz::kEnergyEllipsoidAlpha)) * fade_in(k);
+    build_up(k, in);
     viz::build_momentum_sphere(v, in);
     return v;
   }
@@ -92,6 +93,18 @@ class SpherePanel : public Panel {
     const double s = u * u * (3 - 2 * u);  // smoothstep: no jerk at either end
     c.azimuth_deg += s * (t->azimuth_deg - c.azimuth_deg);
     c.elevation_deg += s * (t->elevation_deg - c.elevation_deg);
+  }
+
+  // The view's `build_up`: the figure drawn step by step from the first frame
+  // showing its `at`; the ellipsoid shown for it, whether the view keeps it or not.
+  void build_up(long k, viz::MomentumSphereInput& in) const {
+    const auto& b = ctx_.scene.render.explain.views[index_].build_up;
+    if (!b) return;
+    const scene::FrameClock& clock = ctx_.world.clock();
+    in.reveal = viz::sphere_reveal(static_cast<double>(k) / clock.fps() - clock.video_time(b->at), b->seconds, in.energy_ellipsoid);
+    if (!in.reveal.ellipsoid) return;
+    in.ellipsoid_alpha = static_cast<float>(ctx_.scene.render.explain.views[index_].ellipsoid_opacity.value_or(viz::kEnergyEllipsoidAlpha)) * *in.reveal.ellipsoid;
+    in.energy_ellipsoid = true;
   }
 
   // The energy ellipsoid (the view's `ellipsoid_from`): faded in over a second of
