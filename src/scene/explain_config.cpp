@@ -172,7 +172,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {

@@ -83,7 +83,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   }
   for (const SphereTrack& t : in.tracks) out.push_back({Swatch::line, {t.color}, t.name});
   if (draws_energy_ellipsoid(in))
-    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
+    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, in.ellipsoid_alpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
   out.push_back(key_entry(Meaning::other_levels, in.level_arrows ? "other energies (arrow: direction)" : "other energies"));

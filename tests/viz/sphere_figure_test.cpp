@@ -246,6 +246,26 @@ TEST(SphereFigure, TheEnergyEllipsoidIsDrawnAtTheOpacityAsked) {
   EXPECT_FLOAT_EQ(whole.surfaces[0].color.a, 0.7f);
 }
 
+// The key's swatch of the energy ellipsoid shows it as drawn: at its opacity,
+// not at the veil's (a lesson's opaque band beside a faint swatch reads as another thing).
+TEST(SphereFigure, TheKeySwatchOfTheEnergyEllipsoidHasItsOpacity) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  for (const float alpha : {kEnergyEllipsoidAlpha, 0.9f}) {
+    in.ellipsoid_alpha = alpha;
+    int swatches = 0;
+    for (const KeyEntry& e : sphere_key(in))
+      if (e.text == "energy ellipsoid") {
+        ASSERT_EQ(e.colors.size(), 1u);
+        EXPECT_FLOAT_EQ(e.colors[0].a, alpha);
+        EXPECT_EQ(glm::vec3(e.colors[0]), glm::vec3(color_of(Meaning::energy_ellipsoid)));
+        ++swatches;
+      }
+    EXPECT_EQ(swatches, 1);
+  }
+}
+
 // A small sphere's grey arrows are too small to see: without them the key no longer promises them.
 TEST(SphereFigure, WithoutLevelArrowsNoneIsDrawnOrPromised) {
   const Eigen::Vector3d pi = near_saddle();
