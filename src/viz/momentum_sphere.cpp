@@ -178,12 +178,19 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
   const double lo = L * L / I[2], hi = L * L / I[0];
   const float w = in.line_scale;
+  // Dark levels: the palette's grey at 60 % brightness, so they read on the lit ball from the back of a hall.
+  auto level_color = [&](float alpha) {
+    glm::vec4 c = color_of(Meaning::other_levels, alpha);
+    if (in.dark_levels) c = glm::vec4(glm::vec3(c) * 0.6f, c.a);
+    return c;
+  };
   for (int j = 1; in.reveal.curves && j < in.levels; ++j) {
     const double two_E = lo + (hi - lo) * j / in.levels;
     if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
     for (const auto& c : polhodes(I, L, two_E, 96)) {
-      view.polylines.push_back({scaled(c), color_of(Meaning::other_levels, 0.55f), 1.2f * w, false});
-      if (in.level_arrows) add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
+      view.polylines.push_back({scaled(c), level_color(in.dark_levels ? 1.0f : 0.55f), (in.dark_levels ? 2.0f : 1.2f) * w, false});
+      if (in.level_arrows)
+        add_direction_arrows(view, unit(c), I, 1, level_color(in.dark_levels ? 1.0f : 0.8f), in.dark_levels ? 0.13 : 0.09);
     }
   }
   // Everything from here on shows through the ball, faintly, where it is behind it.
@@ -201,7 +208,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   add_separatrix_and_path(view, in, scaled(in.history));
   if (in.reveal.separatrix) add_saddles(view);
   // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
-  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w, color_of(Meaning::momentum_point), "momentum_point"});
+  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w * in.dot_scale, color_of(Meaning::momentum_point), "momentum_point"});
   show_far_side(view, front_first, kSphereBall);
 }
 
