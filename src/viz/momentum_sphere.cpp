@@ -149,6 +149,35 @@ void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vec
   }
 }
 
+namespace {
+
+// A family of levels spaced evenly in 2E between L²/I3 and L²/I1 (on the unit
+// sphere), each with its direction; dark ones (the palette's grey at 60 %
+// brightness, opaque, wider) read on the lit ball from the back of a hall.
+void add_other_levels(View& view, const MomentumSphereInput& in) {
+  const Eigen::Vector3d& I = in.inertia;
+  const double lo = 1 / I[2], hi = 1 / I[0];
+  auto level_color = [&](float alpha) {
+    glm::vec4 c = color_of(Meaning::other_levels, alpha);
+    if (in.dark_levels) c = glm::vec4(glm::vec3(c) * 0.6f, c.a);
+    return c;
+  };
+  const float width = (in.dark_levels ? 2.0f : 1.2f) * in.line_scale;
+  for (int j = 1; j < in.levels; ++j) {
+    const double two_E = lo + (hi - lo) * j / in.levels;
+    if (std::abs(two_E - 1 / I[1]) <= 1e-3 * (hi - lo)) continue;
+    for (const auto& c : polhodes(I, 1.0, two_E, 96)) {
+      std::vector<glm::dvec3> points;
+      for (const Eigen::Vector3d& x : c) points.push_back(to_glm(x));
+      view.polylines.push_back({std::move(points), level_color(in.dark_levels ? 1.0f : 0.55f), width, false});
+      if (in.level_arrows)
+        add_direction_arrows(view, c, I, 1, level_color(in.dark_levels ? 1.0f : 0.8f), in.dark_levels ? 0.13 : 0.09);
+    }
+  }
+}
+
+}  // namespace
+
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const Eigen::Vector3d& I = in.inertia;
   const double L = in.momentum.norm();
@@ -175,24 +204,8 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     for (const Eigen::Vector3d& x : curve) u.push_back(x / L);
     return u;
   };
-  // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
-  const double lo = L * L / I[2], hi = L * L / I[0];
+  if (in.reveal.curves) add_other_levels(view, in);
   const float w = in.line_scale;
-  // Dark levels: the palette's grey at 60 % brightness, so they read on the lit ball from the back of a hall.
-  auto level_color = [&](float alpha) {
-    glm::vec4 c = color_of(Meaning::other_levels, alpha);
-    if (in.dark_levels) c = glm::vec4(glm::vec3(c) * 0.6f, c.a);
-    return c;
-  };
-  for (int j = 1; in.reveal.curves && j < in.levels; ++j) {
-    const double two_E = lo + (hi - lo) * j / in.levels;
-    if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
-    for (const auto& c : polhodes(I, L, two_E, 96)) {
-      view.polylines.push_back({scaled(c), level_color(in.dark_levels ? 1.0f : 0.55f), (in.dark_levels ? 2.0f : 1.2f) * w, false});
-      if (in.level_arrows)
-        add_direction_arrows(view, unit(c), I, 1, level_color(in.dark_levels ? 1.0f : 0.8f), in.dark_levels ? 0.13 : 0.09);
-    }
-  }
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
   add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
