@@ -162,14 +162,16 @@ std::string FrameBuilder::status(long k) const {
   const scene::FrameClock& clock = world_.clock();
   const double rate = clock.rate(k);
   std::string out;
+  // In a comparison the flips marked are the exact solution's, not a method's: say so.
+  const std::string flip = scene_.render.compare_methods.empty() ? "flip " : "exact flip ";
   for (std::size_t i = 0; i < flip_frames_.size(); ++i)
-    if (k >= flip_frames_[i].first && k < flip_frames_[i].second) out = "flip " + std::to_string(i + 1);
+    if (k >= flip_frames_[i].first && k < flip_frames_[i].second) out = flip + std::to_string(i + 1);
   const std::string speed = clock.in_hold(k) ? (clock.time(k) == 0 ? kWaiting : kPaused)
                             : rate == 1      ? ""
                                              : scene::speed_text(rate) + (rate < 1 ? " slow motion" : " fast");
   // Held at a flip, the whole hold: a deliberate stop, named ("paused at flip 1").
   for (std::size_t i = 0; i < flip_t_.size(); ++i)
-    if (clock.in_hold(k) && std::abs(clock.time(k) - flip_t_[i]) < 1e-6) return std::string(kPaused) + " at flip " + std::to_string(i + 1);
+    if (clock.in_hold(k) && std::abs(clock.time(k) - flip_t_[i]) < 1e-6) return std::string(kPaused) + " at " + flip + std::to_string(i + 1);
   if (!speed.empty()) out += (out.empty() ? "" : "  \u00b7  ") + speed;
   return out;
 }
@@ -285,8 +287,8 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
   }
   if (!plan_.frame_key.empty()) {
     const viz::Box& b = plan_.frame_key_box;
-    viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * static_cast<float>(width_), b.y0 + 0.5f * plan_.frame_key_px,
-                     plan_.frame_key_px, static_cast<float>(width_) - plan_.frame_key_px);
+    viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * (b.x0 + b.x1), b.y0 + 0.5f * plan_.frame_key_px, plan_.frame_key_px,
+                     b.x1 - b.x0 - plan_.frame_key_px);
   }
 }
 

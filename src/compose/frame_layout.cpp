@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "compose/view_layout.hpp"
 #include "viz/captions.hpp"
@@ -54,7 +55,7 @@ viz::Box views_area(const FrameNeeds& n, const FramePlan& p) {
     if (p.captions.y0 <= 0) a.y0 = p.captions.y1;  // the strip at the top
     else a.y1 = p.captions.y0;
   }
-  if (p.frame_key_box.y1 > p.frame_key_box.y0) a.y1 = std::min(a.y1, p.frame_key_box.y0);
+  if (p.frame_key_box.y1 > p.frame_key_box.y0 && !p.frame_key_in_corner) a.y1 = std::min(a.y1, p.frame_key_box.y0);
   return a;
 }
 
@@ -112,7 +113,30 @@ void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<v
   }
 }
 
-// The frame key's strip: its rows across the frame, above the captions.
+
+// The views' bottom-right corner that no view declares: under the views that
+// reach the right edge (a column of side views shorter than the frame), as x,
+// y, width, height fractions; none when the declared views do not fill the
+// unit square or something stands there.
+std::optional<std::array<double, 4>> free_corner(const FrameNeeds& n) {
+  if (n.views.empty() || declared_extent(n) != std::array<double, 4>{0, 0, 1, 1}) return std::nullopt;
+  double x = 1, y = 0;
+  for (const ViewNeeds& v : n.views) {
+    if (!v.viewport) return std::nullopt;
+    const auto& r = *v.viewport;
+    if (r[0] + r[2] >= 1 - 1e-9) x = std::min(x, r[0]), y = std::max(y, r[1] + r[3]);
+  }
+  if (x >= 1 || y >= 1 - 1e-9) return std::nullopt;
+  for (const ViewNeeds& v : n.views) {
+    const auto& r = *v.viewport;
+    if (r[0] + r[2] > x + 1e-9 && r[1] + r[3] > y + 1e-9) return std::nullopt;
+  }
+  return std::array<double, 4>{x, y, 1 - x, 1 - y};
+}
+
+// The frame key: in a free corner of the views (free_corner), its entries in
+// as few rows as the corner's width allows, when they fit there; else its rows
+// across the frame, above the captions.
 void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
   if (p.frame_key.empty()) return;
   p.frame_key_px = viz::text_px(viz::TextRole::key, n.height, n.text_scale);
@@ -123,6 +147,16 @@ void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
     return;
   }
   const float pad = 0.5f * p.frame_key_px;
+  if (const auto c = free_corner(n)) {
+    const viz::Box a = views_area(n, p);
+    const viz::Box box{static_cast<float>((*c)[0] * n.width), a.y0 + static_cast<float>((*c)[1]) * (a.y1 - a.y0),
+                       static_cast<float>(n.width), a.y1};
+    const glm::vec2 size = viz::key_rows(p.frame_key, p.frame_key_px, box.x1 - box.x0 - 2 * pad).size;
+    if (size.x <= box.x1 - box.x0 - 2 * pad && size.y + 2 * pad <= box.y1 - box.y0) {
+      p.frame_key_box = box, p.frame_key_in_corner = true;
+      return;
+    }
+  }
   const glm::vec2 size = viz::key_rows(p.frame_key, p.frame_key_px, static_cast<float>(n.width) - 2 * pad).size;
   float bottom = static_cast<float>(n.height);
   if (p.captions.y1 > p.captions.y0 && p.captions.y0 > 0) bottom = p.captions.y0;

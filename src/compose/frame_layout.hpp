@@ -69,6 +69,7 @@ struct FramePlan {
   /// captions, when views would repeat each other's entries (zero height: none).
   std::vector<viz::KeyEntry> frame_key;
   viz::Box frame_key_box;   ///< frame px
+  bool frame_key_in_corner = false;  ///< in a corner the views leave free, not a strip across the frame
   float frame_key_px = 0;
   std::vector<std::string> notes;  ///< what was left out, where and why
 };

@@ -318,10 +318,11 @@ viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int
   return v;
 }
 
-std::vector<viz::PolylineItem> WorldViews::trails(std::size_t r, long k, std::size_t b) const {
+std::vector<viz::PolylineItem> WorldViews::trails(std::size_t r, long k, std::size_t b,
+                                                  std::optional<std::array<bool, 3>> axes) const {
   const long kk = std::min(k, static_cast<long>(runs_[r].frames.size()) - 1);
   if (draw_.trail_seconds <= 0 || kk < 0) return {};
-  return trails_[r].polylines(clock_.time(kk), draw_.trail_seconds, draw_.trail_axes, b);
+  return trails_[r].polylines(clock_.time(kk), draw_.trail_seconds, axes.value_or(draw_.trail_axes), b);
 }
 
 std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {

@@ -37,6 +37,8 @@ viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& 
 /// a pale, cool grey, faint, so it reads as "where the body should be" and not
 /// as a second body of the method's own colour.
 inline constexpr viz::Color kGhostColor{0.50f, 0.56f, 0.68f, 0.32f};
+/// The exact solution's path on a comparison's momentum sphere: its ghost's grey, opaque.
+inline constexpr viz::Color kExactPathColor{0.50f, 0.56f, 0.68f, 1.0f};
 
 class WorldViews {
  public:
@@ -49,7 +51,9 @@ class WorldViews {
   viz::View view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
                  std::optional<std::size_t> only = std::nullopt) const;
   /// Run `r`'s trails of body `b`'s axis tips at frame k (as the scene draws them), in space.
-  std::vector<viz::PolylineItem> trails(std::size_t r, long k, std::size_t b) const;
+  /// `axes`: which axes' tips (none: [draw] trail_axes).
+  std::vector<viz::PolylineItem> trails(std::size_t r, long k, std::size_t b,
+                                        std::optional<std::array<bool, 3>> axes = std::nullopt) const;
   /// Run `r`'s overlay at frame k: its line (time, method, step, energy error,
   /// as the scene asks) and, once it has diverged, where it stopped.
   std::vector<std::string> overlay(std::size_t r, long k) const;

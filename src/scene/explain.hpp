@@ -88,6 +88,8 @@ struct ViewConfig {
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
   double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)
+  std::optional<std::array<bool, 3>> trail_axes;  ///< world: which axes' tips leave a trail here; none = [draw] trail_axes
+  bool box = true;                  ///< world: the principal box's outline where [draw] box draws one (false: not in this view)
   int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range

@@ -129,24 +129,6 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   }
 }
 
-// A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels; a world view's line_scale and tip_names.
-void read_sphere_options(TableReader& r, ViewConfig& v) {
-  for (std::string_view key : {"energy_ellipsoid", "path", "levels"})
-    if (r.has(key) && v.kind != ViewKind::momentum_sphere) r.error(key, "only a momentum_sphere view takes " + std::string(key));
-  if (r.has("line_scale") && v.kind != ViewKind::momentum_sphere && v.kind != ViewKind::world)
-    r.error("line_scale", "only a momentum_sphere or world view takes line_scale");
-  if (r.has("tip_names") && v.kind != ViewKind::world) r.error("tip_names", "only a world view takes tip_names");
-  v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
-  v.tip_names = r.boolean("tip_names").value_or(true);
-  if (v.kind != ViewKind::momentum_sphere) return;
-  v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
-  if (const auto path = r.string("path")) {
-    if (*path != "polhode" && *path != "trail") r.error("path", "expected \"polhode\" or \"trail\", found " + quote_token(*path));
-    v.path_trail = *path == "trail";
-  }
-  v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
-}
-
 // Keys only some kinds take: the sphere's (above), y_scale, shade_speeds, energy_levels and y_range (plot).
 void read_kind_options(TableReader& r, ViewConfig& v) {
   read_sphere_options(r, v);
@@ -190,7 +172,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "dot_scale", "dark_levels"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "dot_scale",
+                   "dark_levels"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -236,12 +219,13 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     read_build_up(r, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }
-  // A comparison lays out its own grid of cells; plots of its runs may go beside it.
-  const bool only_plots = std::all_of(s.render.explain.views.begin(), s.render.explain.views.end(),
-                                      [](const ViewConfig& v) { return v.kind == ViewKind::plot && v.viewport; });
+  // A comparison lays out its own grid of cells; plots of its runs, or a momentum sphere with each run's Π, may go beside it.
+  const bool only_plots = std::all_of(s.render.explain.views.begin(), s.render.explain.views.end(), [](const ViewConfig& v) {
+    return (v.kind == ViewKind::plot || v.kind == ViewKind::momentum_sphere) && v.viewport;
+  });
   if (!s.render.compare_methods.empty() && !only_plots)
-    root.error("views", "with [compare], [[views]] may only add plots, each with its viewport; the comparison lays out "
-                        "its own grid of cells in the rest of the frame");
+    root.error("views", "with [compare], [[views]] may only add plots or momentum spheres, each with its viewport; the "
+                        "comparison lays out its own grid of cells in the rest of the frame");
 }
 
 // The body named by `body` (checked), else the first.

@@ -56,6 +56,10 @@ void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t bod
 void read_build_up(TableReader& r, const Scene& s, std::size_t body, ViewConfig& v);
 void read_sphere_marks(TableReader& r, ViewConfig& v);
 
+/// A view's look (view_look.cpp): a world view's trail_axes, box, line_scale, tip_names;
+/// a momentum_sphere's energy_ellipsoid, path, line_scale, levels.
+void read_sphere_options(TableReader& r, ViewConfig& v);
+
 /// Reads [[views]], [[captions]], [title], [[slow_motion]] into scene.render.explain
 /// (after read_render_config and read_bodies: it checks body names and times).
 void read_explain_config(TableReader& root, LoadContext& ctx, Scene& scene);

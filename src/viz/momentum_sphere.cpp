@@ -77,8 +77,11 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   // The axes are named at their ends: no entry for them.
   std::vector<KeyEntry> out;
   if (in.momentum.norm() <= 0) return out;
-  out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L written in body axes"));
-  out.push_back(key_entry(Meaning::polhode, "polhode: \u03a0's path"));
+  if (in.tracks.empty()) {
+    out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L written in body axes"));
+    out.push_back(key_entry(Meaning::polhode, "polhode: \u03a0's path"));
+  }
+  for (const SphereTrack& t : in.tracks) out.push_back({Swatch::line, {t.color}, t.name});
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
@@ -176,6 +179,21 @@ void add_other_levels(View& view, const MomentumSphereInput& in) {
   }
 }
 
+// Each track's path so far, a hair outside the sphere, and its dot now (its own colour).
+void add_tracks(View& view, const MomentumSphereInput& in, double L) {
+  const float w = in.line_scale;
+  for (const SphereTrack& t : in.tracks) {
+    if (t.path.empty()) continue;
+    std::vector<glm::dvec3> path;
+    for (const Eigen::Vector3d& x : t.path) path.push_back(1.004 * to_glm(x / L));
+    if (path.size() >= 2) view.polylines.push_back({path, t.color, 3.0f * w * t.width, false, t.reported ? "polhode " + t.name : ""});
+    // Its dot, unless the ball hides it (behind the ball, inside its outline).
+    const glm::dvec3 p = 1.02 * to_glm(t.path.back() / L), d = glm::normalize(view.camera.position - view.camera.target);
+    if (glm::dot(p, d) < 0 && glm::length(p - glm::dot(p, d) * d) < kSphereBall) continue;
+    view.points.push_back({p, 0.03 * w, t.color, ""});  // unnamed: several dots would crowd the axes' names off their tips
+  }
+}
+
 }  // namespace
 
 void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
@@ -218,10 +236,14 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
   }
-  add_separatrix_and_path(view, in, scaled(in.history));
+  add_separatrix_and_path(view, in, in.tracks.empty() ? scaled(in.history) : std::vector<glm::dvec3>{});
   if (in.reveal.separatrix) add_saddles(view);
-  // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
-  view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w * in.dot_scale, color_of(Meaning::momentum_point), "momentum_point"});
+  if (!in.tracks.empty()) {
+    add_tracks(view, in, L);
+  } else {
+    // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
+    view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w * in.dot_scale, color_of(Meaning::momentum_point), "momentum_point"});
+  }
   show_far_side(view, front_first, kSphereBall);
 }
 

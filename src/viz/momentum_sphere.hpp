@@ -6,6 +6,7 @@
 // (Landau & Lifshitz, Mechanics §37; Goldstein, Classical Mechanics §5.6.)
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -36,6 +37,18 @@ inline constexpr double kEnergyEllipsoidReach = 1.3;
 /// Its opacity: a veil over the sphere, in its own colour.
 inline constexpr float kEnergyEllipsoidAlpha = 0.28f;
 
+/// One of several Π paths on one sphere (a comparison: each method's), oldest first, in its colour.
+struct SphereTrack {
+  std::vector<Eigen::Vector3d> path;  ///< Π (principal frame), kg·m²/s; the last is Π now
+  Color color;
+  float width = 1;                    ///< times the view's path width (a wide track under a narrow one shows both)
+  std::string name;                   ///< the key's text
+  /// Its path named "polhode <name>" (reported, and kept clear of labels, as a curve a viewer
+  /// follows); false for paths drawn over a reported one. The dots are not named: several at a
+  /// saddle would crowd the axes' names off their tips.
+  bool reported = true;
+};
+
 /// What the momentum-sphere view draws for one body.
 struct MomentumSphereInput {
   Eigen::Vector3d inertia;                  ///< principal moments, ascending, kg·m²
@@ -58,6 +71,9 @@ struct MomentumSphereInput {
   float dot_scale = 1;                      ///< Π's dot radius, times this (on top of line_scale)
   bool dark_levels = false;                 ///< the other levels dark grey and opaque, wider, arrows larger: read from afar
   SphereReveal reveal = {};                 ///< what a build-up shows so far (the ellipsoid: energy_ellipsoid, ellipsoid_alpha)
+  /// Several paths on the one sphere (the same body stepped by several methods), drawn in this
+  /// order, each ended by its dot, instead of `history` and Π's own dot (`momentum` still sets |L|).
+  std::vector<SphereTrack> tracks = {};
 };
 
 /// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the

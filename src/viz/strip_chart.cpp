@@ -210,14 +210,14 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
   }
   if (!heads.empty()) heads.back().y = std::min(heads.back().y, bottom);  // and back up from the bottom
   for (std::size_t i = heads.size(); i-- > 1;) heads[i - 1].y = std::min(heads[i - 1].y, heads[i].y - 1.1f * f);
-  // Right of the head, clear of the playhead: over the time still to come
-  // (no curve there yet); a name that would reach the box's right edge sits
-  // past it, never across it.
+  // Past the box's right edge, at the head's height, from the first frame: a
+  // column of names that never moves sideways (one that starts inside and
+  // jumps out near the end reads as leaving the plot), never across the
+  // curves or the flips' marks inside the box.
   const float right = m.pixel(m.at(in.t1, in.lo)).x;
   for (const Head& h : heads) {
     const Series& s = in.series[h.series];
-    float x = h.at.x + 0.5f * f;
-    if (x + text_width(s.name, f) > right - 0.2f * f) x = std::max(x, right + 0.4f * f);
+    const float x = right + 0.4f * f;
     view.texts.push_back({s.name, {x, h.y}, f, s.color, "series_label"});
   }
 }

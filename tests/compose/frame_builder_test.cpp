@@ -235,3 +235,30 @@ viewport = [0.5, 0.0, 0.5, 1.0]
 }
 
 }  // namespace
+
+namespace {
+
+// In a comparison the flips on the badge are the closed form's (the methods
+// flip when they do): "exact flip 1", and "paused at exact flip 1" at its hold.
+TEST(Badge, AComparisonsFlipsAreTheExactOnes) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/methods_compare.toml");
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k = 0;  // the first hold past t = 0 is the one at flip 1 (the scene's [[holds]])
+  while (k + 1 < clock.count() && !(clock.in_hold(k) && clock.time(k) > 1.0)) ++k;
+  ASSERT_TRUE(clock.in_hold(k));
+  long run = k;  // the first running frame after it: the flip's mark is still up
+  while (run + 1 < clock.count() && clock.in_hold(run)) ++run;
+  const auto runs = tumble::scene::simulate_runs(s, run + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 960, 540);
+  auto badge = [&](long f) {
+    for (const tumble::viz::TextItem& t : fb.build(f).texts)
+      if (t.name == "speed") return t.text;  // the status badge
+    return std::string();
+  };
+  EXPECT_EQ(badge(k), "paused at exact flip 1");
+  EXPECT_EQ(badge(run).rfind("exact flip 1", 0), 0u) << badge(run);
+}
+
+}  // namespace

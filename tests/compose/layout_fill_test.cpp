@@ -197,7 +197,7 @@ TEST(LayoutFill, ComparisonCellsShowTheExactBodyFaintlyInGrey) {
   ASSERT_EQ(runs[1].label, "rk4");
   const compose::FrameBuilder fb(s, runs, fps, 320, 240);
   const viz::DrawList dl = fb.build(count / 2);
-  ASSERT_EQ(dl.views.size(), 4u);  // two cells, the log and the linear plot
+  ASSERT_EQ(dl.views.size(), 4u);  // two cells, the log plot and the momentum sphere
   for (std::size_t r = 0; r < 2; ++r) {
     const auto& sf = dl.views[r].surfaces;
     const auto ghosts = std::count_if(sf.begin(), sf.end(), [](const viz::SurfaceItem& x) { return x.name == "ghost"; });
@@ -259,6 +259,28 @@ TEST(LayoutFill, AFrameKeyStripIsKeptFreeOfTheViews) {
   EXPECT_LE(bottom, p.frame_key_box.y0 + 1) << "no view under the frame key";
 }
 
+// Side views shorter than the frame leave the bottom-right corner free: the
+// frame key stands there, and the main view keeps the views' whole height.
+TEST(LayoutFill, AFrameKeyTakesAFreeCornerUnderTheSideViews) {
+  FrameNeeds n = needs({view({0, 0, 0.66, 1}), view({0.66, 0, 0.34, 0.36}), view({0.66, 0.36, 0.34, 0.36})});
+  n.captions.clear();
+  n.frame_key = {viz::key_entry(viz::Meaning::L, "L: angular momentum"),
+                 viz::key_entry(viz::Meaning::omega, "omega: angular velocity")};
+  const FramePlan p = compose::plan_frame(n);
+  ASSERT_GT(p.frame_key_box.y1, p.frame_key_box.y0);
+  EXPECT_GE(p.frame_key_box.x0, 0.66f * float(n.width) - 1) << "in the corner, right of the main view";
+  EXPECT_EQ(float(p.views[0].y + p.views[0].height), float(n.height)) << "the main view keeps the whole height";
+  for (const compose::ViewPlan& v : p.views) {
+    const bool apart = float(v.x + v.width) <= p.frame_key_box.x0 + 1 || float(v.y + v.height) <= p.frame_key_box.y0 + 1;
+    EXPECT_TRUE(apart) << "a view under the key at " << v.x << ", " << v.y;
+  }
+  // A view in that corner: no corner, the strip across the frame as before.
+  n.views.push_back(view({0.66, 0.72, 0.34, 0.28}));
+  const FramePlan q = compose::plan_frame(n);
+  EXPECT_EQ(q.frame_key_box.x0, 0);
+  EXPECT_LT(float(q.views[0].y + q.views[0].height), float(n.height));
+}
+
 TEST(LayoutFill, EveryCaptionBackdropLiesInsideTheCaptionStrip) {
   // Text never sits on the content: each caption's backdrop, at its bottom
   // place, is inside the strip the views are kept out of.
@@ -287,8 +309,8 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
   ASSERT_EQ(runs.size(), 3u);
   const compose::FrameBuilder fb(s, runs, fps, 1920, 1080);
   const FramePlan& p = fb.plan();
-  ASSERT_EQ(p.views.size(), 4u);  // [compare] cells: explicit Euler and RK4 (the exact body as their ghost); two plots
-  // arrange = "side": one row of tall cells, left to right, left of the plots; the plots stacked, log over linear.
+  ASSERT_EQ(p.views.size(), 4u);  // [compare] cells: explicit Euler and RK4 (the exact body as their ghost); plot, sphere
+  // arrange = "side": one row of tall cells, left to right, left of the views; the log plot over the momentum sphere.
   for (std::size_t r = 0; r < 2; ++r) {
     EXPECT_EQ(p.views[r].y, p.views[0].y) << r;
     if (r > 0) { EXPECT_GT(p.views[r].x, p.views[r - 1].x) << r; }
@@ -300,6 +322,7 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
   EXPECT_GE(p.views[2].height, 300) << "a chart a hall can read";
   const viz::DrawList dl = fb.build(count - 1);
   ASSERT_EQ(dl.views.size(), 4u);
+  ASSERT_EQ(dl.views[3].name, "momentum_sphere");
   std::map<std::string, viz::Color> cell_colour;  // each cell's title and readout share its method's colour
   for (std::size_t r = 0; r < 2; ++r) {
     const viz::TextItem* title = nullptr;
@@ -322,7 +345,7 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
   EXPECT_NE(cell_colour["euler"], cell_colour["rk4"]);
   // The plot: a curve per stepping method, named at its head as its cell names it and in its colour; no curve for
   // the exact solution.
-  for (std::size_t plot : {2u, 3u}) {
+  for (std::size_t plot : {2u}) {
     std::vector<std::string> named;
     for (const viz::TextItem& t : dl.views[plot].texts)
       if (t.name == "series_label") {

@@ -275,14 +275,17 @@ std::string compare_scene(const std::string& extra) {
   return base + "[compare]\nmethods = [\"euler\", \"exact\"]\n[draw]\nlegend = true\n" + extra;
 }
 
-TEST(StorySettings, AComparisonTakesPlotViewsWithViewportsOnly) {
+TEST(StorySettings, AComparisonTakesPlotAndSphereViewsWithViewportsOnly) {
   const Scene s = load_scene_from_string(
-      compare_scene("[[views]]\nkind = \"plot\"\nviewport = [0, 0.7, 1, 0.3]\nseries = [\"energy_error\"]\n"), "cmp.toml");
-  ASSERT_EQ(s.render.explain.views.size(), 1u);
+      compare_scene("[[views]]\nkind = \"plot\"\nviewport = [0, 0.7, 1, 0.3]\nseries = [\"energy_error\"]\n"
+                    "[[views]]\nkind = \"momentum_sphere\"\nviewport = [0, 0.5, 1, 0.2]\npath = \"trail\"\n"),
+      "cmp.toml");
+  ASSERT_EQ(s.render.explain.views.size(), 2u);
   EXPECT_EQ(s.render.compare_methods.size(), 2u);
   EXPECT_TRUE(s.render.draw.legend);  // the cells' legend stays: the plot has its own key
-  for (const char* view : {"[[views]]\nkind = \"world\"\nviewport = [0, 0, 1, 0.5]\n", "[[views]]\nkind = \"plot\"\n"})
-    EXPECT_NE(scene_error(compare_scene(view), "cmp.toml").find("with [compare], [[views]] may only add plots, each with its viewport"),
+  for (const char* view : {"[[views]]\nkind = \"world\"\nviewport = [0, 0, 1, 0.5]\n", "[[views]]\nkind = \"plot\"\n",
+                           "[[views]]\nkind = \"momentum_sphere\"\n"})
+    EXPECT_NE(scene_error(compare_scene(view), "cmp.toml").find("with [compare], [[views]] may only add plots or momentum spheres, each with its viewport"),
               std::string::npos)
         << view;
 }

@@ -204,6 +204,30 @@ TEST(StripChart, DirectLabelsNearTheEndSitPastTheRightBorderNotAcrossIt) {
   EXPECT_EQ(named, 1);
 }
 
+// Early and late, a curve's name stands in the same column past the box's
+// right edge: it never jumps out of the plot as the head nears the edge.
+TEST(StripChart, DirectLabelsStandInOneColumnPastTheBox) {
+  std::vector<float> xs;
+  for (std::size_t n : {2u, 5u}) {
+    StripChartInput in;
+    in.times = {0, 1, 2, 3, 3.5};
+    in.series = {{"explicit Euler", {0.1, 0.2, 0.3, 0.4, 0.45}, {1, 0, 0, 1}}};
+    in.times.resize(n), in.series[0].values.resize(n);
+    in.t0 = 0, in.t1 = 4, in.lo = 0, in.hi = 1, in.playhead = in.times.back();
+    in.direct_labels = true;
+    View v;
+    build_strip_chart(v, in, 600, 200, 12.0f);
+    const float right = ChartMap(in, 600, 200, 12.0f).pixel(ChartMap(in, 600, 200, 12.0f).at(4, 0)).x;
+    for (const TextItem& t : v.texts)
+      if (t.name == "series_label") {
+        xs.push_back(t.position_px.x);
+        EXPECT_GT(t.position_px.x, right) << "past the box, not over its curves and marks (playhead " << in.playhead << ")";
+      }
+  }
+  ASSERT_EQ(xs.size(), 2u);
+  EXPECT_EQ(xs[0], xs[1]);
+}
+
 TEST(StripChart, DirectLabelsKeepTheirOrderWhenACurveDipsForAMoment) {
   StripChartInput in;
   in.times = {0, 1, 2, 3};

@@ -36,6 +36,10 @@ double series_value(const std::string& name, const RigidBodyModel& m, const Body
 /// curve): none of the axes', L's or ω's; ink for the exact solution and others.
 viz::Color run_color(const scene::Run& run);
 
+/// A run's name as its cell titles it, less the order ("explicit Euler, order 1" -> "explicit Euler"):
+/// a plot's curve, a sphere's path and the cell then read alike.
+std::string short_title(const scene::Run& run);
+
 /// The index of the body `[[views]]` table `index` names (the first when it names none).
 std::size_t view_body(const PanelContext& ctx, std::size_t index);
 

@@ -59,6 +59,7 @@ class SpherePanel : public Panel {
   std::vector<viz::KeyEntry> key() const override {
     if (!ctx_.scene.render.explain.key) return {};
     viz::MomentumSphereInput in = input(0);  // what it draws: Π and its energy at t = 0 (conserved)
+    in.tracks = tracks(0);
     return viz::sphere_key(in);
   }
   void fit(glm::vec2 size) override { size_ = size; }
@@ -74,6 +75,7 @@ class SpherePanel : public Panel {
     for (std::size_t j = 0; j < run.path_end(kk); ++j)
       if (run.path_t[j] >= since) in.history.push_back(momentum_body(run.path[j][body_]));
     if (!track_.empty()) in.pose = track_[std::min(run.path_end(kk), track_.size()) - 1];
+    in.tracks = tracks(k);
     turn(k, in.camera);
     in.ellipsoid_alpha = static_cast<float>(ctx_.scene.render.explain.views[index_].ellipsoid_opacity.value_or(viz::kEnergyEllipsoidAlpha)) * fade_in(k);
     build_up(k, in);
@@ -114,6 +116,30 @@ class SpherePanel : public Panel {
     if (from <= 0) return 1;
     const scene::FrameClock& clock = ctx_.world.clock();
     return static_cast<float>(std::clamp(static_cast<double>(k) / clock.fps() - clock.video_time(from), 0.0, 1.0));
+  }
+
+  // In a comparison, each run's Π from t = 0 on the one sphere: the exact
+  // solution first, wide and grey (the cells' ghost colour), each method over it
+  // in its own colour, narrower, so a method that keeps to it shows on it.
+  std::vector<viz::SphereTrack> tracks(long k) const {
+    std::vector<viz::SphereTrack> out;
+    if (ctx_.runs.size() < 2) return out;
+    for (int exact : {1, 0})
+      for (const scene::Run& run : ctx_.runs) {
+        if ((run.label == "exact") != bool(exact)) continue;
+        viz::SphereTrack t;
+        t.name = short_title(run);
+        t.color = exact ? kExactPathColor : run_color(run);
+        t.width = exact ? 1.6f : 0.45f;  // thin: Euler's loops round −e₁ stay apart
+        t.reported = bool(exact);  // the methods' paths and dots, over the exact one's, may lie under the axes' names
+        const long kk = last_frame(run, k);
+        if (kk >= 0 && !run.path.empty())
+          for (std::size_t j = 0; j < run.path_end(kk); ++j) t.path.push_back(momentum_body(run.path[j][body_]));
+        else if (kk >= 0)
+          for (long j = 0; j <= kk; ++j) t.path.push_back(momentum_body(run.frames[static_cast<std::size_t>(j)][body_]));
+        out.push_back(std::move(t));
+      }
+    return out;
   }
 
   viz::MomentumSphereInput input(long kk) const {

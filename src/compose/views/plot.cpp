@@ -56,13 +56,6 @@ const SeriesLook& series_look(const std::string& name) {
   return unknown;  // the scene loader lets no other name through
 }
 
-// A run's name as its cell titles it, less the order ("explicit Euler, order 1"
-// -> "explicit Euler"): the curve and the cell then read alike.
-std::string short_title(const scene::Run& run) {
-  const std::string& t = run.title.empty() ? run.label : run.title;
-  return t.substr(0, t.find(','));
-}
-
 // A plot of one body's run, or in a [compare] scene of every stepping run
 // (the exact solution has no error to plot), one curve per run and series.
 class PlotPanel : public Panel {
@@ -158,6 +151,11 @@ double series_value(const std::string& name, const RigidBodyModel& m, const Body
 // The energies a free body with the start's |L| can have at most and least,
 // and at the separatrix (L²/2I₁, L²/2I₃; L²/2I₂), as ΔE/E of the start's
 // energy E0 (its other terms, translation and potential, kept as they were).
+std::string short_title(const scene::Run& run) {
+  const std::string& t = run.title.empty() ? run.label : run.title;
+  return t.substr(0, t.find(','));
+}
+
 std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, double e0, bool log10) {
   static const char* const kNames[3] = {"L\u00b2/2I\u2081", "L\u00b2/2I\u2082", "L\u00b2/2I\u2083"};
   const Eigen::Vector3d l_body = b.initial.q.conjugate() * b.initial.L;
@@ -166,7 +164,7 @@ std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, dou
   for (int k = 0; k < 3; ++k) {
     const double v = (0.5 * b.initial.L.squaredNorm() * b.model.inv_inertia[k] - rot0) / std::max(std::abs(e0), 1e-300);
     if (!log10) out.push_back({v, viz::percent_text(v)});  // linear: the axis reads ΔE/E, in per cent
-    else if (std::abs(v) > 1e-12) out.push_back({std::log10(std::abs(v)), kNames[k]});  // rounding's 0: none
+    else if (v > 1e-12) out.push_back({std::log10(v), kNames[k]});  // |ΔE/E|: a level below the start's (L²/2I₃) would read as one above
   }
   return out;
 }

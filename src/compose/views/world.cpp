@@ -118,7 +118,11 @@ class WorldPanel : public Panel {
   viz::View content(long k) const override {
     viz::View v = ctx_.world.view(run_, k, camera_, int(size_.x), int(size_.y), only_);
     if (only_)
-      for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_)) v.polylines.push_back(std::move(p));
+      for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_, vc_ ? vc_->trail_axes : std::nullopt))
+        v.polylines.push_back(std::move(p));
+    // A view may leave out the principal box's outline (a surface's box: no faces, only edges).
+    if (vc_ && !vc_->box)
+      std::erase_if(v.boxes, [](const viz::BoxItem& b) { return b.face.a == 0.0f; });
     v.name = name();
     // A view of small bodies may draw its arrows thicker, and leave their names to the key.
     for (viz::ArrowItem& a : v.arrows) {
@@ -176,9 +180,9 @@ std::optional<viz::KeyEntry> box_key(const PanelContext& ctx) {
 }
 
 viz::Color run_color(const scene::Run& run) {
-  // Crimson, ochre and violet: apart from the axes' vermillion, green and blue, L's black and each other.
+  // Crimson, dark ochre (4.7:1 on white) and violet: apart from the axes' vermillion, green and blue, L's black and each other.
   static const std::pair<const char*, viz::Color> kColors[] = {
-      {"euler", {0.80f, 0.08f, 0.22f, 1}}, {"rk4", {0.72f, 0.50f, 0.0f, 1}}, {"splitting", {0.50f, 0.22f, 0.72f, 1}}};
+      {"euler", {0.80f, 0.08f, 0.22f, 1}}, {"rk4", {0.58f, 0.43f, 0.0f, 1}}, {"splitting", {0.50f, 0.22f, 0.72f, 1}}};
   for (const auto& [label, color] : kColors)
     if (run.label == label) return color;
   return viz::color_of(viz::Meaning::ink);

@@ -1,0 +1,44 @@
+// A view's look options: a world view's trails, box, line widths and tip names;
+// a momentum_sphere's ellipsoid, path and level curves. Errors name kinds that do not take them.
+#include <array>
+#include <string>
+
+#include "scene/internal.hpp"
+
+namespace tumble::scene::detail {
+
+// A world view's own trail_axes (as [draw] trail_axes, for this view) and box (false: no principal-box outline).
+static void read_world_look(TableReader& r, ViewConfig& v) {
+  for (std::string_view key : {"trail_axes", "box"})
+    if (r.has(key) && v.kind != ViewKind::world) r.error(key, "only a world view takes " + std::string(key));
+  v.box = r.boolean("box").value_or(true);
+  const auto axes = r.strings("trail_axes");
+  if (!axes) return;
+  std::array<bool, 3> on = {false, false, false};
+  for (const std::string& a : *axes) {
+    if (a == "e1" || a == "e2" || a == "e3") on[static_cast<std::size_t>(a[1] - '1')] = true;
+    else r.error("trail_axes", "expected items from \"e1\", \"e2\", \"e3\", found " + quote_token(a));
+  }
+  v.trail_axes = on;
+}
+
+// A momentum_sphere's look: energy_ellipsoid, path, line_scale, levels; a world view's line_scale and tip_names.
+void read_sphere_options(TableReader& r, ViewConfig& v) {
+  for (std::string_view key : {"energy_ellipsoid", "path", "levels"})
+    if (r.has(key) && v.kind != ViewKind::momentum_sphere) r.error(key, "only a momentum_sphere view takes " + std::string(key));
+  if (r.has("line_scale") && v.kind != ViewKind::momentum_sphere && v.kind != ViewKind::world)
+    r.error("line_scale", "only a momentum_sphere or world view takes line_scale");
+  if (r.has("tip_names") && v.kind != ViewKind::world) r.error("tip_names", "only a world view takes tip_names");
+  v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
+  v.tip_names = r.boolean("tip_names").value_or(true);
+  read_world_look(r, v);
+  if (v.kind != ViewKind::momentum_sphere) return;
+  v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
+  if (const auto path = r.string("path")) {
+    if (*path != "polhode" && *path != "trail") r.error("path", "expected \"polhode\" or \"trail\", found " + quote_token(*path));
+    v.path_trail = *path == "trail";
+  }
+  v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
+}
+
+}  // namespace tumble::scene::detail

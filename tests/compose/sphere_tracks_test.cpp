@@ -1,0 +1,69 @@
+// A momentum sphere beside a comparison draws every run's Π from t = 0 on the
+// one sphere, checked against what a free body must do: the exact path keeps
+// its energy level (Σ Π_i²/I_i over |Π|² fixed), explicit Euler's climbs (its
+// normalised step adds ½dt²(Π×ω)·I⁻¹(Π×ω) > 0 each time), RK4's ends on the
+// exact path.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "compose/frame_builder.hpp"
+#include "compose/views/kinds.hpp"
+#include "compose/world_views.hpp"
+#include "scene/frame_clock.hpp"
+#include "scene/frame_runs.hpp"
+#include "scene/scene.hpp"
+
+namespace tumble {
+namespace {
+
+// 2E/|L|² of a point on the drawn sphere (any radius): the energy level it lies on.
+double level(const glm::dvec3& x, const Eigen::Vector3d& inertia) {
+  return (x.x * x.x / inertia[0] + x.y * x.y / inertia[1] + x.z * x.z / inertia[2]) / glm::dot(x, x);
+}
+
+const viz::PolylineItem* coloured(const viz::View& v, const viz::Color& c) {
+  const auto it = std::find_if(v.polylines.begin(), v.polylines.end(), [&](const viz::PolylineItem& p) { return p.color == c; });
+  return it == v.polylines.end() ? nullptr : &*it;
+}
+
+TEST(SphereTracks, AComparisonsSphereDrawsEachMethodsPathAgainstTheExactOne) {
+  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "methods_compare.toml");
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  ASSERT_EQ(runs.size(), 3u);
+  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
+  const viz::DrawList dl = fb.build(count - 1);  // t = 16 s
+  const auto sphere = std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
+  ASSERT_NE(sphere, dl.views.end());
+  // The paths by their colours (the methods' unnamed: the axes' names may sit over them at the crowded saddles).
+  const viz::PolylineItem* exact = coloured(*sphere, compose::kExactPathColor);
+  const viz::PolylineItem* euler = coloured(*sphere, compose::run_color(runs[0]));
+  const viz::PolylineItem* rk4 = coloured(*sphere, compose::run_color(runs[1]));
+  ASSERT_TRUE(exact && euler && rk4);
+  EXPECT_LT(exact, euler) << "the exact path first, under the methods'";
+  EXPECT_LT(exact, rk4);
+  EXPECT_GT(exact->width_px, rk4->width_px) << "wide enough to show round the path that lies on it";
+  const Eigen::Vector3d& inertia = s.bodies[0].model.inertia;
+  // The exact path keeps to one level; it runs from t = 0 (Π at +e₂) round e₃ and back through flips.
+  const double e0 = level(exact->points.front(), inertia);
+  for (const glm::dvec3& x : exact->points) ASSERT_NEAR(level(x, inertia) / e0, 1.0, 1e-6);
+  EXPECT_GT(exact->points.front().y / glm::length(exact->points.front()), 0.999) << "Π starts at +e₂";
+  // Each path ends in its dot, Π now: Euler's E up by more than a third by 16 s (+45 %, the cell's
+  // readout; its path starts on the exact level); RK4's where the exact one is (unit sphere, a hair out).
+  EXPECT_NEAR(level(euler->points.front(), inertia) / e0, 1.0, 1e-6);
+  auto dot = [&](const viz::Color& c) {
+    const auto it = std::find_if(sphere->points.begin(), sphere->points.end(), [&](const viz::PointItem& p) { return p.color == c; });
+    EXPECT_NE(it, sphere->points.end());
+    return it == sphere->points.end() ? glm::dvec3(0, 1, 0) : it->position;
+  };
+  EXPECT_GT(level(dot(compose::run_color(runs[0])), inertia) / e0, 1.35);
+  EXPECT_LT(glm::length(dot(compose::run_color(runs[1])) - dot(compose::kExactPathColor)), 1e-2);
+
+}
+
+}  // namespace
+}  // namespace tumble

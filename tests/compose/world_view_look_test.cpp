@@ -1,0 +1,74 @@
+// A world view's own look: `trail_axes` (which axes' tips leave a trail there)
+// and `box = false` (no principal-box outline there), as the demo's side views
+// use them; the main view keeps the scene's [draw] trails and box.
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "compose/frame_builder.hpp"
+#include "scene/frame_clock.hpp"
+#include "scene/frame_runs.hpp"
+#include "scene/scene.hpp"
+#include "viz/scene_view.hpp"
+
+namespace tumble {
+namespace {
+
+int trails_of(const viz::View& v, int axis) {
+  return static_cast<int>(std::count_if(v.polylines.begin(), v.polylines.end(), [&](const viz::PolylineItem& p) {
+    return p.color == viz::kAxisColors[axis];
+  }));
+}
+
+int outlines(const viz::View& v) {
+  return static_cast<int>(std::count_if(v.boxes.begin(), v.boxes.end(), [](const viz::BoxItem& b) { return b.face.a == 0.0f; }));
+}
+
+TEST(WorldViewLook, TheDemosSideViewsTrailOnlyTheirSpinAxisAndDrawNoBox) {
+  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "dzhanibekov.toml");
+  ASSERT_EQ(s.render.explain.views.size(), 3u);
+  const double fps = s.render.output.fps;
+  const scene::FrameClock clock = scene::frame_clock(s, fps);
+  long k = 0;  // a second into the run: every trail has some length
+  while (k + 1 < clock.count() && clock.time(k) < 1.0) ++k;
+  const auto runs = scene::simulate_runs(s, k + 1, fps);
+  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
+  const viz::DrawList dl = fb.build(k);
+  ASSERT_EQ(dl.views.size(), 3u);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(trails_of(dl.views[0], a), 1) << "main view, axis " << a;
+  EXPECT_EQ(outlines(dl.views[0]), 1) << "the main T keeps the seed's box";
+  // View 1 spins about e₁, view 2 about e₃: that axis' trail only, and no box.
+  for (int view : {1, 2}) {
+    const int spin = view == 1 ? 0 : 2;
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(trails_of(dl.views[static_cast<std::size_t>(view)], a), a == spin ? 1 : 0) << view << " " << a;
+    EXPECT_EQ(outlines(dl.views[static_cast<std::size_t>(view)]), 0) << view;
+    EXPECT_FALSE(dl.views[static_cast<std::size_t>(view)].boxes.size() > 0 && dl.views[static_cast<std::size_t>(view)].surfaces.empty())
+        << "the body is still drawn";
+  }
+}
+
+TEST(WorldViewLook, OnlyAWorldViewTakesTrailAxesAndBox) {
+  const std::string base = "name = \"t\"\n[[bodies]]\nname = \"a\"\nshape = { type = \"box\", size = [0.3, 0.2, 0.1], resolution = [6, 4, 2], mass = 1 }\n"
+                           "omega_body = [0, 1, 0]\n[draw]\nsurface = true\nbox = true\ntrails = 0.5\n";
+  const scene::Scene ok = scene::load_scene_from_string(base + "[[views]]\nkind = \"world\"\nbody = \"a\"\ntrail_axes = [\"e2\"]\nbox = false\n", "v.toml");
+  ASSERT_EQ(ok.render.explain.views.size(), 1u);
+  EXPECT_EQ(ok.render.explain.views[0].trail_axes, (std::array<bool, 3>{false, true, false}));
+  EXPECT_FALSE(ok.render.explain.views[0].box);
+  auto error_of = [&](const std::string& view) {
+    try {
+      scene::load_scene_from_string(base + view, "v.toml");
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nbox = false\n").find("only a world view takes box"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ntrail_axes = [\"e1\"]\n").find("only a world view takes trail_axes"), std::string::npos);
+  const std::string bad = error_of("[[views]]\nkind = \"world\"\ntrail_axes = [\"e4\"]\n");
+  EXPECT_NE(bad.find("v.toml:"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("expected items from"), std::string::npos) << bad;
+}
+
+}  // namespace
+}  // namespace tumble
