@@ -14,7 +14,7 @@ if [ ! -x "$tumble" ]; then
   exit 1
 fi
 # scene frame docs-name: frame 40 = the title card; 1126 = the stop at the
-# first flip (t = 1.34 s, the stem across L); 1376 = t = 2.3 s, Π near −e₂
+# first flip (t = 1.29 s, the stem across L); 1376 = t = 2.28 s, Π near −e₂
 # between the flips; poinsot 1083 = t = 3 s;
 # tennis_racket 500 = the hold at the middle racket's first flip (t = 0.47 s);
 # dzhanibekov 700 = the demo's hold at flip 2 (t = 5.09 s: ω 28° off L,

@@ -172,7 +172,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom",
+                   "dot_scale", "dark_levels"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -213,6 +214,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     if (r.has("level_arrows") && v.kind != ViewKind::momentum_sphere)
       r.error("level_arrows", "only a momentum_sphere view draws level curves");
     v.level_arrows = r.boolean("level_arrows").value_or(true);
+    read_sphere_marks(r, v);
     read_turn(r, ctx, s, body, v);
     read_build_up(r, s, body, v);
     s.render.explain.views.push_back(std::move(v));

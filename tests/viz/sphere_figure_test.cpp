@@ -338,5 +338,41 @@ TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   EXPECT_GT(grey(lesson), 0);
 }
 
+// A hall's sphere: Π's dot dot_scale times larger, the other levels dark,
+// opaque and wider; every named curve as it was.
+TEST(SphereFigure, DotScaleAndDarkLevelsChangeOnlyWhatTheyName) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  in.energy_ellipsoid = false;
+  View plain;
+  build_momentum_sphere(plain, in);
+  in.dot_scale = 3, in.dark_levels = true;
+  View bold;
+  build_momentum_sphere(bold, in);
+  auto dot = [](const View& v) {
+    for (const PointItem& p : v.points)
+      if (p.name == "momentum_point") return p.radius;
+    return 0.0;
+  };
+  EXPECT_DOUBLE_EQ(dot(bold), 3 * dot(plain));
+  ASSERT_EQ(bold.polylines.size(), plain.polylines.size());
+  int levels = 0;
+  for (std::size_t i = 0; i < plain.polylines.size(); ++i) {
+    const PolylineItem &a = plain.polylines[i], &b = bold.polylines[i];
+    if (a.name.empty() && glm::vec3(a.color) == glm::vec3(color_of(Meaning::other_levels))) {
+      ++levels;
+      EXPECT_LT(b.color.r, 0.7f * a.color.r);
+      EXPECT_EQ(b.color.a, 1.0f);
+      EXPECT_LT(a.color.a, 0.6f);
+      EXPECT_GT(b.width_px, 1.5f * a.width_px);
+    } else {
+      EXPECT_EQ(b.color, a.color) << a.name;
+      EXPECT_EQ(b.width_px, a.width_px) << a.name;
+    }
+  }
+  EXPECT_GT(levels, 8);
+}
+
 }  // namespace
 }  // namespace tumble::viz

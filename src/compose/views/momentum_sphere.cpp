@@ -162,6 +162,8 @@ class SpherePanel : public Panel {
     in.line_scale = static_cast<float>(view.line_scale);
     in.levels = view.levels;
     in.level_arrows = view.level_arrows;
+    in.dot_scale = static_cast<float>(view.dot_scale);
+    in.dark_levels = view.dark_levels;
     return in;
   }
 
