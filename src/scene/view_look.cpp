@@ -33,6 +33,12 @@ void read_sphere_options(TableReader& r, ViewConfig& v) {
   v.tip_names = r.boolean("tip_names").value_or(true);
   if (r.has("zoom") && v.kind != ViewKind::momentum_sphere) r.error("zoom", "only a momentum_sphere view has a zoom");
   v.zoom = r.number("zoom", Range::closed(1, 1.5)).value_or(1);
+  if (r.has("ellipsoid_opacity") && v.kind != ViewKind::momentum_sphere)
+    r.error("ellipsoid_opacity", "only a momentum_sphere view draws an energy ellipsoid");
+  v.ellipsoid_opacity = r.number("ellipsoid_opacity", Range::closed(0.05, 1));
+  if (r.has("level_arrows") && v.kind != ViewKind::momentum_sphere)
+    r.error("level_arrows", "only a momentum_sphere view draws level curves");
+  v.level_arrows = r.boolean("level_arrows").value_or(true);
   read_world_look(r, v);
   if (v.kind != ViewKind::momentum_sphere) return;
   v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
