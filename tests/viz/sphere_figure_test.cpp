@@ -293,13 +293,26 @@ TEST(SphereFigure, WithoutLevelArrowsNoneIsDrawnOrPromised) {
   EXPECT_GT(without.polylines.size(), 10u);  // the grey levels themselves stay
 }
 
+// A lesson's sphere input near the saddle, seen by the textbook camera, no ellipsoid.
+MomentumSphereInput lesson_input(const Eigen::Vector3d& pi) {
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  in.energy_ellipsoid = false;
+  return in;
+}
+
+// Π's dot radius in a built sphere (0 when none is drawn).
+double dot_radius(const View& v) {
+  for (const PointItem& p : v.points)
+    if (p.name == "momentum_point") return p.radius;
+  return 0.0;
+}
+
 // A lesson's sphere: Π's path so far (history) instead of its whole polhode,
 // thicker curves, a larger Π dot and fewer other levels, each when asked.
 TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   const Eigen::Vector3d pi = near_saddle();
-  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
-  in.camera = textbook_camera(kI, pi);
-  in.energy_ellipsoid = false;
+  MomentumSphereInput in = lesson_input(pi);
   View plain;
   build_momentum_sphere(plain, in);
   in.trail = true, in.line_scale = 2, in.levels = 4;
@@ -322,12 +335,7 @@ TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   // The separatrix's dashes lie over the path (further out), so a path just inside it does not hide it.
   EXPECT_GT(glm::length(named(lesson, "separatrix")[0]->points[0]), glm::length(path[0]->points[0]));
   EXPECT_FLOAT_EQ(named(lesson, "separatrix")[0]->width_px, 2 * named(plain, "separatrix")[0]->width_px);
-  auto dot = [](const View& v) {
-    for (const PointItem& p : v.points)
-      if (p.name == "momentum_point") return p.radius;
-    return 0.0;
-  };
-  EXPECT_DOUBLE_EQ(dot(lesson), 2 * dot(plain));
+  EXPECT_DOUBLE_EQ(dot_radius(lesson), 2 * dot_radius(plain));
   // Other levels: unnamed grey curves behind the ball's front (fewer with fewer levels).
   auto grey = [](const View& v) {
     int n = 0;
@@ -342,20 +350,13 @@ TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
 // opaque and wider; every named curve as it was.
 TEST(SphereFigure, DotScaleAndDarkLevelsChangeOnlyWhatTheyName) {
   const Eigen::Vector3d pi = near_saddle();
-  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
-  in.camera = textbook_camera(kI, pi);
-  in.energy_ellipsoid = false;
+  MomentumSphereInput in = lesson_input(pi);
   View plain;
   build_momentum_sphere(plain, in);
   in.dot_scale = 3, in.dark_levels = true;
   View bold;
   build_momentum_sphere(bold, in);
-  auto dot = [](const View& v) {
-    for (const PointItem& p : v.points)
-      if (p.name == "momentum_point") return p.radius;
-    return 0.0;
-  };
-  EXPECT_DOUBLE_EQ(dot(bold), 3 * dot(plain));
+  EXPECT_DOUBLE_EQ(dot_radius(bold), 3 * dot_radius(plain));
   ASSERT_EQ(bold.polylines.size(), plain.polylines.size());
   int levels = 0;
   for (std::size_t i = 0; i < plain.polylines.size(); ++i) {
