@@ -18,7 +18,7 @@ fi
 # between the flips; poinsot 1083 = t = 3 s;
 # tennis_racket 500 = the hold at the middle racket's first flip (t = 0.47 s);
 # dzhanibekov 700 = the demo's hold at flip 2 (t = 5.09 s: ω 28° off L,
-# the two stable spins beside the T); methods_compare 900 = the hold at t = 10 s,
+# the two stable spins either side of the T); methods_compare 900 = the hold at t = 10 s,
 # explicit Euler (dt/4) +23 % and climbing, RK4 on the grey exact body.
 for spec in "dzhanibekov 700 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 1126 explained_flip" \
             "dzhanibekov_explained 1376 explained_after" "poinsot 1083 poinsot_3s" \
