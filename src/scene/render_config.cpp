@@ -126,6 +126,7 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.arrow_length = r.number("arrow_length", Range::closed(0.25, 4)).value_or(d.arrow_length);
   d.text_scale = r.number("text_scale", Range::closed(0.5, 1.5)).value_or(d.text_scale);
   d.tip_names_further = r.boolean("tip_names_further").value_or(d.tip_names_further);
+  d.angle_arc = r.boolean("angle_arc").value_or(d.angle_arc);
   if (const auto items = read_overlay_items(r, "overlay")) {
     d.overlay_items = *items;  // a list of the overlay's items: only those are shown
     d.overlay = d.overlay_items.any();
@@ -250,7 +251,7 @@ void read_render_config(TableReader& root, LoadContext& ctx, Scene& scene) {
     TableReader r(*t, "draw", ctx.diag,
                   {"box", "surface", "axes", "particles", "L", "omega", "trails", "trail_axes", "grid", "overlay", "legend", "labels", "key",
                    "flips", "arrow_width", "arrow_length", "text_scale",
-                   "tip_names_further", "flip_badge"});
+                   "tip_names_further", "flip_badge", "angle_arc"});
     read_draw(r, ctx, scene);
   }
   if (auto t = root.subtable("compare")) {

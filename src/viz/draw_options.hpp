@@ -24,6 +24,7 @@ struct DrawOptions {
   double arrow_length = 1;        ///< L's and ω's length, times their usual (kLReach, kOmegaReach)
   double text_scale = 1;          ///< text sizes but the title card's and captions', times their usual (viz::text_px)
   bool tip_names_further = false; ///< a tip's name with no place beside its head may go a line or two further out
+  bool angle_arc = false;         ///< with L and ω: an arc from L to ω at the body, the angle between them (viz/angle_arc.hpp)
 };
 
 }  // namespace tumble::viz

@@ -1,5 +1,7 @@
 #include "viz/scene_view.hpp"
 
+#include "viz/angle_arc.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -142,6 +144,12 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
       if (w.norm() > 0)
         view.arrows.push_back({to_glm(s.c), to_glm(kOmegaReach * opt.arrow_length * size * w.normalized()), 0.02 * opt.arrow_width * size,
                                kOmegaColor, "omega", "\u03c9", 1});
+      // The angle from L to ω as an arc at 0.7 of ω's length: seen even where ω lies along L in the picture.
+      if (opt.angle_arc && opt.angular_momentum && w.norm() > 0 && s.L.norm() > 0)
+        if (PolylineItem arc = angle_arc(to_glm(s.c), to_glm(s.L), to_glm(w), 0.7 * kOmegaReach * opt.arrow_length * size,
+                                         kOmegaColor, 3.0f * static_cast<float>(opt.arrow_width));
+            !arc.points.empty())
+          view.polylines.push_back(std::move(arc));
     }
   }
   if (trails && opt.trail_seconds > 0)

@@ -1,6 +1,7 @@
 // The draw list puts box corners and axis tips where the core's state says.
 #include <gtest/gtest.h>
 
+#include "core/dynamics.hpp"
 #include "core/mass_properties.hpp"
 #include "core/particle_cloud.hpp"
 #include "viz/particle_set.hpp"
@@ -110,6 +111,42 @@ TEST(SceneView, ArrowLengthScalesLAndOmegaOnly) {
     EXPECT_NEAR(glm::length(b.arrows[i].origin - glm::dvec3(0)), k * glm::length(a.arrows[i].origin - glm::dvec3(0)), 1e-12)
         << a.arrows[i].name;
   }
+}
+
+// [draw] angle_arc: an arc about the centre of mass from L's direction to ω's,
+// its points on one circle, sweeping exactly ∠(ω, L); none without the option.
+TEST(SceneView, TheAngleArcRunsFromLToOmega) {
+  ParticleCloud cloud = make_box({2.0, 1.0, 0.5}, {8, 4, 2}, 3.0);
+  RigidBodyModel model = make_model("b", compute_mass_properties(cloud, "b"), ForceSet{});
+  InitialConditions ic;
+  ic.position = {1, 2, 3};
+  ic.omega = {0.3, 1.0, 2.0};
+  const BodyState state = make_state(model, ic);
+  DrawOptions opt;
+  opt.angular_momentum = opt.omega = true;
+  View plain, arc;
+  add_bodies(plain, {{&model, &cloud, state}}, opt, nullptr, 0);
+  EXPECT_TRUE(plain.polylines.empty());
+  opt.angle_arc = true;
+  add_bodies(arc, {{&model, &cloud, state}}, opt, nullptr, 0);
+  ASSERT_EQ(arc.polylines.size(), 1u);
+  const PolylineItem& p = arc.polylines[0];
+  EXPECT_EQ(p.name, "angle_arc");
+  ASSERT_GE(p.points.size(), 3u);
+  const glm::dvec3 c(1, 2, 3);
+  const Eigen::Vector3d w = omega_world(model, state);
+  const glm::dvec3 L = glm::normalize(glm::dvec3(state.L.x(), state.L.y(), state.L.z()));
+  const glm::dvec3 W = glm::normalize(glm::dvec3(w.x(), w.y(), w.z()));
+  const double r = glm::length(p.points.front() - c);
+  EXPECT_GT(r, 0);
+  for (const glm::dvec3& x : p.points) EXPECT_NEAR(glm::length(x - c), r, 1e-9 * r);
+  EXPECT_NEAR(glm::dot(glm::normalize(p.points.front() - c), L), 1.0, 1e-12);
+  EXPECT_NEAR(glm::dot(glm::normalize(p.points.back() - c), W), 1.0, 1e-12);
+  // No arc for a spin about a principal axis (ω along L).
+  ic.omega = {0, 0, 2.0};
+  View along;
+  add_bodies(along, {{&model, &cloud, make_state(model, ic)}}, opt, nullptr, 0);
+  EXPECT_TRUE(along.polylines.empty());
 }
 
 TEST(SceneView, TrailsKeepOnlyTheWindow) {
