@@ -196,7 +196,7 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
   const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
                       std::any_of(cell_runs_.begin(), cell_runs_.end(), [&](std::size_t r) { return runs_[r].label != "exact"; });
-  if (ghosts) key.push_back({viz::Swatch::block, {kGhostColor}, "grey: the exact solution"});
+  if (ghosts) key.push_back({viz::Swatch::block, {kGhostColor}, "grey body: the exact solution"});
   return key;
 }
 

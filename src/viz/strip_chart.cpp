@@ -144,7 +144,7 @@ std::string decade(int d) {
 // Does a value tick at `y` (px, its top) keep clear of every level's name?
 bool clear_of_levels(const StripChartInput& in, const ChartMap& m, float y, float f) {
   for (const StripChartInput::Level& l : in.levels)
-    if (l.value >= in.lo && l.value <= in.hi && std::abs(m.pixel(m.at(in.t0, l.value)).y - 0.5f * f - y) < 1.1f * f)
+    if (!l.label.empty() && l.value >= in.lo && l.value <= in.hi && std::abs(m.pixel(m.at(in.t0, l.value)).y - 0.5f * f - y) < 1.1f * f)
       return false;
   return true;
 }
@@ -226,8 +226,45 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
 // chart, a name would lie across the curves, the flips' marks and the playhead).
 void add_level_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   for (const StripChartInput::Level& l : in.levels) {
-    if (l.value < in.lo || l.value > in.hi) continue;
+    if (l.label.empty() || l.value < in.lo || l.value > in.hi) continue;
     view.texts.push_back({l.label, {4.0f, m.pixel(m.at(in.t0, l.value)).y - 0.5f * f}, f, kLevelColor, "level_label"});
+  }
+}
+
+// Notes inside the chart (a level's, a point's) a little smaller than the ticks: they sit among the curves.
+constexpr float kNoteScale = 0.85f;
+
+// Each level's note along its dashed line, inside the chart: above it at the
+// right end (rising curves have passed it there), or under a line too close
+// to the top border for that, at the left end (where they have not reached it yet).
+void add_level_notes(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  const float left = m.pixel(m.at(in.t0, in.lo)).x, right = m.pixel(m.at(in.t1, in.lo)).x;
+  const float top = m.pixel(m.at(in.t0, in.hi)).y;
+  const float s = kNoteScale * f;
+  for (const StripChartInput::Level& l : in.levels) {
+    if (l.note.empty() || l.value < in.lo || l.value > in.hi) continue;
+    const float y = m.pixel(m.at(in.t0, l.value)).y;
+    const glm::vec2 at = y - 1.3f * s > top ? glm::vec2{right - 0.3f * f - text_width(l.note, s), y - 1.15f * s}
+                                            : glm::vec2{left + 0.3f * f, y + 0.15f * s};
+    view.texts.push_back({l.note, at, s, kLevelColor, "level_note"});
+  }
+}
+
+// Each point reached: a ring round it in its colour, its label to the right, just under its height.
+void add_points(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  for (const StripChartInput::Point& p : in.points) {
+    if (p.t > in.playhead + 1e-9 || p.value < in.lo || p.value > in.hi) continue;
+    const glm::dvec3 c = m.at(p.t, p.value);
+    const double rw = 0.45 * f * (m.at(in.t0, in.hi).y - m.at(in.t0, in.lo).y) /
+                      std::max(1.0f, m.pixel(m.at(in.t0, in.lo)).y - m.pixel(m.at(in.t0, in.hi)).y);
+    std::vector<glm::dvec3> ring;
+    for (int i = 0; i <= 32; ++i) {
+      const double a = 2 * 3.14159265358979 * i / 32;
+      ring.push_back({c.x + rw * std::cos(a), c.y + rw * std::sin(a), 0.0});
+    }
+    view.polylines.push_back({std::move(ring), p.color, 3.0f, false, "point"});
+    const glm::vec2 px = m.pixel(c);
+    view.texts.push_back({p.label, {px.x + 0.6f * f, px.y + 0.25f * f}, kNoteScale * f, p.color, "point_label"});
   }
 }
 
@@ -275,6 +312,8 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   add_time_ticks(view, in, m, w, f);
   float x = w - head.key_w;
   add_level_labels(view, in, m, f);
+  add_level_notes(view, in, m, f);
+  add_points(view, in, m, f);
   if (in.direct_labels) add_head_labels(view, in, m, f);
   for (const Series& s : in.direct_labels ? std::vector<Series>{} : in.series) {
     TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};
