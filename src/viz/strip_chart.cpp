@@ -263,8 +263,11 @@ void add_points(View& view, const StripChartInput& in, const ChartMap& m, float 
       ring.push_back({c.x + rw * std::cos(a), c.y + rw * std::sin(a), 0.0});
     }
     view.polylines.push_back({std::move(ring), p.color, 3.0f, false, "point"});
+    // The label until the playhead reaches it (the stop at the point reads it); then the ring alone,
+    // so that the playhead and the flips' marks never run across the words.
     const glm::vec2 px = m.pixel(c);
-    view.texts.push_back({p.label, {px.x + 0.6f * f, px.y + 0.25f * f}, kNoteScale * f, p.color, "point_label"});
+    if (m.pixel(m.at(in.playhead, in.lo)).x < px.x + 0.5f * f)
+      view.texts.push_back({p.label, {px.x + 0.6f * f, px.y + 0.25f * f}, kNoteScale * f, p.color, "point_label"});
   }
 }
 
