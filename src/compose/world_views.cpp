@@ -51,6 +51,8 @@ void add_labels(viz::View& v, const std::vector<viz::BodySnapshot>& snaps, const
   }
 }
 
+}  // namespace
+
 // Once per body: mesh surfaces, the particles that can be seen, part colours.
 viz::BodyLook body_look(const scene::Body& b, bool particles) {
   viz::BodyLook look;
@@ -77,6 +79,8 @@ viz::BodyLook body_look(const scene::Body& b, bool particles) {
   look.particles = viz::make_particle_set(b.cloud, colors, static_cast<float>(viz::particle_radius(b.model)));
   return look;
 }
+
+namespace {
 
 // The energy readout's floor: 1e-13, under which the digits are round-off
 // (they would change with the compiler and break golden images for no

@@ -33,6 +33,9 @@ viz::Camera scene_camera(const scene::Scene& s, const std::vector<std::vector<gl
 viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& L, int sign, double azimuth_deg,
                           double elevation_deg, double distance, double fov_y_deg, double roll_deg = 0);
 
+/// What is drawn of body `b` (its surfaces and colours; its visible particles if `particles`), once per body.
+viz::BodyLook body_look(const scene::Body& b, bool particles);
+
 /// The exact solution's body in the other methods' cells of a [compare] grid:
 /// a pale, cool grey, faint, so it reads as "where the body should be" and not
 /// as a second body of the method's own colour.

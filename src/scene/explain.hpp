@@ -83,6 +83,9 @@ struct ViewConfig {
   double ellipsoid_from = 0;        ///< momentum_sphere: simulated s from which the ellipsoid fades in (1 s of video)
   std::optional<double> ellipsoid_opacity;  ///< momentum_sphere: the ellipsoid's opacity; none = the figure's veil
   bool level_arrows = true;         ///< momentum_sphere: the other levels' direction arrows (false: a small sphere's, unseen)
+  double zoom = 1;                  ///< momentum_sphere: the figure this much larger in its content (room kept for fewer labels)
+  double dot_scale = 1;             ///< momentum_sphere: Π's dot radius times this (on top of line_scale)
+  bool dark_levels = false;         ///< momentum_sphere: the other levels dark grey and opaque (read from afar), not faint
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
   double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)

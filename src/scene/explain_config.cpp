@@ -172,7 +172,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     TableReader r(*list[i], indexed("views", i), ctx.diag,
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
-                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box"});
+                   "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom",
+                   "dot_scale", "dark_levels"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -207,12 +208,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     if (r.has("ellipsoid_from") && v.kind != ViewKind::momentum_sphere)
       r.error("ellipsoid_from", "only a momentum_sphere view draws an energy ellipsoid");
     v.ellipsoid_from = read_time(r, "ellipsoid_from", s, body).value_or(r.has("ellipsoid_from") ? 1e300 : 0);
-    if (r.has("ellipsoid_opacity") && v.kind != ViewKind::momentum_sphere)
-      r.error("ellipsoid_opacity", "only a momentum_sphere view draws an energy ellipsoid");
-    v.ellipsoid_opacity = r.number("ellipsoid_opacity", Range::closed(0.05, 1));
-    if (r.has("level_arrows") && v.kind != ViewKind::momentum_sphere)
-      r.error("level_arrows", "only a momentum_sphere view draws level curves");
-    v.level_arrows = r.boolean("level_arrows").value_or(true);
+    read_sphere_marks(r, v);
     read_turn(r, ctx, s, body, v);
     read_build_up(r, s, body, v);
     s.render.explain.views.push_back(std::move(v));

@@ -54,6 +54,7 @@ std::optional<double> read_time(TableReader& r, std::string_view key, const Scen
 /// A momentum_sphere view's `turn` and `build_up` (sphere_motion.cpp); errors for other kinds.
 void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t body, ViewConfig& v);
 void read_build_up(TableReader& r, const Scene& s, std::size_t body, ViewConfig& v);
+void read_sphere_marks(TableReader& r, ViewConfig& v);
 
 /// A view's look (view_look.cpp): a world view's trail_axes, box, line_scale, tip_names;
 /// a momentum_sphere's energy_ellipsoid, path, line_scale, levels.

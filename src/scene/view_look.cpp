@@ -1,5 +1,5 @@
 // A view's look options: a world view's trails, box, line widths and tip names;
-// a momentum_sphere's ellipsoid, path and level curves. Errors name kinds that do not take them.
+// a momentum_sphere's ellipsoid, path, level curves and zoom. Errors name kinds that do not take them.
 #include <array>
 #include <string>
 
@@ -31,6 +31,14 @@ void read_sphere_options(TableReader& r, ViewConfig& v) {
   if (r.has("tip_names") && v.kind != ViewKind::world) r.error("tip_names", "only a world view takes tip_names");
   v.line_scale = r.number("line_scale", Range::closed(0.25, 4)).value_or(1);
   v.tip_names = r.boolean("tip_names").value_or(true);
+  if (r.has("zoom") && v.kind != ViewKind::momentum_sphere) r.error("zoom", "only a momentum_sphere view has a zoom");
+  v.zoom = r.number("zoom", Range::closed(1, 1.5)).value_or(1);
+  if (r.has("ellipsoid_opacity") && v.kind != ViewKind::momentum_sphere)
+    r.error("ellipsoid_opacity", "only a momentum_sphere view draws an energy ellipsoid");
+  v.ellipsoid_opacity = r.number("ellipsoid_opacity", Range::closed(0.05, 1));
+  if (r.has("level_arrows") && v.kind != ViewKind::momentum_sphere)
+    r.error("level_arrows", "only a momentum_sphere view draws level curves");
+  v.level_arrows = r.boolean("level_arrows").value_or(true);
   read_world_look(r, v);
   if (v.kind != ViewKind::momentum_sphere) return;
   v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);

@@ -31,16 +31,24 @@ Box grown(const Box& b, float g) { return {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + 
 
 bool has_subject(const TextItem& t) { return t.subject_px.z > t.subject_px.x; }
 
-// What no label covers: the other text and its backdrops, and named points
-// (the Π dot), ± 3 % of the view's height.
-std::vector<Box> text_obstacles(const View& view, float w, float h) {
-  std::vector<Box> taken;
+// Named points (the Π dot) on screen: ± 3 % of the view's height, or
+// (`as_drawn`) as large as they are drawn.
+std::vector<Box> point_boxes(const View& view, float w, float h, bool as_drawn) {
+  std::vector<Box> out;
+  const glm::dvec3 right = glm::normalize(glm::cross(view.camera.target - view.camera.position, view.camera.up));
   for (const PointItem& p : view.points) {
-    glm::vec2 c;
+    glm::vec2 c, edge;
     if (p.name.empty() || !project_to_viewport(view.camera, w, h, p.position, c)) continue;
-    const float r = 0.03f * h;
-    taken.push_back({c.x - r, c.y - r, c.x + r, c.y + r});
+    float r = 0.03f * h;
+    if (as_drawn && project_to_viewport(view.camera, w, h, p.position + p.radius * right, edge)) r = glm::length(edge - c);
+    out.push_back({c.x - r, c.y - r, c.x + r, c.y + r});
   }
+  return out;
+}
+
+// What no label covers: the other text and its backdrops, and (`points`) the named points' wide boxes.
+std::vector<Box> text_obstacles(const View& view, float w, float h, bool points = true) {
+  std::vector<Box> taken = points ? point_boxes(view, w, h, false) : std::vector<Box>{};
   for (const TextItem& t : view.texts)
     if (!is_label(t)) {
       taken.push_back(text_box(t));
@@ -168,6 +176,12 @@ std::optional<glm::vec2> clear_spot(const Box& near, glm::vec2 size, float gap, 
 std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());
+  // An axis end's name keeps a quarter line from the other text but may come up
+  // to Π's dot as drawn (never over it): near the view's edge a sphere's tip,
+  // with Π passing it, has no other place within a few lines.
+  std::vector<Box> taken_by_axes = text_obstacles(view, width_px, height_px, false);
+  taken_by_axes.insert(taken_by_axes.end(), also_clear.begin(), also_clear.end());
+  const std::vector<Box> dots = point_boxes(view, width_px, height_px, true);
   const bool labels = std::any_of(view.texts.begin(), view.texts.end(), is_label);
   const std::vector<Box> solid = labels ? solid_obstacles(view, width_px, height_px) : std::vector<Box>{};
   std::vector<TextItem> kept, left_out;
@@ -188,10 +202,14 @@ std::vector<TextItem> settle_labels(View& view, float width_px, float height_px,
       if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
       const Box wide = grown(b, gap);
       const auto hit = [&](const Box& o) { return o.overlaps(wide); };
-      if (std::any_of(taken.begin(), taken.end(), hit)) continue;
+      if (is_pinned_label(t) ? std::any_of(taken.begin(), taken.end(), hit)
+                             : std::any_of(taken_by_axes.begin(), taken_by_axes.end(), hit) ||
+                                   std::any_of(dots.begin(), dots.end(), [&](const Box& o) { return o.overlaps(b); }))
+        continue;
       if ((subject && own.overlaps(wide)) || std::any_of(solid.begin(), solid.end(), hit)) continue;
       t.position_px = p;
       taken.push_back(b);
+      taken_by_axes.push_back(b);
       kept.push_back(std::move(t));
       placed = true;
       break;

@@ -83,7 +83,7 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   }
   for (const SphereTrack& t : in.tracks) out.push_back({Swatch::line, {t.color}, t.name});
   if (draws_energy_ellipsoid(in))
-    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, kEnergyEllipsoidAlpha)}, "energy ellipsoid"});
+    out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, in.ellipsoid_alpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
   out.push_back(key_entry(Meaning::other_levels, in.level_arrows ? "other energies (arrow: direction)" : "other energies"));
@@ -154,6 +154,31 @@ void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vec
 
 namespace {
 
+// A family of levels spaced evenly in 2E between L²/I3 and L²/I1 (on the unit
+// sphere), each with its direction; dark ones (the palette's grey at 60 %
+// brightness, opaque, wider) read on the lit ball from the back of a hall.
+void add_other_levels(View& view, const MomentumSphereInput& in) {
+  const Eigen::Vector3d& I = in.inertia;
+  const double lo = 1 / I[2], hi = 1 / I[0];
+  auto level_color = [&](float alpha) {
+    glm::vec4 c = color_of(Meaning::other_levels, alpha);
+    if (in.dark_levels) c = glm::vec4(glm::vec3(c) * 0.6f, c.a);
+    return c;
+  };
+  const float width = (in.dark_levels ? 2.0f : 1.2f) * in.line_scale;
+  for (int j = 1; j < in.levels; ++j) {
+    const double two_E = lo + (hi - lo) * j / in.levels;
+    if (std::abs(two_E - 1 / I[1]) <= 1e-3 * (hi - lo)) continue;
+    for (const auto& c : polhodes(I, 1.0, two_E, 96)) {
+      std::vector<glm::dvec3> points;
+      for (const Eigen::Vector3d& x : c) points.push_back(to_glm(x));
+      view.polylines.push_back({std::move(points), level_color(in.dark_levels ? 1.0f : 0.55f), width, false});
+      if (in.level_arrows)
+        add_direction_arrows(view, c, I, 1, level_color(in.dark_levels ? 1.0f : 0.8f), in.dark_levels ? 0.13 : 0.09);
+    }
+  }
+}
+
 // Each track's path so far, a hair outside the sphere, and its dot now (its own colour).
 void add_tracks(View& view, const MomentumSphereInput& in, double L) {
   const float w = in.line_scale;
@@ -197,17 +222,8 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     for (const Eigen::Vector3d& x : curve) u.push_back(x / L);
     return u;
   };
-  // A family of levels spaced evenly in 2E between L²/I3 and L²/I1, each with its direction.
-  const double lo = L * L / I[2], hi = L * L / I[0];
+  if (in.reveal.curves) add_other_levels(view, in);
   const float w = in.line_scale;
-  for (int j = 1; in.reveal.curves && j < in.levels; ++j) {
-    const double two_E = lo + (hi - lo) * j / in.levels;
-    if (std::abs(two_E - L * L / I[1]) <= 1e-3 * (hi - lo)) continue;
-    for (const auto& c : polhodes(I, L, two_E, 96)) {
-      view.polylines.push_back({scaled(c), color_of(Meaning::other_levels, 0.55f), 1.2f * w, false});
-      if (in.level_arrows) add_direction_arrows(view, unit(c), I, 1, color_of(Meaning::other_levels, 0.8f), 0.09);
-    }
-  }
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
   add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
@@ -226,7 +242,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     add_tracks(view, in, L);
   } else {
     // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
-    view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w, color_of(Meaning::momentum_point), "momentum_point"});
+    view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w * in.dot_scale, color_of(Meaning::momentum_point), "momentum_point"});
   }
   show_far_side(view, front_first, kSphereBall);
 }

@@ -68,6 +68,8 @@ struct MomentumSphereInput {
   float line_scale = 1;                     ///< the curves' widths and Π's dot, times this
   int levels = 10;                          ///< other energies: the levels between L²/I3 and L²/I1 in this many steps
   bool level_arrows = true;                 ///< each other level's direction arrow (and the key's promise of it)
+  float dot_scale = 1;                      ///< Π's dot radius, times this (on top of line_scale)
+  bool dark_levels = false;                 ///< the other levels dark grey and opaque, wider, arrows larger: read from afar
   SphereReveal reveal = {};                 ///< what a build-up shows so far (the ellipsoid: energy_ellipsoid, ellipsoid_alpha)
   /// Several paths on the one sphere (the same body stepped by several methods), drawn in this
   /// order, each ended by its dot, instead of `history` and Π's own dot (`momentum` still sets |L|).

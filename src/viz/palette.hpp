@@ -48,7 +48,7 @@ inline const std::array<MeaningColor, static_cast<std::size_t>(Meaning::count)> 
     {Meaning::omega, "omega", "purple", {0.60f, 0.20f, 0.75f, 1}},
     {Meaning::momentum_point, "momentum_point", "black", {0.05f, 0.05f, 0.07f, 1}},
     {Meaning::polhode, "polhode", "crimson", {0.85f, 0.10f, 0.25f, 1}},
-    {Meaning::herpolhode, "herpolhode", "dark teal", {0.0f, 0.40f, 0.45f, 1}},
+    {Meaning::herpolhode, "herpolhode", "dark brown", {0.42f, 0.24f, 0.04f, 1}},
     {Meaning::separatrix, "separatrix", "sky blue", {0.34f, 0.71f, 0.91f, 1}},
     {Meaning::other_levels, "other_levels", "light grey", {0.55f, 0.56f, 0.60f, 1}},
     {Meaning::plane, "plane", "grey", {0.45f, 0.47f, 0.52f, 1}},

@@ -13,17 +13,17 @@ class InfoCli : public Cli {};
 // `tumble info` lists the flips and the frames with the time each shows. As
 // dzhanibekov_explained declares them: 1/8 speed throughout; 30 fps × (3 s
 // title + 18.6 (the sphere's build-up and caption 1) + 2 + 4 + 3 + 10 s holds + 4.5 s × 8) = 2298 frames
-// and the last; flip 1's hold at flip 1 = 1.3383 s, from video 3 + 18.6 + 2 + 8 × 1.3383 = 34.306 s (frame 1030).
+// and the last; flip 1's hold at flip 1 = 1.2934 s, from video 3 + 18.6 + 2 + 8 × 1.2934 = 33.947 s (frame 1019).
 TEST_F(InfoCli, ListsFlipsAndTheFramesClock) {
   const Result r = run("info " + scene("dzhanibekov_explained.toml"));
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("flips (e2 ⊥ L)     1.3383, 3.4591 s in 4.5 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("flips (e2 ⊥ L)     1.2934, 3.6832 s in 4.5 s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("frames 2299 at 30 fps"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("0-89     video   0.000-2.967   s  title card, t = 0 s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("648-707    video  21.600-23.567  s  t = 0.0000-0.2458 s  ×1/8"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("1030-1149   video  34.333-38.300  s  hold, t = 1.3383 s"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("t = 0.2500-1.3375 s  ×1/8"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("hold, t = 3.5091 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1019-1138   video  33.967-37.933  s  hold, t = 1.2934 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("t = 0.2500-1.2917 s  ×1/8"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hold, t = 3.7332 s"), std::string::npos) << r.out;
   const Result j = run("info --json " + scene("dzhanibekov_explained.toml"));
   ASSERT_EQ(j.code, 0) << j.err;
   EXPECT_NE(j.out.find("\"flip_times\": ["), std::string::npos) << j.out;

@@ -152,7 +152,7 @@ TEST(BodyFrame, AFixedCameraDrawsNoTrailOfL) {
 }
 
 // dzhanibekov_explained's readout of the angle between ω and L: at the start
-// the exact angle of ω_body = (0.5, 8, 0.35) rad/s and L = Iω (principal
+// the exact angle of ω_body = (0.25, 4, 0.7) rad/s and L = Iω (principal
 // moments from the model), and at flip 1's hold ω swung well away from L.
 TEST(Overlay, AngleReadoutShowsOmegaLeavingL) {
   const tumble::scene::Scene s =
@@ -160,13 +160,13 @@ TEST(Overlay, AngleReadoutShowsOmegaLeavingL) {
   ASSERT_TRUE(s.render.draw.overlay_items.angle);
   const double fps = s.render.output.fps;
   const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
-  const long k1 = frame_at(clock, 1.40);  // flip 1 is at 1.34 s (tumble info)
+  const long k1 = frame_at(clock, 1.29);  // flip 1 is at 1.2934 s (tumble info)
   const auto runs = tumble::scene::simulate_runs(s, k1 + 1, fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 1280, 720);
   auto readout = [&](long k) { return text_from(fb, k, "\u2220(\u03c9, L) = "); };
   const long k0 = first_showing(fb, k1, "\u2220(\u03c9, L) = ");
   ASSERT_LT(clock.time(k0), 0.01);
-  const Eigen::Vector3d w(0.5, 8.0, 0.35), L = s.bodies[0].model.inertia.cwiseProduct(w);
+  const Eigen::Vector3d w(0.25, 4.0, 0.7), L = s.bodies[0].model.inertia.cwiseProduct(w);
   const double deg = std::acos(w.dot(L) / (w.norm() * L.norm())) * 180 / std::numbers::pi;
   char want[48];
   std::snprintf(want, sizeof want, "\u2220(\u03c9, L) =   %.1f\u00b0", deg);

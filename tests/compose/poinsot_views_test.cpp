@@ -157,3 +157,53 @@ TEST(PoinsotViews, CurveNamesAreAtTheirCurvesOrLedToThem) {
 }
 
 }  // namespace
+
+namespace {
+
+// Each Poinsot view draws the body the ellipsoid belongs to inside it: its
+// surfaces (named "ellipsoid_body", translucent, in the body's colour) lie
+// within the ellipsoid in every frame checked, their farthest vertex near
+// its surface (the box fills it), and the box's long edge along e₁ (the
+// ellipsoid's longest axis: the body turns with it).
+TEST(PoinsotViews, EachEllipsoidHoldsItsBodyTurnedWithIt) {
+  const Lesson l;
+  const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
+  int views = 0;
+  for (const long k : {200L, 1300L, l.frames - 1}) {
+    std::size_t poinsot = 0;
+    for (const tumble::viz::View& v : fb.build(k).views) {
+      if (v.name != "poinsot") continue;
+      const std::size_t body = poinsot++ == 0 ? 0 : 1;  // box 1 ("stable"), box 2 ("tumbling")
+      const Eigen::Quaterniond q = l.runs[0].frames[static_cast<std::size_t>(k)][body].q;
+      const tumble::viz::SurfaceItem* ellipsoid = nullptr;
+      std::vector<const tumble::viz::SurfaceItem*> inside;
+      for (const tumble::viz::SurfaceItem& s : v.surfaces) {
+        if (s.name == "ellipsoid") ellipsoid = &s;
+        if (s.name != "ellipsoid_body") continue;
+        inside.push_back(&s);
+        EXPECT_LT(s.color.a, 1.0f) << "translucent";
+      }
+      ASSERT_TRUE(ellipsoid);
+      ASSERT_FALSE(inside.empty()) << "frame " << k << " box " << body + 1;
+      EXPECT_LT(inside.front() - v.surfaces.data(), ellipsoid - v.surfaces.data()) << "drawn before the glass";
+      const glm::dmat4 to_unit = glm::inverse(ellipsoid->model);  // the ellipsoid is the unit sphere there
+      double reach = 0;
+      Eigen::Vector3d far = Eigen::Vector3d::Zero();
+      for (const auto* s : inside)
+        for (const glm::vec3& p : s->mesh->positions) {
+          const glm::dvec3 w = glm::dvec3(s->model * glm::dvec4(glm::dvec3(p), 1.0));
+          const double r = glm::length(glm::dvec3(to_unit * glm::dvec4(w, 1.0)));
+          reach = std::max(reach, r);
+          const Eigen::Vector3d body_axes = q.conjugate() * Eigen::Vector3d(w.x, w.y, w.z);  // principal axes
+          if (body_axes.norm() > far.norm()) far = body_axes;
+        }
+      EXPECT_LE(reach, 1.0) << "frame " << k << " box " << body + 1;
+      EXPECT_GT(reach, 0.85) << "frame " << k << " box " << body + 1;
+      EXPECT_GT(std::abs(far.normalized().x()), 0.8) << "the farthest corner lies out along e₁";
+      ++views;
+    }
+  }
+  EXPECT_EQ(views, 6);
+}
+
+}  // namespace

@@ -142,7 +142,19 @@ TEST(Reveal, AnEnergyEllipsoidFadesInFromItsAnchoredTime) {
   EXPECT_TRUE(s.render.explain.views[1].level_arrows);
   EXPECT_FALSE(load("[[views]]\nkind = \"momentum_sphere\"\nlevel_arrows = false\n").render.explain.views[1].level_arrows);
   EXPECT_NE(error_of("level_arrows = false\n").find("only a momentum_sphere view draws level curves"), std::string::npos);
+  EXPECT_EQ(s.render.explain.views[1].dot_scale, 1);
+  EXPECT_FALSE(s.render.explain.views[1].dark_levels);
+  const Scene hall = load("[[views]]\nkind = \"momentum_sphere\"\ndot_scale = 3\ndark_levels = true\n");
+  EXPECT_EQ(hall.render.explain.views[1].dot_scale, 3);
+  EXPECT_TRUE(hall.render.explain.views[1].dark_levels);
+  EXPECT_NE(error_of("dot_scale = 3\n").find("only a momentum_sphere view takes dot_scale"), std::string::npos);
+  EXPECT_NE(error_of("dark_levels = true\n").find("only a momentum_sphere view takes dark_levels"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\ndot_scale = 9\n").find("views[1].dot_scale"), std::string::npos);
   EXPECT_EQ(*load("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_opacity = 0.6\n").render.explain.views[1].ellipsoid_opacity, 0.6);
+  EXPECT_EQ(s.render.explain.views[1].zoom, 1);
+  EXPECT_EQ(load("[[views]]\nkind = \"momentum_sphere\"\nzoom = 1.2\n").render.explain.views[1].zoom, 1.2);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nzoom = 3\n").find("views[1].zoom"), std::string::npos);
+  EXPECT_NE(error_of("zoom = 1.2\n").find("only a momentum_sphere view has a zoom"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_opacity = 2\n").find("views[1].ellipsoid_opacity"),
             std::string::npos);
   EXPECT_NE(error_of("ellipsoid_from = 1\n").find("only a momentum_sphere view draws an energy ellipsoid"), std::string::npos);

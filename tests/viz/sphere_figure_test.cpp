@@ -246,6 +246,26 @@ TEST(SphereFigure, TheEnergyEllipsoidIsDrawnAtTheOpacityAsked) {
   EXPECT_FLOAT_EQ(whole.surfaces[0].color.a, 0.7f);
 }
 
+// The key's swatch of the energy ellipsoid shows it as drawn: at its opacity,
+// not at the veil's (a lesson's opaque band beside a faint swatch reads as another thing).
+TEST(SphereFigure, TheKeySwatchOfTheEnergyEllipsoidHasItsOpacity) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  for (const float alpha : {kEnergyEllipsoidAlpha, 0.9f}) {
+    in.ellipsoid_alpha = alpha;
+    int swatches = 0;
+    for (const KeyEntry& e : sphere_key(in))
+      if (e.text == "energy ellipsoid") {
+        ASSERT_EQ(e.colors.size(), 1u);
+        EXPECT_FLOAT_EQ(e.colors[0].a, alpha);
+        EXPECT_EQ(glm::vec3(e.colors[0]), glm::vec3(color_of(Meaning::energy_ellipsoid)));
+        ++swatches;
+      }
+    EXPECT_EQ(swatches, 1);
+  }
+}
+
 // A small sphere's grey arrows are too small to see: without them the key no longer promises them.
 TEST(SphereFigure, WithoutLevelArrowsNoneIsDrawnOrPromised) {
   const Eigen::Vector3d pi = near_saddle();
@@ -273,13 +293,26 @@ TEST(SphereFigure, WithoutLevelArrowsNoneIsDrawnOrPromised) {
   EXPECT_GT(without.polylines.size(), 10u);  // the grey levels themselves stay
 }
 
+// A lesson's sphere input near the saddle, seen by the textbook camera, no ellipsoid.
+MomentumSphereInput lesson_input(const Eigen::Vector3d& pi) {
+  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
+  in.camera = textbook_camera(kI, pi);
+  in.energy_ellipsoid = false;
+  return in;
+}
+
+// Π's dot radius in a built sphere (0 when none is drawn).
+double dot_radius(const View& v) {
+  for (const PointItem& p : v.points)
+    if (p.name == "momentum_point") return p.radius;
+  return 0.0;
+}
+
 // A lesson's sphere: Π's path so far (history) instead of its whole polhode,
 // thicker curves, a larger Π dot and fewer other levels, each when asked.
 TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   const Eigen::Vector3d pi = near_saddle();
-  MomentumSphereInput in{kI, pi, {}, two_E(pi)};
-  in.camera = textbook_camera(kI, pi);
-  in.energy_ellipsoid = false;
+  MomentumSphereInput in = lesson_input(pi);
   View plain;
   build_momentum_sphere(plain, in);
   in.trail = true, in.line_scale = 2, in.levels = 4;
@@ -302,12 +335,7 @@ TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   // The separatrix's dashes lie over the path (further out), so a path just inside it does not hide it.
   EXPECT_GT(glm::length(named(lesson, "separatrix")[0]->points[0]), glm::length(path[0]->points[0]));
   EXPECT_FLOAT_EQ(named(lesson, "separatrix")[0]->width_px, 2 * named(plain, "separatrix")[0]->width_px);
-  auto dot = [](const View& v) {
-    for (const PointItem& p : v.points)
-      if (p.name == "momentum_point") return p.radius;
-    return 0.0;
-  };
-  EXPECT_DOUBLE_EQ(dot(lesson), 2 * dot(plain));
+  EXPECT_DOUBLE_EQ(dot_radius(lesson), 2 * dot_radius(plain));
   // Other levels: unnamed grey curves behind the ball's front (fewer with fewer levels).
   auto grey = [](const View& v) {
     int n = 0;
@@ -316,6 +344,35 @@ TEST(SphereFigure, TrailLineScaleAndLevelsChangeOnlyWhatTheyName) {
   };
   EXPECT_LT(grey(lesson), grey(plain));
   EXPECT_GT(grey(lesson), 0);
+}
+
+// A hall's sphere: Π's dot dot_scale times larger, the other levels dark,
+// opaque and wider; every named curve as it was.
+TEST(SphereFigure, DotScaleAndDarkLevelsChangeOnlyWhatTheyName) {
+  const Eigen::Vector3d pi = near_saddle();
+  MomentumSphereInput in = lesson_input(pi);
+  View plain;
+  build_momentum_sphere(plain, in);
+  in.dot_scale = 3, in.dark_levels = true;
+  View bold;
+  build_momentum_sphere(bold, in);
+  EXPECT_DOUBLE_EQ(dot_radius(bold), 3 * dot_radius(plain));
+  ASSERT_EQ(bold.polylines.size(), plain.polylines.size());
+  int levels = 0;
+  for (std::size_t i = 0; i < plain.polylines.size(); ++i) {
+    const PolylineItem &a = plain.polylines[i], &b = bold.polylines[i];
+    if (a.name.empty() && glm::vec3(a.color) == glm::vec3(color_of(Meaning::other_levels))) {
+      ++levels;
+      EXPECT_LT(b.color.r, 0.7f * a.color.r);
+      EXPECT_EQ(b.color.a, 1.0f);
+      EXPECT_LT(a.color.a, 0.6f);
+      EXPECT_GT(b.width_px, 1.5f * a.width_px);
+    } else {
+      EXPECT_EQ(b.color, a.color) << a.name;
+      EXPECT_EQ(b.width_px, a.width_px) << a.name;
+    }
+  }
+  EXPECT_GT(levels, 8);
 }
 
 }  // namespace

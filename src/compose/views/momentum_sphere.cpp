@@ -60,6 +60,7 @@ class SpherePanel : public Panel {
     if (!ctx_.scene.render.explain.key) return {};
     viz::MomentumSphereInput in = input(0);  // what it draws: Π and its energy at t = 0 (conserved)
     in.tracks = tracks(0);
+    in.ellipsoid_alpha = static_cast<float>(ctx_.scene.render.explain.views[index_].ellipsoid_opacity.value_or(viz::kEnergyEllipsoidAlpha));
     return viz::sphere_key(in);
   }
   void fit(glm::vec2 size) override { size_ = size; }
@@ -154,13 +155,15 @@ class SpherePanel : public Panel {
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
-    in.fit_radius = kFitRadius;
     const scene::ViewConfig& view = ctx_.scene.render.explain.views[index_];
+    in.fit_radius = kFitRadius / view.zoom;  // a zoom: less room round the ball, where its camera needs less
     in.energy_ellipsoid = view.energy_ellipsoid;
     in.trail = view.path_trail;
     in.line_scale = static_cast<float>(view.line_scale);
     in.levels = view.levels;
     in.level_arrows = view.level_arrows;
+    in.dot_scale = static_cast<float>(view.dot_scale);
+    in.dark_levels = view.dark_levels;
     return in;
   }
 

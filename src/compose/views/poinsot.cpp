@@ -10,6 +10,8 @@
 #include "compose/panel.hpp"
 #include "compose/views/kinds.hpp"
 #include "core/dynamics.hpp"
+#include "compose/world_views.hpp"
+#include "viz/body_in_ellipsoid.hpp"
 #include "viz/poinsot.hpp"
 
 namespace tumble::compose {
@@ -19,6 +21,7 @@ namespace {
 constexpr double kPoinsotMargin = 0.04;
 constexpr long kPoinsotFitSamples = 120;
 constexpr double kPoinsotClosest = 0.3;
+constexpr float kBodyAlpha = 0.55f;  // the body inside its ellipsoid: seen, and the arrows from its centre through it
 
 // Points on the inertia ellipsoid's surface (its unit sphere under its model), for the camera fit.
 void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& out) {
@@ -34,7 +37,8 @@ void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& o
 class PoinsotPanel : public Panel {
  public:
   PoinsotPanel(const PanelContext& ctx, std::size_t index)
-      : ctx_(ctx), vc_(ctx.scene.render.explain.views[index]), body_(view_body(ctx, index)) {}
+      : ctx_(ctx), vc_(ctx.scene.render.explain.views[index]), body_(view_body(ctx, index)),
+        look_(body_look(ctx.scene.bodies[body_], false)) {}
   std::string name() const override { return "poinsot"; }
   std::vector<viz::KeyEntry> key() const override {
     return ctx_.scene.render.explain.key ? viz::poinsot_key() : std::vector<viz::KeyEntry>{};
@@ -91,12 +95,15 @@ class PoinsotPanel : public Panel {
     in.text_scale = ctx_.text_scale();
     viz::View v;
     viz::build_poinsot(v, in);
+    // The body the ellipsoid belongs to, inside it, turning with it.
+    viz::add_body_in_ellipsoid(v, look_, s.q, m.cloud_from_principal, m.com_cloud, m.inertia, kBodyAlpha);
     return v;
   }
 
   const PanelContext& ctx_;
   const scene::ViewConfig& vc_;
   std::size_t body_;
+  viz::BodyLook look_;  // its surfaces, drawn inside the ellipsoid
   glm::vec2 size_{1, 1};
   double backoff_ = 1;
 };
