@@ -127,7 +127,9 @@ FrameNeeds FrameBuilder::frame_needs() const {
     v.title = titles_[i];
     v.large_overlay = i < cells_ && cells_ > 1;  // a comparison's readouts are what it compares
     v.overlay_lines = panels_[i]->overlay_lines();
-    if (!vc || vc->key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
+    // A view may leave its key to a neighbour's; a grid's cells leave theirs to the frame key
+    // (legend()), which says it once, so that a view with a key of its own keeps it beside it.
+    if (vc ? vc->key : needs.frame_key.empty()) v.key = panels_[i]->key();
     v.edge_to_edge = vc && vc->kind == scene::ViewKind::plot;
     if (single) v.key = legend();
     needs.views.push_back(std::move(v));

@@ -74,6 +74,7 @@ class ChartMap {
   ChartMap(const StripChartInput& in, int width_px, int height_px, float font_px);
   glm::dvec3 at(double t, double v) const;
   glm::vec2 pixel(const glm::dvec3& world) const;  ///< top-left origin, px
+  double value_at(float pixel_y) const;            ///< the value axis' value at a pixel row
   double aspect() const { return aspect_; }
 
  private:

@@ -1,6 +1,7 @@
 // The strip chart: its map, levels, bands, axes and the curves' names.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -97,6 +98,46 @@ TEST(StripChart, ALevelsNoteRunsAlongItsLineInsideTheBox) {
     EXPECT_TRUE(above || under) << t.text;
   }
   EXPECT_EQ(notes, 2);
+}
+
+// The playhead sweeps through a level's note and the flips' marks stand under
+// it: each line is broken round the words (a line through a word strikes it
+// out) and whole elsewhere, at every playhead position.
+TEST(StripChart, ThePlayheadAndTheMarksLeaveTheLevelsNotesUnstruck) {
+  StripChartInput in;
+  in.times = {0, 1};
+  in.series = {{"e", {-8.0, -7.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 16, in.lo = -9, in.hi = 0, in.log10 = true;
+  in.levels = {{-1.0, "", "pure e\u2081 spin, +86 %"}, {-5.5, "", "separatrix, 3\u00d710\u207b\u2076"}};
+  in.marks = {1.8, 5.1, 8.4, 11.7, 14.9};  // none at a playhead's step (two lines at one x)
+  const ChartMap m(in, 900, 500, 20.0f);
+  int broken = 0;
+  for (double playhead = 0; playhead <= 16; playhead += 0.25) {
+    in.playhead = playhead;
+    View v;
+    build_strip_chart(v, in, 900, 500, 20.0f);
+    std::vector<Box> notes;
+    for (const TextItem& t : v.texts)
+      if (t.name == "level_note") notes.push_back(text_box(t));
+    ASSERT_EQ(notes.size(), 2u);
+    std::map<double, double> drawn;  // each vertical line's x (world) and its length drawn, in value units
+    for (const PolylineItem& p : v.polylines) {
+      if (p.name != "mark" && p.name != "playhead") continue;
+      ASSERT_EQ(p.points.size(), 2u);
+      const glm::vec2 a = m.pixel(p.points[0]), b = m.pixel(p.points[1]);
+      for (const Box& n : notes)
+        EXPECT_FALSE(a.x + 1 > n.x0 && a.x - 1 < n.x1 && std::max(a.y, b.y) + 1 > n.y0 && std::min(a.y, b.y) - 1 < n.y1)
+            << p.name << " at x " << a.x << ", playhead " << playhead << ": through a note";
+      drawn[p.points[0].x] += std::abs(p.points[1].y - p.points[0].y);
+    }
+    const double full = m.at(0, in.hi).y - m.at(0, in.lo).y;
+    EXPECT_EQ(drawn.size(), 1 + std::count_if(in.marks.begin(), in.marks.end(), [&](double t) { return t <= playhead; }));
+    for (const auto& [x, length] : drawn) {
+      EXPECT_GT(length, 0.75 * full) << "a line broken only round a note";
+      broken += length < full - 1e-9;
+    }
+  }
+  EXPECT_GT(broken, 10) << "lines that did cross a note's place";
 }
 
 TEST(StripChart, APointIsRingedOnlyOnceThePlayheadReachesIt) {
