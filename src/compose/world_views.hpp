@@ -39,7 +39,7 @@ viz::BodyLook body_look(const scene::Body& b, bool particles);
 /// The exact solution's body in the other methods' cells of a [compare] grid:
 /// a cool slate grey, translucent, so it reads as "where the body should be" and not
 /// as a second body of the method's own colour; dark enough to stand out on the pale background.
-inline constexpr viz::Color kGhostColor{0.30f, 0.35f, 0.46f, 0.45f};
+inline constexpr viz::Color kGhostColor{0.30f, 0.35f, 0.46f, 0.38f};
 /// The exact solution's path on a comparison's momentum sphere: its ghost's grey, opaque.
 inline constexpr viz::Color kExactPathColor{0.30f, 0.35f, 0.46f, 1.0f};
 
