@@ -13,7 +13,7 @@ O=${2:-out/golden-noise}
 SIZE=${3:-320x240}
 W=${SIZE%x*}
 H=${SIZE#*x}
-scenes="dzhanibekov:0.5,4,12 methods_compare:0.5,6,15 reference:0.5,3,9 stable_spin:0.5,5,11 symmetric_top:0.5,4,9 thrown_box:0.2,0.9,1.6"
+scenes="dzhanibekov:0.5,4,12 methods_compare:0.78,6,15 reference:0.5,3,9 stable_spin:0.5,5,11 symmetric_top:0.5,4,9 thrown_box:0.2,0.9,1.6"
 rm -rf "$O"
 render() { # variant, then env assignments / options
   v=$1; shift

@@ -127,7 +127,9 @@ FrameNeeds FrameBuilder::frame_needs() const {
     v.title = titles_[i];
     v.large_overlay = i < cells_ && cells_ > 1;  // a comparison's readouts are what it compares
     v.overlay_lines = panels_[i]->overlay_lines();
-    if (!vc || vc->key) v.key = panels_[i]->key();  // a view may leave its key to a neighbour's
+    // A view may leave its key to a neighbour's; a grid's cells leave theirs to the frame key
+    // (legend()), which says it once, so that a view with a key of its own keeps it beside it.
+    if (vc ? vc->key : needs.frame_key.empty()) v.key = panels_[i]->key();
     v.edge_to_edge = vc && vc->kind == scene::ViewKind::plot;
     if (single) v.key = legend();
     needs.views.push_back(std::move(v));
@@ -196,7 +198,7 @@ std::vector<viz::KeyEntry> FrameBuilder::legend() const {
   const auto exact = std::find_if(runs_.begin(), runs_.end(), [](const scene::Run& r) { return r.label == "exact"; });
   const bool ghosts = runs_.size() > 1 && exact != runs_.end() &&
                       std::any_of(cell_runs_.begin(), cell_runs_.end(), [&](std::size_t r) { return runs_[r].label != "exact"; });
-  if (ghosts) key.push_back({viz::Swatch::block, {kGhostColor}, "grey: the exact solution"});
+  if (ghosts) key.push_back({viz::Swatch::block, {kGhostColor}, "grey body: the exact solution"});
   return key;
 }
 

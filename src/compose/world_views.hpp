@@ -37,11 +37,11 @@ viz::Camera across_camera(const Eigen::Vector3d& target, const Eigen::Vector3d& 
 viz::BodyLook body_look(const scene::Body& b, bool particles);
 
 /// The exact solution's body in the other methods' cells of a [compare] grid:
-/// a pale, cool grey, faint, so it reads as "where the body should be" and not
-/// as a second body of the method's own colour.
-inline constexpr viz::Color kGhostColor{0.50f, 0.56f, 0.68f, 0.32f};
+/// a cool slate grey, translucent, so it reads as "where the body should be" and not
+/// as a second body of the method's own colour; dark enough to stand out on the pale background.
+inline constexpr viz::Color kGhostColor{0.30f, 0.35f, 0.46f, 0.38f};
 /// The exact solution's path on a comparison's momentum sphere: its ghost's grey, opaque.
-inline constexpr viz::Color kExactPathColor{0.50f, 0.56f, 0.68f, 1.0f};
+inline constexpr viz::Color kExactPathColor{0.30f, 0.35f, 0.46f, 1.0f};
 
 class WorldViews {
  public:

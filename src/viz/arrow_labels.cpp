@@ -93,6 +93,13 @@ Obstacles obstacles_of(const View& view, const ViewportProjection& project, floa
     for (std::size_t i = 1; i < l.points.size(); ++i)
       if (project(l.points[i - 1], a) && project(l.points[i], b)) o.shafts.push_back({a, b, r});
   }
+  // The named dots (a Poinsot contact point, larger than ω's head at its place) as drawn.
+  for (const PointItem& p : view.points) {
+    glm::vec2 c;
+    if (p.name.empty() || !project(p.position, c)) continue;
+    o.heads.push_back(c);
+    o.head_r.push_back(screen_len(project, view.camera, p.position, p.radius) + 1.5f);
+  }
   o.taken = part_boxes(view, project);
   for (const TextItem& t : view.texts) o.taken.push_back(text_box(t));
   return o;

@@ -85,8 +85,12 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, in.ellipsoid_alpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));
-  out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});  // the ringed dots
-  out.push_back(key_entry(Meaning::other_levels, in.level_arrows ? "other energies (arrow: direction)" : "other energies"));
+  // The ringed dots; beside a comparison's sphere (a short key in a short view) the axes' names at ±e₂ say it.
+  if (in.tracks.empty()) out.push_back({Swatch::dot, {color_of(Meaning::separatrix)}, "saddles \u00b1e\u2082"});
+  // Beside several tracks (each method's energy its own) the levels are energies, none the body's;
+  // short: the key stands beside a comparison's sphere in a narrow column.
+  const std::string levels = in.tracks.empty() ? "other energies" : "levels of E";
+  out.push_back(key_entry(Meaning::other_levels, in.level_arrows ? levels + " (arrow: direction)" : levels));
   return out;
 }
 

@@ -47,7 +47,8 @@ std::vector<KeyEntry> poinsot_key() {
   return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
           key_entry(Meaning::L, "L: angular momentum"),
           key_entry(Meaning::omega, "\u03c9: angular velocity"),
-          key_entry(Meaning::ellipsoid, "inertia ellipsoid, turns with the body")};
+          {Swatch::dot, {color_of(Meaning::omega)}, "contact point"},
+          key_entry(Meaning::ellipsoid, "inertia ellipsoid")};
 }
 
 namespace {
@@ -156,12 +157,15 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.015, kOmegaColor, "omega", "\u03c9", 1});
   const float w = line_scale(in.frame_h);
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
-  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.2f * w, false, "herpolhode"};
+  // The herpolhode thinner than the polhode and fading with age (oldest faint):
+  // box 1's turns round and round, and drawn at one weight its loops fill a ring.
+  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 1.3f * w, true, "herpolhode"};
   herpolhode.over_glass = true;  // under the ellipsoid's glass, seen through it in full colour (not tinted away)
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(to_glm(in.q * w * f.scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history)
     herpolhode.points.push_back(to_glm(w * f.scale - kHerpolhodeLift * p.normal));
-  view.points.push_back({to_glm(p.contact * f.scale), 0.035, color_of(Meaning::omega), "contact_point"});
+  // The contact point, where the ellipsoid touches the plane: the eye's first stop.
+  view.points.push_back({to_glm(p.contact * f.scale), kContactDotRadius, color_of(Meaning::omega), "contact_point"});
   if (polhode.points.size() >= 2) add_near_side(view, f, polhode);
   if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));

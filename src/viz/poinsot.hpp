@@ -54,6 +54,10 @@ inline constexpr Color kPlaneColor{0.84f, 0.85f, 0.88f, 1.0f};
 /// towards the ellipsoid, so the plane's depth does not hide it.
 inline constexpr double kHerpolhodeLift = 0.008;
 
+/// The contact point's dot (ω's tip), in units of the largest semi-axis: about
+/// 2 % of a view's height, the eye's first stop in the construction.
+inline constexpr double kContactDotRadius = 0.065;
+
 /// Fills `view` (camera included); ω-space scaled so the ellipsoid's largest semi-axis is 1.
 /// The ellipsoid is a shaded translucent surface resting on an opaque plane
 /// (its key, poinsot_key(), is the layout's to draw).

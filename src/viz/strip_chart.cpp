@@ -72,6 +72,11 @@ glm::vec2 ChartMap::pixel(const glm::dvec3& p) const {
   return {static_cast<float>((p.x / aspect_ * 0.5 + 0.5) * w_), static_cast<float>((0.5 - p.y * 0.5) * h_)};
 }
 
+double ChartMap::value_at(float pixel_y) const {
+  const double y = 1 - 2.0 * pixel_y / std::max(h_, 1);
+  return lo_ + (hi_ - lo_) * (y - y0_) / (y1_ - y0_);
+}
+
 // A fraction in per cent, signed: "+120 %", "0", "−10 %".
 std::string percent_text(double v) {
   const double p = 100 * v;
@@ -99,8 +104,51 @@ void add_slow_bands(View& view, const StripChartInput& in, const ChartMap& m, fl
   }
 }
 
-// Frame, zero line, the series' curves, playhead.
-void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
+// Notes inside the chart (a level's, a point's) smaller than the ticks: they sit among the curves, and
+// a level near the top border needs its note to fit between the two.
+constexpr float kNoteScale = 0.7f;
+
+// Each level's note along its dashed line, inside the chart: above it at the
+// right end (rising curves have passed it there), or under a line too close
+// to the top border for that, at the left end (where they have not reached it yet).
+std::vector<TextItem> level_notes(const StripChartInput& in, const ChartMap& m, float f) {
+  const float left = m.pixel(m.at(in.t0, in.lo)).x, right = m.pixel(m.at(in.t1, in.lo)).x;
+  const float top = m.pixel(m.at(in.t0, in.hi)).y;
+  const float s = kNoteScale * f;
+  std::vector<TextItem> out;
+  for (const StripChartInput::Level& l : in.levels) {
+    if (l.note.empty() || l.value < in.lo || l.value > in.hi) continue;
+    const float y = m.pixel(m.at(in.t0, l.value)).y;
+    const glm::vec2 at = y - 1.3f * s > top ? glm::vec2{right - 0.3f * f - text_width(l.note, s), y - 1.15f * s}
+                                            : glm::vec2{left + 0.3f * f, y + 0.15f * s};
+    out.push_back({l.note, at, s, kLevelColor, "level_note"});
+  }
+  return out;
+}
+
+// A vertical line at t across the chart (a flip's mark, the playhead), broken
+// where a level's note stands: the playhead sweeps through the notes and the
+// flips' marks lie under them, and a line through a word strikes it out.
+void add_vertical(View& view, const StripChartInput& in, const ChartMap& m, double t, Color c, float lw,
+                  const char* name, const std::vector<TextItem>& notes, float f) {
+  const float x = m.pixel(m.at(t, in.lo)).x, pad = std::max(2.5f, 0.2f * f);
+  std::vector<std::pair<double, double>> gaps;  // value ranges the line leaves out, lo..hi
+  for (const TextItem& n : notes) {
+    const Box b = text_box(n);
+    if (x + pad > b.x0 && x - pad < b.x1) gaps.push_back({m.value_at(b.y1 + pad), m.value_at(b.y0 - pad)});
+  }
+  std::sort(gaps.begin(), gaps.end());
+  double from = in.lo;
+  for (const auto& [g0, g1] : gaps) {
+    if (g0 > from) view.polylines.push_back({{m.at(t, from), m.at(t, std::min(g0, in.hi))}, c, lw, false, name});
+    from = std::max(from, g1);
+  }
+  if (from < in.hi) view.polylines.push_back({{m.at(t, from), m.at(t, in.hi)}, c, lw, false, name});
+}
+
+// Frame, zero line, the series' curves, playhead (f: the ticks' text size, for the notes).
+void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  const std::vector<TextItem> notes = level_notes(in, m, f);
   const Color ink = color_of(Meaning::ink), faint{0.55f, 0.57f, 0.62f, 0.6f};
   auto line = [&](std::vector<glm::dvec3> pts, Color c, float lw, const char* name) {
     view.polylines.push_back({std::move(pts), c, lw, false, name});
@@ -121,14 +169,14 @@ void add_chart_lines(View& view, const StripChartInput& in, const ChartMap& m) {
         line({m.at(t, l.value), m.at(t + 0.6 * (in.t1 - in.t0) / 40.0, l.value)}, kLevelColor, 2.0f, "");
       }
   for (double t : in.marks)  // under the curves, thin, grey: no method's colour (explicit Euler's is a red)
-    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) line({m.at(t, in.lo), m.at(t, in.hi)}, {0.35f, 0.36f, 0.40f, 0.6f}, 1.5f, "mark");
+    if (t >= in.t0 && t <= std::min(in.t1, in.playhead)) add_vertical(view, in, m, t, {0.35f, 0.36f, 0.40f, 0.6f}, 1.5f, "mark", notes, f);
   for (const Series& s : in.series) {
     std::vector<glm::dvec3> pts;
     for (std::size_t i = 0; i < in.times.size() && i < s.values.size(); ++i)
       if (std::isfinite(s.values[i])) pts.push_back(m.at(in.times[i], std::clamp(s.values[i], in.lo, in.hi)));
     if (pts.size() >= 2) line(std::move(pts), s.color, 3.0f, "series");
   }
-  line({m.at(in.playhead, in.lo), m.at(in.playhead, in.hi)}, {0.2f, 0.2f, 0.25f, 0.8f}, 1.5f, "playhead");
+  add_vertical(view, in, m, in.playhead, {0.2f, 0.2f, 0.25f, 0.8f}, 1.5f, "playhead", notes, f);
 }
 
 // "10⁻⁸": a decade written as a power of ten.
@@ -144,7 +192,7 @@ std::string decade(int d) {
 // Does a value tick at `y` (px, its top) keep clear of every level's name?
 bool clear_of_levels(const StripChartInput& in, const ChartMap& m, float y, float f) {
   for (const StripChartInput::Level& l : in.levels)
-    if (l.value >= in.lo && l.value <= in.hi && std::abs(m.pixel(m.at(in.t0, l.value)).y - 0.5f * f - y) < 1.1f * f)
+    if (!l.label.empty() && l.value >= in.lo && l.value <= in.hi && std::abs(m.pixel(m.at(in.t0, l.value)).y - 0.5f * f - y) < 1.1f * f)
       return false;
   return true;
 }
@@ -226,8 +274,29 @@ void add_head_labels(View& view, const StripChartInput& in, const ChartMap& m, f
 // chart, a name would lie across the curves, the flips' marks and the playhead).
 void add_level_labels(View& view, const StripChartInput& in, const ChartMap& m, float f) {
   for (const StripChartInput::Level& l : in.levels) {
-    if (l.value < in.lo || l.value > in.hi) continue;
+    if (l.label.empty() || l.value < in.lo || l.value > in.hi) continue;
     view.texts.push_back({l.label, {4.0f, m.pixel(m.at(in.t0, l.value)).y - 0.5f * f}, f, kLevelColor, "level_label"});
+  }
+}
+
+// Each point reached: a ring round it in its colour, its label to the right, just under its height.
+void add_points(View& view, const StripChartInput& in, const ChartMap& m, float f) {
+  for (const StripChartInput::Point& p : in.points) {
+    if (p.t > in.playhead + 1e-9 || p.value < in.lo || p.value > in.hi) continue;
+    const glm::dvec3 c = m.at(p.t, p.value);
+    const double rw = 0.45 * f * (m.at(in.t0, in.hi).y - m.at(in.t0, in.lo).y) /
+                      std::max(1.0f, m.pixel(m.at(in.t0, in.lo)).y - m.pixel(m.at(in.t0, in.hi)).y);
+    std::vector<glm::dvec3> ring;
+    for (int i = 0; i <= 32; ++i) {
+      const double a = 2 * 3.14159265358979 * i / 32;
+      ring.push_back({c.x + rw * std::cos(a), c.y + rw * std::sin(a), 0.0});
+    }
+    view.polylines.push_back({std::move(ring), p.color, 3.0f, false, "point"});
+    // The label until the playhead reaches it (the stop at the point reads it); then the ring alone,
+    // so that the playhead and the flips' marks never run across the words.
+    const glm::vec2 px = m.pixel(c);
+    if (m.pixel(m.at(in.playhead, in.lo)).x < px.x + 0.5f * f)
+      view.texts.push_back({p.label, {px.x + 0.6f * f, px.y + 0.25f * f}, kNoteScale * f, p.color, "point_label"});
   }
 }
 
@@ -275,6 +344,8 @@ void add_chart_text(View& view, const StripChartInput& in, const ChartMap& m, co
   add_time_ticks(view, in, m, w, f);
   float x = w - head.key_w;
   add_level_labels(view, in, m, f);
+  for (TextItem& n : level_notes(in, m, f)) view.texts.push_back(std::move(n));
+  add_points(view, in, m, f);
   if (in.direct_labels) add_head_labels(view, in, m, f);
   for (const Series& s : in.direct_labels ? std::vector<Series>{} : in.series) {
     TextItem k{s.name, {x, head.key_y}, head.key_px, s.color, "key"};
@@ -304,7 +375,7 @@ void build_strip_chart(View& view, const StripChartInput& in, int width_px, int 
   view.camera.near_m = 1;
   view.camera.far_m = 10;
   add_slow_bands(view, in, m, font_px);
-  add_chart_lines(view, in, m);
+  add_chart_lines(view, in, m, font_px);
   add_chart_text(view, in, m, head, static_cast<float>(width_px), font_px);
 }
 

@@ -46,8 +46,17 @@ struct StripChartInput {
   struct Level {
     double value;
     std::string label;
+    std::string note = {};  ///< what the level is ("separatrix, 3×10⁻⁶"), written along its line inside the chart
   };
   std::vector<Level> levels;
+  /// Points marked by a ring in `color` with `label` beside it, once the playhead reaches `t`
+  /// (value in the value axis' unit): an event on a curve, e.g. where it crosses a level.
+  struct Point {
+    double t, value;
+    std::string label;
+    Color color;
+  };
+  std::vector<Point> points;
   /// A linear value axis of fractions ticked in per cent ("+120 %", "0", "−10 %"): a relative error read as such.
   bool percent = false;
 };
@@ -65,6 +74,7 @@ class ChartMap {
   ChartMap(const StripChartInput& in, int width_px, int height_px, float font_px);
   glm::dvec3 at(double t, double v) const;
   glm::vec2 pixel(const glm::dvec3& world) const;  ///< top-left origin, px
+  double value_at(float pixel_y) const;            ///< the value axis' value at a pixel row
   double aspect() const { return aspect_; }
 
  private:

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -356,11 +357,11 @@ TEST(LayoutFill, AComparisonsPlotSitsUnderItsCellsAndNamesEachMethodInItsColour)
     EXPECT_EQ(std::count(named.begin(), named.end(), "exact"), 0) << plot;
     EXPECT_EQ(std::count(named.begin(), named.end(), "explicit Euler"), 1) << plot;
     EXPECT_EQ(std::count(named.begin(), named.end(), "RK4"), 1) << plot;
-    // The flips ([draw] flips) marked on the time axis: five by 16 s.
-    EXPECT_EQ(std::count_if(dl.views[plot].polylines.begin(), dl.views[plot].polylines.end(),
-                            [](const viz::PolylineItem& l) { return l.name == "mark"; }),
-              5)
-        << plot;
+    // The flips ([draw] flips) marked on the time axis: five by 16 s (a mark under a level's note drawn in two pieces).
+    std::set<double> marks;
+    for (const viz::PolylineItem& l : dl.views[plot].polylines)
+      if (l.name == "mark") marks.insert(l.points.front().x);
+    EXPECT_EQ(marks.size(), 5u) << plot;
   }
 }
 

@@ -67,7 +67,9 @@ TEST(LessonFigures, EverySphereLabelsEachVisibleAxisEndAtItsTipInEveryFrame) {
           if (v.name != "momentum_sphere") continue;
           ++spheres;
           const float vw = static_cast<float>(v.viewport->z * w), vh = static_cast<float>(v.viewport->w * h);
-          const tumble::viz::ViewportProjection project(v.camera, vw, vh);
+          // The camera sees through the content rectangle (a key beside it narrows it); texts are in the view's px.
+          const glm::vec4 c = v.content_px.value_or(glm::vec4(0, 0, vw, vh));
+          const tumble::viz::ViewportProjection project(v.camera, c.z - c.x, c.w - c.y);
           for (const char* name : kNames) {
             const auto it = std::find_if(v.texts.begin(), v.texts.end(), [&](const auto& t) { return t.name == name; });
             const bool hidden = tumble::viz::hidden_by_ball(v.camera.position, axis_end(name), 1.0);
@@ -81,6 +83,7 @@ TEST(LessonFigures, EverySphereLabelsEachVisibleAxisEndAtItsTipInEveryFrame) {
             // arrowhead, and moved off a curve it would sit on); a label at the rim was six and more away.
             glm::vec2 tip;
             ASSERT_TRUE(project(axis_end(name), tip));
+            tip += glm::vec2(c.x, c.y);
             const float dx = std::max({b.x0 - tip.x, 0.0f, tip.x - b.x1}), dy = std::max({b.y0 - tip.y, 0.0f, tip.y - b.y1});
             EXPECT_LE(std::hypot(dx, dy), 3.0f * it->size_px)
                 << p.filename() << " " << w << "x" << h << " frame " << k << ": " << name << " is " << std::hypot(dx, dy)

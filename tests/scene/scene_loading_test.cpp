@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "core/dynamics.hpp"
+#include "core/mass_properties.hpp"
+#include "core/particle_cloud.hpp"
 #include "scene/reader.hpp"
 #include "scene/scene.hpp"
 
@@ -58,6 +60,20 @@ TEST(ShippedScenes, ReferenceProblem) {
   EXPECT_TRUE(omega_body(b.model, b.initial).isApprox(Eigen::Vector3d(0.01, 10, 0.01), 1e-14));
   EXPECT_DOUBLE_EQ(s.simulation.duration, 10.0);
   EXPECT_TRUE(b.model.forces.empty());
+}
+
+// The rackets are drawn in parts (face, green +e₂ edge, dark grip) of one
+// 15 × 6 × 2 lattice: the mass, centre and inertia are the plain box's, so
+// the colours change nothing the flips depend on.
+TEST(ShippedScenes, TennisRacketsInColouredPartsAreThePlainLatticeBox) {
+  const auto s = load_scene(kScenes / "tennis_racket.toml");
+  const MassProperties box = compute_mass_properties(make_box({0.3, 0.12, 0.02}, {15, 6, 2}, 1.0), "box");
+  ASSERT_EQ(s.bodies.size(), 3u);
+  for (const auto& b : s.bodies) {
+    EXPECT_NEAR(b.model.mass, 1.0, 1e-12) << b.name;
+    EXPECT_LT((b.model.inertia - box.principal_moments).norm(), 1e-12 * box.principal_moments.norm()) << b.name;
+    EXPECT_LT((b.model.com_cloud - Eigen::Vector3d(box.com)).norm(), 1e-12) << b.name;
+  }
 }
 
 TEST(SceneKeys, DefaultsAndOverrides) {

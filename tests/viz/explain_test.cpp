@@ -85,6 +85,14 @@ TEST(Poinsot, ViewDrawsOmegaToTheContactPointAndTheHerpolhodeOnThePlane) {
   ASSERT_EQ(herpolhode.points.size(), states.size());
   for (const glm::dvec3& x : herpolhode.points)
     EXPECT_NEAR(Eigen::Vector3d(x.x, x.y, x.z).dot(p.normal), p.plane_distance * scale - kHerpolhodeLift, 1e-9);
+  // The dot is seen from the back of a hall (5 % of the largest semi-axis and
+  // more); the herpolhode, thinner than the polhode, fades with age, so loops
+  // laid over loops do not fill a ring.
+  EXPECT_GE(v.points.back().radius, 0.05);
+  const auto polhode = std::find_if(v.polylines.begin(), v.polylines.end(), [](const PolylineItem& l) { return l.name == "polhode"; });
+  ASSERT_NE(polhode, v.polylines.end());
+  EXPECT_LT(herpolhode.width_px, 0.7f * polhode->width_px);
+  EXPECT_TRUE(herpolhode.fade);
   bool omega_arrow = false;
   for (const ArrowItem& a : v.arrows)
     if (a.color == kOmegaColor) omega_arrow = glm::length(a.vector - dot) < 1e-12;
@@ -120,10 +128,10 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   // Its key names the arrows and the ellipsoid (the layout draws it beside the
   // view); the plane and the two curves are named on the picture, inside the view.
   const std::vector<KeyEntry> key = poinsot_key();
-  for (const std::string name : {"L:", "ω:", "inertia ellipsoid"})
+  for (const std::string name : {"L:", "ω:", "contact point", "inertia ellipsoid"})
     EXPECT_TRUE(std::any_of(key.begin(), key.end(), [&](const KeyEntry& e) { return e.text.rfind(name, 0) == 0; }))
         << name;
-  EXPECT_EQ(key.size(), 4u);
+  EXPECT_EQ(key.size(), 5u);
   for (const std::string name : {"polhode", "herpolhode", "invariable plane"}) {
     const auto t = std::find_if(v.texts.begin(), v.texts.end(), [&](const TextItem& x) { return x.text == name; });
     ASSERT_NE(t, v.texts.end()) << name;

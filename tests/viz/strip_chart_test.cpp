@@ -1,6 +1,7 @@
 // The strip chart: its map, levels, bands, axes and the curves' names.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -69,6 +70,103 @@ TEST(StripChart, ReferenceLevelsAreDashedLinesNamedOnTheValueAxis) {
   }
   EXPECT_EQ(names, 1);
   EXPECT_FALSE(top_tick) << "the value tick 1, a line from the level's name, gives way to it";
+}
+
+TEST(StripChart, ALevelsNoteRunsAlongItsLineInsideTheBox) {
+  StripChartInput in;
+  in.times = {0, 1};
+  in.series = {{"e", {-8.0, -7.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 16, in.lo = -9, in.hi = 0, in.playhead = 1, in.log10 = true;
+  in.levels = {{-0.07, "", "pure e\u2081 spin, +86 %"}, {-5.5, "", "separatrix, 3\u00d710\u207b\u2076"}};
+  View v;
+  build_strip_chart(v, in, 900, 500, 20.0f);
+  const ChartMap m(in, 900, 500, 20.0f);
+  const glm::vec2 lo = m.pixel(m.at(in.t0, in.lo)), hi = m.pixel(m.at(in.t1, in.hi));
+  int notes = 0;
+  for (const TextItem& t : v.texts) {
+    EXPECT_NE(t.name, "level_label") << "a level without an axis label has none";
+    if (t.name != "level_note") continue;
+    ++notes;
+    const float x1 = t.position_px.x + text_width(t.text, t.size_px), line = m.pixel(m.at(0, t.text[0] == 'p' ? -0.07 : -5.5)).y;
+    EXPECT_GT(t.position_px.x, lo.x) << t.text;
+    EXPECT_LT(x1, hi.x) << t.text;
+    EXPECT_GT(t.position_px.y, hi.y) << t.text << ": under the top border";
+    EXPECT_LT(t.position_px.y + t.size_px, lo.y) << t.text << ": over the bottom border";
+    // Beside its line, not across it: just above it, or (near the top border) just under it.
+    const bool above = t.position_px.y + t.size_px <= line && t.position_px.y + 1.5f * t.size_px > line;
+    const bool under = t.position_px.y >= line && t.position_px.y < line + 0.5f * t.size_px;
+    EXPECT_TRUE(above || under) << t.text;
+  }
+  EXPECT_EQ(notes, 2);
+}
+
+// The playhead sweeps through a level's note and the flips' marks stand under
+// it: each line is broken round the words (a line through a word strikes it
+// out) and whole elsewhere, at every playhead position.
+TEST(StripChart, ThePlayheadAndTheMarksLeaveTheLevelsNotesUnstruck) {
+  StripChartInput in;
+  in.times = {0, 1};
+  in.series = {{"e", {-8.0, -7.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 16, in.lo = -9, in.hi = 0, in.log10 = true;
+  in.levels = {{-1.0, "", "pure e\u2081 spin, +86 %"}, {-5.5, "", "separatrix, 3\u00d710\u207b\u2076"}};
+  in.marks = {1.8, 5.1, 8.4, 11.7, 14.9};  // none at a playhead's step (two lines at one x)
+  const ChartMap m(in, 900, 500, 20.0f);
+  int broken = 0;
+  for (double playhead = 0; playhead <= 16; playhead += 0.25) {
+    in.playhead = playhead;
+    View v;
+    build_strip_chart(v, in, 900, 500, 20.0f);
+    std::vector<Box> notes;
+    for (const TextItem& t : v.texts)
+      if (t.name == "level_note") notes.push_back(text_box(t));
+    ASSERT_EQ(notes.size(), 2u);
+    std::map<double, double> drawn;  // each vertical line's x (world) and its length drawn, in value units
+    for (const PolylineItem& p : v.polylines) {
+      if (p.name != "mark" && p.name != "playhead") continue;
+      ASSERT_EQ(p.points.size(), 2u);
+      const glm::vec2 a = m.pixel(p.points[0]), b = m.pixel(p.points[1]);
+      for (const Box& n : notes)
+        EXPECT_FALSE(a.x + 1 > n.x0 && a.x - 1 < n.x1 && std::max(a.y, b.y) + 1 > n.y0 && std::min(a.y, b.y) - 1 < n.y1)
+            << p.name << " at x " << a.x << ", playhead " << playhead << ": through a note";
+      drawn[p.points[0].x] += std::abs(p.points[1].y - p.points[0].y);
+    }
+    const double full = m.at(0, in.hi).y - m.at(0, in.lo).y;
+    EXPECT_EQ(drawn.size(), 1 + std::count_if(in.marks.begin(), in.marks.end(), [&](double t) { return t <= playhead; }));
+    for (const auto& [x, length] : drawn) {
+      EXPECT_GT(length, 0.75 * full) << "a line broken only round a note";
+      broken += length < full - 1e-9;
+    }
+  }
+  EXPECT_GT(broken, 10) << "lines that did cross a note's place";
+}
+
+TEST(StripChart, APointIsRingedOnlyOnceThePlayheadReachesIt) {
+  StripChartInput in;
+  in.times = {0, 1, 2};
+  in.series = {{"e", {-8.0, -6.0, -3.0}, {1, 0, 0, 1}}};
+  in.t0 = 0, in.t1 = 16, in.lo = -9, in.hi = 0, in.log10 = true;
+  in.points = {{1.5, -5.5, "Euler crosses it, 1.5 s", {0.8f, 0.1f, 0.2f, 1}}};
+  auto drawn = [&](double playhead) {
+    in.playhead = playhead;
+    View v;
+    build_strip_chart(v, in, 900, 500, 20.0f);
+    const ChartMap m(in, 900, 500, 20.0f);
+    int rings = 0, labels = 0;
+    for (const PolylineItem& p : v.polylines)
+      if (p.name == "point") {
+        ++rings;
+        double mean_x = 0, mean_y = 0;
+        for (std::size_t i = 0; i + 1 < p.points.size(); ++i) mean_x += p.points[i].x, mean_y += p.points[i].y;
+        mean_x /= double(p.points.size() - 1), mean_y /= double(p.points.size() - 1);
+        EXPECT_NEAR(mean_x, m.at(1.5, -5.5).x, 1e-9) << "round the point";
+        EXPECT_NEAR(mean_y, m.at(1.5, -5.5).y, 1e-9) << "round the point";
+      }
+    for (const TextItem& t : v.texts) labels += t.name == "point_label" && t.text == "Euler crosses it, 1.5 s";
+    return rings * 10 + labels;
+  };
+  EXPECT_EQ(drawn(1.4), 0) << "not before the playhead reaches it";
+  EXPECT_EQ(drawn(1.5), 11) << "ring and label";
+  EXPECT_EQ(drawn(8.0), 10) << "the ring stays; the label goes before the playhead runs across it";
 }
 
 TEST(StripChart, SlowedStretchesAreShadedBandsWithTheirSpeed) {

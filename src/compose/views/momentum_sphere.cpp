@@ -40,6 +40,15 @@ viz::SphereCameraSettings view_camera(const scene::ViewCamera& c, const Eigen::V
   return sphere_settings(c, base);
 }
 
+// A track's name in the sphere's key, short (the key stands beside the ball):
+// "exact Π", "Euler's Π" (the last word of the run's name, less a bracket).
+std::string track_name(const scene::Run& run) {
+  if (run.label == "exact") return "exact \u03a0";
+  std::string t = short_title(run);
+  t = t.substr(0, t.find(" ("));
+  return t.substr(t.rfind(' ') + 1) + "'s \u03a0";
+}
+
 class SpherePanel : public Panel {
  public:
   SpherePanel(const PanelContext& ctx, std::size_t index)
@@ -129,7 +138,7 @@ class SpherePanel : public Panel {
       for (const scene::Run& run : ctx_.runs) {
         if ((run.label == "exact") != bool(exact)) continue;
         viz::SphereTrack t;
-        t.name = short_title(run);
+        t.name = track_name(run);
         t.color = exact ? kExactPathColor : run_color(run);
         t.width = exact ? 1.6f : 0.45f;  // thin: Euler's loops round −e₁ stay apart
         t.reported = bool(exact);  // the methods' paths and dots, over the exact one's, may lie under the axes' names

@@ -11,6 +11,7 @@
 #include "core/observables.hpp"
 #include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
+#include "base/format.hpp"
 #include "viz/palette.hpp"
 #include "viz/strip_chart.hpp"
 #include "viz/text_layout.hpp"
@@ -79,6 +80,7 @@ class PlotPanel : public Panel {
     if (vc_.y_range && vc_.y_log) lo_ = std::log10(lo_), hi_ = std::log10(hi_);
     if (vc_.energy_levels && !runs_.empty())
       levels_ = energy_levels(ctx.scene.bodies[body_], ctx.runs[runs_[0]].energy0[body_], vc_.y_log);
+    if (vc_.y_log && levels_.size() > 1) points_ = crossings(levels_[1].value);  // the separatrix, when the start is under it
     if (compare && ctx.scene.render.explain.flip_marks)  // a comparison's flips, marked on the time axis too
       marks_ = scene::body_flip_times(ctx.scene, *ctx.scene.render.explain.flip_marks);
   }
@@ -98,6 +100,7 @@ class PlotPanel : public Panel {
       if (vc_.shade_speeds) in.shaded.push_back({sm.start, sm.end, scene::speed_text(sm.time_scale)});
     in.marks = marks_;
     in.levels = levels_;
+    in.points = points_;
     in.percent = !vc_.y_log && std::all_of(vc_.series.begin(), vc_.series.end(), [](const std::string& n) { return n == "energy_error"; });
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
@@ -127,7 +130,32 @@ class PlotPanel : public Panel {
   double lo_ = -1, hi_ = 1;
   std::vector<double> marks_;  // s: the flips' times ([draw] flips)
   std::vector<viz::StripChartInput::Level> levels_;  // energy_levels: L²/2I₁, L²/2I₂, L²/2I₃ as ΔE/E
+  std::vector<viz::StripChartInput::Point> points_;  // where a run's energy error first crosses the separatrix
   glm::vec2 size_{1, 1};
+
+  // Each run's first crossing of `level` upwards (energy_error on a log
+  // scale): the frame where its energy leaves the start's side of the
+  // separatrix, the time between two frames by linear interpolation.
+  std::vector<viz::StripChartInput::Point> crossings(double level) const {
+    std::vector<viz::StripChartInput::Point> out;
+    const scene::FrameClock& clock = ctx_.world.clock();
+    if (std::find(vc_.series.begin(), vc_.series.end(), "energy_error") == vc_.series.end()) return out;
+    for (std::size_t r : runs_) {
+      const scene::Run& run = ctx_.runs[r];
+      double prev = std::nan("");
+      for (std::size_t j = 0; j < run.frames.size() && static_cast<long>(j) < clock.count(); ++j) {
+        const double v = value("energy_error", r, run.frames[j]);
+        if (std::isfinite(prev) && prev < level && v >= level) {
+          const double t0 = clock.time(long(j) - 1), t1 = clock.time(long(j));
+          const double t = t0 + (t1 - t0) * (level - prev) / (v - prev);
+          out.push_back({t, level, "crosses it, " + format_number(t, 2) + " s", run_color(run)});
+          break;
+        }
+        prev = v;
+      }
+    }
+    return out;
+  }
 
   // A series' value at a frame of run r; on a log scale log10 |value| (none at 0).
   double value(const std::string& name, std::size_t r, const std::vector<BodyState>& states) const {
@@ -157,14 +185,16 @@ std::string short_title(const scene::Run& run) {
 }
 
 std::vector<viz::StripChartInput::Level> energy_levels(const scene::Body& b, double e0, bool log10) {
-  static const char* const kNames[3] = {"L\u00b2/2I\u2081", "L\u00b2/2I\u2082", "L\u00b2/2I\u2083"};
+  static const char* const kNotes[3] = {"pure e\u2081 spin", "separatrix", "pure e\u2083 spin"};
   const Eigen::Vector3d l_body = b.initial.q.conjugate() * b.initial.L;
   const double rot0 = 0.5 * l_body.cwiseProduct(l_body).dot(b.model.inv_inertia);
   std::vector<viz::StripChartInput::Level> out;
   for (int k = 0; k < 3; ++k) {
     const double v = (0.5 * b.initial.L.squaredNorm() * b.model.inv_inertia[k] - rot0) / std::max(std::abs(e0), 1e-300);
     if (!log10) out.push_back({v, viz::percent_text(v)});  // linear: the axis reads ΔE/E, in per cent
-    else if (v > 1e-12) out.push_back({std::log10(v), kNames[k]});  // |ΔE/E|: a level below the start's (L²/2I₃) would read as one above
+    else if (v > 1e-12)  // |ΔE/E|: a level below the start's (L²/2I₃) would read as one above
+      // named along its line, by what it is and its value, not on the axis (an energy on a ΔE/E axis misreads)
+      out.push_back({std::log10(v), "", kNotes[k] + std::string(", ") + (k == 0 ? viz::percent_text(v) : base::format_for_people(v, 1))});
   }
   return out;
 }
