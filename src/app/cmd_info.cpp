@@ -75,7 +75,7 @@ std::string frames_text(const scene::Scene& s) {
   const scene::FrameClock c = scene::frame_clock(s, s.render.output.fps);
   std::ostringstream o;
   o << "\nframes " << c.count() << " at " << format_number(c.fps()) << " fps (video "
-    << format_number(static_cast<double>(c.count() - 1) / c.fps()) << " s; frame k at video k/fps s)\n";
+    << format_number(static_cast<double>(c.count() - 1) / c.fps(), kShortestDigits) << " s; frame k at video k/fps s)\n";
   char line[200];
   for (const scene::ClockSpan& sp : scene::clock_spans(c)) {
     const double v0 = static_cast<double>(sp.first) / c.fps(), v1 = static_cast<double>(sp.last) / c.fps();
