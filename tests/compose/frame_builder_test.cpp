@@ -275,19 +275,20 @@ TEST(Badge, MethodsCompareStopsAtEachExactFlipAndItsBadgeStaysNearIt) {
   const auto runs = tumble::scene::simulate_runs(s, clock.count(), fps);
   const tumble::compose::FrameBuilder fb(s, runs, fps, 480, 270);
   for (std::size_t i = 0; i < flips.size(); ++i) {
-    const long held = std::lround(clock.video_time(flips[i]) * fps);
-    ASSERT_TRUE(clock.in_hold(held)) << "no stop at exact flip " << i + 1 << ", t = " << flips[i];
-    EXPECT_NEAR(clock.time(held), flips[i], 1e-9) << "exact flip " << i + 1;
+    long held = 0;
+    while (held < clock.count() && !(clock.in_hold(held) && std::abs(clock.time(held) - flips[i]) < 1e-9)) ++held;
+    EXPECT_LT(held, clock.count()) << "no stop at exact flip " << i + 1 << ", t = " << flips[i];
   }
   for (long k = 0; k < clock.count(); k += 2) {
     if (clock.in_hold(k)) continue;
     std::string badge;
     for (const tumble::viz::TextItem& t : fb.build(k).texts)
       if (t.name == "speed") badge = t.text;
-    for (std::size_t i = 0; i < flips.size(); ++i)
-      if (std::abs(clock.time(k) - flips[i]) > 0.3)
-        EXPECT_EQ(badge.find("exact flip " + std::to_string(i + 1)), std::string::npos)
-            << badge << " at t = " << clock.time(k) << ", " << clock.time(k) - flips[i] << " s from the flip";
+    for (std::size_t i = 0; i < flips.size(); ++i) {
+      if (std::abs(clock.time(k) - flips[i]) <= 0.3) continue;
+      EXPECT_EQ(badge.find("exact flip " + std::to_string(i + 1)), std::string::npos)
+          << badge << " at t = " << clock.time(k) << ", " << clock.time(k) - flips[i] << " s from the flip";
+    }
   }
   for (long k = 0; k < clock.count(); ++k) {
     if (clock.in_hold(k)) continue;
