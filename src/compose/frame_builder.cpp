@@ -20,6 +20,7 @@ namespace {
 constexpr viz::Color kInk{0.12f, 0.13f, 0.16f, 1.0f};
 constexpr viz::Color kDiverged{0.75f, 0.1f, 0.1f, 1.0f};
 constexpr const char* kPaused = "paused";  // the badge while a [[holds]] stop lasts
+constexpr double kCaptionSeam = 0.5;  // video s: a caption this close to the next cuts to it
 constexpr const char* kWaiting = "waiting to start";  // a stop at t = 0: nothing has moved yet, so nothing is paused
 
 int grid_columns(std::size_t runs) {
@@ -261,13 +262,27 @@ std::vector<std::pair<std::size_t, float>> FrameBuilder::captions_at(long k) con
   const double tau = static_cast<double>(k) / clock.fps();  // video time
   std::vector<std::pair<std::size_t, float>> out;
   const auto& captions = scene_.render.explain.captions;
+  std::vector<std::pair<double, double>> spans;
+  for (const scene::Caption& c : captions) spans.push_back(scene::caption_video_span(clock, c));
   for (std::size_t i = 0; i < captions.size(); ++i) {
     // Up from the first frame showing `start` to the last showing `end` (through a hold there); a caption
     // up to the run's end does not fade out, so the video's last frame still says what it shows.
-    const auto [start, last] = scene::caption_video_span(clock, captions[i]);
+    auto [start, last] = spans[i];
     const bool to_end = captions[i].seconds <= 0 && captions[i].end >= scene_.simulation.duration;
-    const double end = to_end ? last + 1e6 : last;
-    const float a = viz::fade_alpha(tau, start, end);
+    // One caption followed by the next within half a second cuts to it: a fade out and a fade in
+    // between them would leave the frame without words for most of a second.
+    bool cut_in = false, cut_out = false;
+    for (std::size_t j = 0; j < spans.size(); ++j) {
+      if (j == i) continue;
+      if (spans[j].first > last && spans[j].first - last < kCaptionSeam) {
+        cut_out = true;
+        last = spans[j].first - 0.5 / clock.fps();
+      }
+      if (start > spans[j].second && start - spans[j].second < kCaptionSeam) cut_in = true;
+    }
+    if (tau < start || tau > last) continue;
+    const double end = to_end || cut_out ? last + 1e6 : last;
+    const float a = viz::fade_alpha(tau, cut_in ? start - 1e6 : start, end);
     if (a > 0) out.emplace_back(i, a);
   }
   return out;

@@ -23,6 +23,7 @@ namespace tumble::render {
   X(PFNGLDEPTHMASKPROC, DepthMask, "glDepthMask")                                \
   X(PFNGLDEPTHFUNCPROC, DepthFunc, "glDepthFunc")                                \
   X(PFNGLCULLFACEPROC, CullFace, "glCullFace")                                   \
+  X(PFNGLPOLYGONOFFSETPROC, PolygonOffset, "glPolygonOffset")                    \
   X(PFNGLLINEWIDTHPROC, LineWidth, "glLineWidth")                                \
   X(PFNGLPIXELSTOREIPROC, PixelStorei, "glPixelStorei")                          \
   X(PFNGLREADPIXELSPROC, ReadPixels, "glReadPixels")                             \

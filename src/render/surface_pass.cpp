@@ -52,7 +52,12 @@ void SurfacePass::draw_items(const std::vector<viz::SurfaceItem>& items, const g
     if (!it.mesh || it.mesh->positions.empty() || (it.color.a < 1.0f) != translucent) continue;
     InstancedMesh& mesh = upload(it.mesh);
     mesh.upload({MeshInstance{glm::mat4(it.model), it.color}});
+    if (it.behind) {
+      gl_->Enable(GL_POLYGON_OFFSET_FILL);
+      gl_->PolygonOffset(2.0f, 8.0f);  // a few depth steps back, more on faces seen at a slant
+    }
     mesh.draw();
+    if (it.behind) gl_->Disable(GL_POLYGON_OFFSET_FILL);
   }
 }
 

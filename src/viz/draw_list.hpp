@@ -69,6 +69,10 @@ struct SurfaceItem {
   glm::dmat4 model;
   Color color;
   std::string name = {};    ///< e.g. "ellipsoid": a key keeps clear of a named surface
+  /// Drawn a little further away in depth than it lies: where it coincides
+  /// with an opaque surface (a reference ghost on a body that keeps to it),
+  /// that surface shows whole instead of in stripes of both (z-fighting).
+  bool behind = false;
 };
 
 /// One level of detail of a body's particles, in its cloud axes.

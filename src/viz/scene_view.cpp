@@ -100,7 +100,7 @@ void add_ghosts(View& view, const std::vector<BodySnapshot>& bodies, Color tint)
     if (!b.look) continue;
     const Eigen::Quaterniond qc = cloud_orientation(*b.model, b.state);
     const glm::dmat4 model = cloud_to_world(b.state.c - qc * b.model->com_cloud, qc);
-    for (std::size_t i = 0; i < b.look->surfaces.size(); ++i) view.surfaces.push_back({b.look->surfaces[i], model, tint, "ghost"});
+    for (std::size_t i = 0; i < b.look->surfaces.size(); ++i) view.surfaces.push_back({b.look->surfaces[i], model, tint, "ghost", true});
   }
 }
 

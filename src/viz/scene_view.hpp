@@ -71,7 +71,7 @@ void add_bodies(View& view, const std::vector<BodySnapshot>& bodies, const DrawO
                 const TrailRecorder* trails, double t);
 
 /// Adds a faint copy of each body's surfaces, every part in `tint` (its alpha
-/// too), named "ghost": where a reference solution has the body, so a
+/// too), named "ghost" and drawn `behind`: where a reference solution has the body, so a
 /// departure from it shows.
 void add_ghosts(View& view, const std::vector<BodySnapshot>& bodies, Color tint);
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "compose/frame_builder.hpp"
+#include "scene/events.hpp"
 #include "scene/frame_clock.hpp"
 #include "scene/frame_runs.hpp"
 #include "scene/scene.hpp"
@@ -261,6 +262,41 @@ TEST(Badge, AComparisonsFlipsAreTheExactOnes) {
   };
   EXPECT_EQ(badge(k), "paused at exact flip 1");
   EXPECT_EQ(badge(run).rfind("exact flip 1", 0), 0u) << badge(run);
+}
+
+// methods_compare stops at each of the exact solution's flips (the run's events, not a time written
+// near them), its "exact flip N" badge is gone 0.3 simulated s after the flip, and no
+// caption says "Paused" while the animation runs.
+TEST(Badge, MethodsCompareStopsAtEachExactFlipAndItsBadgeStaysNearIt) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/methods_compare.toml");
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  const std::vector<double> flips = tumble::scene::body_flip_times(s, 0);
+  ASSERT_EQ(flips.size(), 5u);
+  const auto runs = tumble::scene::simulate_runs(s, clock.count(), fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 480, 270);
+  for (std::size_t i = 0; i < flips.size(); ++i) {
+    long held = 0;
+    while (held < clock.count() && !(clock.in_hold(held) && std::abs(clock.time(held) - flips[i]) < 1e-9)) ++held;
+    EXPECT_LT(held, clock.count()) << "no stop at exact flip " << i + 1 << ", t = " << flips[i];
+  }
+  for (long k = 0; k < clock.count(); k += 2) {
+    if (clock.in_hold(k)) continue;
+    std::string badge;
+    for (const tumble::viz::TextItem& t : fb.build(k).texts)
+      if (t.name == "speed") badge = t.text;
+    for (std::size_t i = 0; i < flips.size(); ++i) {
+      if (std::abs(clock.time(k) - flips[i]) <= 0.3) continue;
+      EXPECT_EQ(badge.find("exact flip " + std::to_string(i + 1)), std::string::npos)
+          << badge << " at t = " << clock.time(k) << ", " << clock.time(k) - flips[i] << " s from the flip";
+    }
+  }
+  for (long k = 0; k < clock.count(); ++k) {
+    if (clock.in_hold(k)) continue;
+    for (const auto& [c, a] : fb.captions_at(k))
+      EXPECT_EQ(s.render.explain.captions[c].text.find("Paused"), std::string::npos) << "running frame " << k;
+  }
 }
 
 }  // namespace

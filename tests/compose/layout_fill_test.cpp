@@ -208,7 +208,10 @@ TEST(LayoutFill, ComparisonCellsShowTheExactBodyFaintlyInGrey) {
       EXPECT_LT(x.color.a, 0.5f) << runs[r].label;
       EXPECT_EQ(x.color, compose::kGhostColor) << runs[r].label;
       EXPECT_NE(x.color, sf.front().color) << "the ghost in the body's own colour tangles with it";
+      // RK4's body lies on the ghost: drawn at the same depth, the two would show in stripes.
+      EXPECT_TRUE(x.behind) << runs[r].label << ": the ghost z-fights the body it coincides with";
     }
+    EXPECT_FALSE(sf.front().behind) << "the method's own body is drawn where it is";
   }
   // Explicit Euler has left the exact motion by then: its body and the ghost differ.
   const auto& euler = dl.views[0].surfaces;
