@@ -285,7 +285,10 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
     move_text(b, shift);
     dl.texts.push_back(std::move(b));
   }
-  if (!plan_.frame_key.empty()) {
+  const double t = world_.clock().time(k);
+  const bool keyed = plan_.frame_key_always || std::any_of(plan_.frame_key_views.begin(), plan_.frame_key_views.end(),
+                                                           [&](std::size_t i) { return shown(i, t); });
+  if (!plan_.frame_key.empty() && keyed) {
     const viz::Box& b = plan_.frame_key_box;
     viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * (b.x0 + b.x1), b.y0 + 0.5f * plan_.frame_key_px, plan_.frame_key_px,
                      b.x1 - b.x0 - plan_.frame_key_px);
@@ -303,6 +306,14 @@ bool FrameBuilder::title_card(viz::DrawList& dl, long k) const {
   return true;
 }
 
+// Whether panel i is drawn at simulated t: a [compare] cell always, a view
+// from its `appear` until its `until` (a later segment's views take its room).
+bool FrameBuilder::shown(std::size_t i, double t) const {
+  if (i < cells_) return true;
+  const scene::ViewConfig& v = scene_.render.explain.views[i - cells_];
+  return t >= v.appear && t < v.until;
+}
+
 viz::DrawList FrameBuilder::build(long k) const {
   viz::DrawList dl;
   const Eigen::Vector3d& bg = scene_.render.output.background;
@@ -310,10 +321,8 @@ viz::DrawList FrameBuilder::build(long k) const {
   if (title_card(dl, k)) return dl;  // the animation waits
   dl.notes = plan_.notes;
   const double t = world_.clock().time(k);
-  const auto& views = scene_.render.explain.views;
   for (std::size_t i = 0; i < panels_.size(); ++i)
-    if (i < cells_ || t >= views[i - cells_].appear)
-      dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
+    if (shown(i, t)) dl.views.push_back(view_at(i, k, dl.notes));  // revealed in order, in their room
   add_frame_text(dl, k);
   return dl;
 }

@@ -37,6 +37,7 @@ class FrameBuilder {
   std::vector<std::pair<std::size_t, float>> captions_at(long k) const;
 
  private:
+  bool shown(std::size_t i, double t) const;
   viz::View view_at(std::size_t i, long k, std::vector<std::string>& notes) const;
   void add_frame_text(viz::DrawList& dl, long k) const;
   bool title_card(viz::DrawList& dl, long k) const;

@@ -80,10 +80,11 @@ std::vector<std::vector<viz::KeyEntry>> split_keys(const FrameNeeds& n, FramePla
     repeated = !n.views[i].key.empty() && std::all_of(n.views[i].key.begin(), n.views[i].key.end(),
                                                       [&](const viz::KeyEntry& e) { return shown_elsewhere(i, e); });
   if (!repeated) return own;
-  for (std::vector<viz::KeyEntry>& key : own) {
-    for (const viz::KeyEntry& e : key)
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    for (const viz::KeyEntry& e : own[i])
       if (!has_entry(p.frame_key, e)) p.frame_key.push_back(e);
-    key.clear();
+    if (!own[i].empty()) p.frame_key_views.push_back(i);
+    own[i].clear();
   }
   return own;
 }
@@ -109,6 +110,7 @@ void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<v
     if (w - viz::key_size(keys[i], key_px).x - 3 * pad >= keep * w) continue;
     for (const viz::KeyEntry& k : keys[i])
       if (!has_entry(p.frame_key, k)) p.frame_key.push_back(k);
+    p.frame_key_views.push_back(i);
     keys[i].clear();
   }
 }
@@ -252,6 +254,7 @@ FramePlan plan_frame(const FrameNeeds& n) {
   FramePlan p;
   plan_captions(n, p);
   p.frame_key = n.frame_key;
+  p.frame_key_always = !n.frame_key.empty();
   std::vector<std::vector<viz::KeyEntry>> keys = split_keys(n, p);
   move_wide_keys(n, p, keys);
   plan_frame_key(n, p);

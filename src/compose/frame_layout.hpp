@@ -71,6 +71,11 @@ struct FramePlan {
   viz::Box frame_key_box;   ///< frame px
   bool frame_key_in_corner = false;  ///< in a corner the views leave free, not a strip across the frame
   float frame_key_px = 0;
+  /// The views whose keys it holds: drawn while one of them is (a closing
+  /// segment's views, with no key, do not show the views' key it replaced),
+  /// or always where the frame has a key of its own (a legend).
+  std::vector<std::size_t> frame_key_views;
+  bool frame_key_always = false;
   std::vector<std::string> notes;  ///< what was left out, where and why
 };
 

@@ -138,6 +138,18 @@ std::string angle_readout(const viz::BodySnapshot& b) {
   return text;
 }
 
+// The angle between the body's principal axis e_i (i = 0, 1, 2) and L
+// (world), degrees: near 0 while it spins about e_i, past 90 once e_i has turned over.
+std::string axis_angle_readout(const viz::BodySnapshot& b, int i) {
+  const Eigen::Vector3d e = b.state.q * Eigen::Vector3d::Unit(i), L = b.state.L;
+  const double deg = std::atan2(e.cross(L).norm(), e.dot(L)) * 180 / std::numbers::pi;
+  static const char* kSub[] = {"\u2081", "\u2082", "\u2083"};
+  char text[48];
+  // Digits are two spaces wide: padded so that the readout never moves.
+  std::snprintf(text, sizeof text, "\u2220(e%s, L) = %s%.1f\u00b0", kSub[i], deg < 10 ? "    " : deg < 100 ? "  " : "", deg);
+  return text;
+}
+
 // The overlay lines: time, method, step, energy error, state, as the scene's overlay asks;
 // the energy error on a line of its own where cells are narrow ([compare] arrange = "side").
 std::vector<std::string> overlay_line(const scene::OverlayItems& items, const scene::Run& run, std::size_t run_count,
@@ -180,6 +192,8 @@ std::vector<std::string> overlay_line(const scene::OverlayItems& items, const sc
     lines.push_back(std::exchange(line, state[1]));
   }
   part(items.angle && !snaps.empty(), snaps.empty() ? std::string() : angle_readout(snaps.front()));
+  const bool axes[3] = {items.e1_angle, items.e2_angle, items.e3_angle};
+  for (int i = 0; i < 3; ++i) part(axes[i] && !snaps.empty(), snaps.empty() ? std::string() : axis_angle_readout(snaps.front(), i));
   lines.push_back(line);
   return lines;
 }
@@ -341,6 +355,41 @@ std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {
   if (run.diverged && k > last)
     out.push_back("diverged: stopped at t = " + std::to_string(clock_.time(last)).substr(0, 6) + " s");
   return out;
+}
+
+// A view's column is narrow: each item on a line of its own (the state's two lines as they are).
+std::vector<std::string> WorldViews::readout(std::size_t r, long k, std::size_t b, const scene::OverlayItems& items) const {
+  const scene::Run& run = runs_[r];
+  const long kk = std::min(k, static_cast<long>(run.frames.size()) - 1);
+  if (kk < 0) return {};
+  const std::vector<viz::BodySnapshot> all = snapshots(scene_, run.frames[static_cast<size_t>(kk)]);
+  if (b >= all.size()) return {};
+  std::vector<std::string> out;
+  for (const scene::OverlayItems& one : readout_items(items))
+    for (std::string& line : overlay_line(one, run, runs_.size(), {all[b]}, clock_.time(k), 0, false)) out.push_back(std::move(line));
+  return out;
+}
+
+// A view's readout items one at a time, in the overlay's order.
+std::vector<scene::OverlayItems> WorldViews::readout_items(const scene::OverlayItems& items) {
+  std::vector<scene::OverlayItems> out;
+  const scene::OverlayItems none{false, false, false, false};
+  auto add = [&](bool on, bool scene::OverlayItems::*member) {
+    if (!on) return;
+    out.push_back(none);
+    out.back().*member = true;
+  };
+  add(items.time, &scene::OverlayItems::time);
+  add(items.state, &scene::OverlayItems::state);
+  add(items.angle, &scene::OverlayItems::angle);
+  add(items.e1_angle, &scene::OverlayItems::e1_angle);
+  add(items.e2_angle, &scene::OverlayItems::e2_angle);
+  add(items.e3_angle, &scene::OverlayItems::e3_angle);
+  return out;
+}
+
+int WorldViews::readout_lines(const scene::OverlayItems& items) {
+  return static_cast<int>(readout_items(items).size()) + (items.state ? 1 : 0);
 }
 
 int WorldViews::overlay_lines(std::size_t r) const {

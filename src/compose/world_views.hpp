@@ -60,6 +60,12 @@ class WorldViews {
   /// Run `r`'s overlay at frame k: its line (time, method, step, energy error,
   /// as the scene asks) and, once it has diverged, where it stopped.
   std::vector<std::string> overlay(std::size_t r, long k) const;
+  /// Body b's own readout in run r at frame k: `items` of that body alone (a
+  /// view's `readout`: no energy error, method or step), each item on a line of its own.
+  std::vector<std::string> readout(std::size_t r, long k, std::size_t b, const scene::OverlayItems& items) const;
+  /// How many lines readout(·, ·, ·, items) has (state takes two).
+  static int readout_lines(const scene::OverlayItems& items);
+  static std::vector<scene::OverlayItems> readout_items(const scene::OverlayItems& items);
   /// How many lines overlay(r, ·) has at most.
   int overlay_lines(std::size_t r) const;
 

@@ -9,6 +9,16 @@
 
 namespace tumble::scene {
 
+/// Which parts of a readout line show ([draw] overlay, a world view's readout).
+struct OverlayItems {
+  bool time = true, method = true, step = true, energy = true;
+  bool state = false;  ///< E, |L| and |ω| of the first body: only when asked for
+  bool angle = false;  ///< ∠(ω, L) of the first body, degrees: only when asked for
+  /// ∠(e₁, L), ∠(e₂, L), ∠(e₃, L) of the first body, degrees: how far a spin axis is from L (past 90°: turned over)
+  bool e1_angle = false, e2_angle = false, e3_angle = false;
+  bool any() const { return time || method || step || energy || state || angle || e1_angle || e2_angle || e3_angle; }
+};
+
 /// A stretch of simulated time played at its own speed.
 struct SlowMotion {
   double start = 0, end = 0;  ///< simulated s
@@ -101,6 +111,9 @@ struct ViewConfig {
   bool energy_levels = false;
   double appear = 0;                ///< simulated s from which the view is drawn (progressive reveal)
   std::string appear_text;          ///< as written ("flip 1 - 0.5")
+  double until = 1e300;             ///< simulated s from which the view is no longer drawn (a closing segment's views replace it)
+  /// world view of one body: its own readout lines under its title (time, state, angle, e2_angle of that body)
+  std::optional<OverlayItems> readout;
   /// momentum_sphere `turn`: from the first frame showing simulated `at`, its
   /// fixed camera turns to `azimuth`/`elevation` over `seconds` of video (eased in and out).
   struct Turn {

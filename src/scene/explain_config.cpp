@@ -173,7 +173,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
                    "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom",
-                   "dot_scale", "dark_levels"});
+                   "dot_scale", "dark_levels", "readout", "until"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -211,6 +211,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
     read_sphere_marks(r, v);
     read_turn(r, ctx, s, body, v);
     read_build_up(r, s, body, v);
+    read_view_readout(r, s, body, v);
     s.render.explain.views.push_back(std::move(v));
   }
   // A comparison lays out its own grid of cells; plots of its runs, or a momentum sphere with each run's Π, may go beside it.

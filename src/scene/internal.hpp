@@ -60,6 +60,11 @@ void read_sphere_marks(TableReader& r, ViewConfig& v);
 /// a momentum_sphere's energy_ellipsoid, path, line_scale, levels.
 void read_sphere_options(TableReader& r, ViewConfig& v);
 
+/// A list of overlay items ("time", "state", "angle", ...) under `key`; none where `key` is no array (overlay_items.cpp).
+std::optional<OverlayItems> read_overlay_items(TableReader& r, std::string_view key);
+/// A world view's `readout` (of its own body) and `until`; errors for other kinds (overlay_items.cpp).
+void read_view_readout(TableReader& r, const Scene& s, std::size_t body, ViewConfig& v);
+
 /// Reads [[views]], [[captions]], [title], [[slow_motion]] into scene.render.explain
 /// (after read_render_config and read_bodies: it checks body names and times).
 void read_explain_config(TableReader& root, LoadContext& ctx, Scene& scene);

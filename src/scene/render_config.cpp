@@ -126,18 +126,8 @@ void read_draw(TableReader& r, const LoadContext& ctx, Scene& s) {
   d.arrow_length = r.number("arrow_length", Range::closed(0.25, 4)).value_or(d.arrow_length);
   d.text_scale = r.number("text_scale", Range::closed(0.5, 1.5)).value_or(d.text_scale);
   d.tip_names_further = r.boolean("tip_names_further").value_or(d.tip_names_further);
-  if (const toml::node* n = r.node("overlay"); n && n->is_array()) {
-    // A list of the overlay's items: only those are shown.
-    d.overlay_items = {false, false, false, false, false, false};
-    for (const std::string& item : r.strings("overlay").value_or(std::vector<std::string>{})) {
-      if (item == "time") d.overlay_items.time = true;
-      else if (item == "method") d.overlay_items.method = true;
-      else if (item == "step") d.overlay_items.step = true;
-      else if (item == "energy") d.overlay_items.energy = true;
-      else if (item == "state") d.overlay_items.state = true;
-      else if (item == "angle") d.overlay_items.angle = true;
-      else r.error("overlay", "expected items from \"time\", \"method\", \"step\", \"energy\", \"state\", \"angle\", found " + quote_token(item));
-    }
+  if (const auto items = read_overlay_items(r, "overlay")) {
+    d.overlay_items = *items;  // a list of the overlay's items: only those are shown
     d.overlay = d.overlay_items.any();
   } else {
     d.overlay = r.boolean("overlay").value_or(d.overlay);

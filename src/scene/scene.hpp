@@ -89,14 +89,6 @@ struct CameraConfig {
   double roll_deg = 0;
 };
 
-/// Lines of the overlay, each switchable (`[draw] overlay = ["time", ...]`).
-struct OverlayItems {
-  bool time = true, method = true, step = true, energy = true;
-  bool state = false;  ///< E, |L| and |ω| of the first body: only when asked for
-  bool angle = false;  ///< ∠(ω, L) of the first body, degrees: only when asked for
-  bool any() const { return time || method || step || energy || state || angle; }
-};
-
 /// `[draw]`: viz's options for the bodies (box, axes, particles, L, ω,
 /// trails, grid: filled by name by the reader) plus the frame's text.
 struct DrawConfig : viz::DrawOptions {

@@ -168,8 +168,10 @@ TEST(Overlay, AngleReadoutShowsOmegaLeavingL) {
   ASSERT_LT(clock.time(k0), 0.01);
   const Eigen::Vector3d w(0.25, 4.0, 0.7), L = s.bodies[0].model.inertia.cwiseProduct(w);
   const double deg = std::acos(w.dot(L) / (w.norm() * L.norm())) * 180 / std::numbers::pi;
-  char want[48];
-  std::snprintf(want, sizeof want, "\u2220(\u03c9, L) =   %.1f\u00b0", deg);
+  // and the angle of the stem e₂ (y at the start) to L, which the captions call "15° off".
+  const double stem = std::acos(L.y() / L.norm()) * 180 / std::numbers::pi;
+  char want[96];
+  std::snprintf(want, sizeof want, "\u2220(\u03c9, L) =   %.1f\u00b0   \u2220(e\u2082, L) =   %.1f\u00b0", deg, stem);
   EXPECT_EQ(readout(k0), want);
   const std::string flip = readout(k1);
   ASSERT_FALSE(flip.empty());

@@ -38,10 +38,15 @@ class WorldPanel : public Panel {
     if (const auto box = box_key(ctx_); box && only_) k.push_back(*box);
     return k;
   }
+  // A view's own readout (of its body), else the frame's overlay where the view shows the first body.
   std::vector<std::string> overlay(long k) const override {
+    if (vc_ && vc_->readout) return ctx_.world.readout(run_, k, *only_, *vc_->readout);
     return read_out() ? ctx_.world.overlay(run_, k) : std::vector<std::string>{};
   }
-  int overlay_lines() const override { return read_out() ? ctx_.world.overlay_lines(run_) : 0; }
+  int overlay_lines() const override {
+    if (vc_ && vc_->readout) return WorldViews::readout_lines(*vc_->readout);
+    return read_out() ? ctx_.world.overlay_lines(run_) : 0;
+  }
 
   void fit(glm::vec2 size) override {
     size_ = size;
