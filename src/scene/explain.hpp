@@ -96,6 +96,10 @@ struct ViewConfig {
   double zoom = 1;                  ///< momentum_sphere: the figure this much larger in its content (room kept for fewer labels)
   double dot_scale = 1;             ///< momentum_sphere: Π's dot radius times this (on top of line_scale)
   bool dark_levels = false;         ///< momentum_sphere: the other levels dark grey and opaque (read from afar), not faint
+  bool path_on_top = false;         ///< momentum_sphere: Π's trail drawn over the dashed separatrix (a path a fraction of a degree off it)
+  /// momentum_sphere: these bodies' Π from t = 0 on the one sphere, each scaled to it (Π/|L| of its own):
+  /// bodies of one inertia compared on one figure; empty = the view's body's Π alone
+  std::vector<std::string> paths_of;
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
   double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)

@@ -173,7 +173,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
                    "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom",
-                   "dot_scale", "dark_levels", "readout", "until"});
+                   "dot_scale", "dark_levels", "readout", "until", "paths_of", "path_on_top"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
@@ -209,6 +209,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
       r.error("ellipsoid_from", "only a momentum_sphere view draws an energy ellipsoid");
     v.ellipsoid_from = read_time(r, "ellipsoid_from", s, body).value_or(r.has("ellipsoid_from") ? 1e300 : 0);
     read_sphere_marks(r, v);
+    read_sphere_paths(r, ctx, v);
     read_turn(r, ctx, s, body, v);
     read_build_up(r, s, body, v);
     read_view_readout(r, s, body, v);

@@ -55,6 +55,8 @@ std::optional<double> read_time(TableReader& r, std::string_view key, const Scen
 void read_turn(TableReader& r, LoadContext& ctx, const Scene& s, std::size_t body, ViewConfig& v);
 void read_build_up(TableReader& r, const Scene& s, std::size_t body, ViewConfig& v);
 void read_sphere_marks(TableReader& r, ViewConfig& v);
+/// A momentum_sphere's `paths_of`: bodies whose Π it draws, each scaled to the sphere (sphere_marks.cpp).
+void read_sphere_paths(TableReader& r, const LoadContext& ctx, ViewConfig& v);
 
 /// A view's look (view_look.cpp): a world view's trail_axes, box, line_scale, tip_names;
 /// a momentum_sphere's energy_ellipsoid, path, line_scale, levels.

@@ -141,10 +141,12 @@ std::vector<std::vector<glm::dvec3>> dashed(const std::vector<glm::dvec3>& curve
 // separatrix" stays visible (the dashes a hair further out, over it).
 void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vector<glm::dvec3> path) {
   const float w = in.line_scale;
-  if (in.trail && path.size() >= 2) {
-    for (glm::dvec3& x : path) x *= 1.004;
-    view.polylines.push_back({std::move(path), color_of(Meaning::polhode), 3.0f * w, false, "polhode"});
-  }
+  const bool drawn = in.trail && path.size() >= 2;
+  for (glm::dvec3& x : path) x *= in.path_on_top ? 1.012 : 1.004;
+  // Under the separatrix (drawn first), or over it (drawn last, a hair further out).
+  if (drawn && !in.path_on_top) view.polylines.push_back({path, color_of(Meaning::polhode), 3.0f * w, false, "polhode"});
+  if (drawn && in.path_on_top && !in.reveal.separatrix)
+    view.polylines.push_back({path, color_of(Meaning::polhode), 3.0f * w, false, "polhode"});
   if (!in.reveal.separatrix) return;
   for (const auto& circle : separatrix(in.inertia, 1.0, 192)) {
     std::vector<glm::dvec3> unit;
@@ -154,6 +156,7 @@ void add_separatrix_and_path(View& view, const MomentumSphereInput& in, std::vec
       view.polylines.push_back({std::move(dash), color_of(Meaning::separatrix), 1.6f * w, false, "separatrix"});
     }
   }
+  if (drawn && in.path_on_top) view.polylines.push_back({std::move(path), color_of(Meaning::polhode), 3.0f * w, false, "polhode"});
 }
 
 namespace {

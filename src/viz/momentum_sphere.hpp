@@ -70,6 +70,7 @@ struct MomentumSphereInput {
   bool level_arrows = true;                 ///< each other level's direction arrow (and the key's promise of it)
   float dot_scale = 1;                      ///< Π's dot radius, times this (on top of line_scale)
   bool dark_levels = false;                 ///< the other levels dark grey and opaque, wider, arrows larger: read from afar
+  bool path_on_top = false;                 ///< Π's trail over the separatrix (default under it: the separatrix reads across it)
   SphereReveal reveal = {};                 ///< what a build-up shows so far (the ellipsoid: energy_ellipsoid, ellipsoid_alpha)
   /// Several paths on the one sphere (the same body stepped by several methods), drawn in this
   /// order, each ended by its dot, instead of `history` and Π's own dot (`momentum` still sets |L|).

@@ -65,5 +65,39 @@ TEST(SphereTracks, AComparisonsSphereDrawsEachMethodsPathAgainstTheExactOne) {
 
 }
 
+// A sphere's `paths_of` (poinsot's "why"): each body's Π on the one sphere, scaled
+// by |L| of the view's body over its own: on the unit sphere, each on its own
+// level 2E/|L|² (the same box spun twice: box 1's loop well inside e₃'s
+// region, box 2's just below the separatrix's 1/I₂), from t = 0 to now.
+TEST(SphereTracks, PathsOfSeveralBodiesLieOnTheOneSphereEachOnItsOwnLevel) {
+  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "poinsot.toml");
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
+  const viz::DrawList dl = fb.build(count - 1);
+  const auto sphere = std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
+  ASSERT_NE(sphere, dl.views.end());
+  const Eigen::Vector3d& inertia = s.bodies[0].model.inertia;
+  double levels[2] = {0, 0};
+  for (std::size_t b = 0; b < 2; ++b) {
+    const auto path = std::find_if(sphere->polylines.begin(), sphere->polylines.end(),
+                                   [&](const viz::PolylineItem& p) { return p.name == "polhode " + s.bodies[b].label; });
+    ASSERT_NE(path, sphere->polylines.end()) << s.bodies[b].label;
+    const Eigen::Vector3d pi0 = runs[0].frames[0][b].q.conjugate() * runs[0].frames[0][b].L;
+    const double own = pi0.cwiseProduct(inertia.cwiseInverse()).dot(pi0) / pi0.squaredNorm();
+    for (const glm::dvec3& x : path->points) {
+      ASSERT_NEAR(glm::length(x), 1.004, 1e-6) << s.bodies[b].label << ": on the one sphere, a hair out";
+      ASSERT_NEAR(level(x, inertia) / own, 1.0, 1e-6) << s.bodies[b].label;
+    }
+    EXPECT_GT(path->points.size(), 100u) << "from t = 0";
+    levels[b] = own;
+  }
+  // Both round e₃ (below the separatrix's 1/I₂), box 1 well inside, box 2 just below it: two curves, not one.
+  EXPECT_LT(levels[0], levels[1] - 0.1 * (levels[1] - 1 / inertia[2]));
+  EXPECT_LT(levels[1], 1 / inertia[1]);
+  EXPECT_GT(levels[1], 1 / inertia[1] - 0.02 * (1 / inertia[1] - 1 / inertia[2]));
+}
+
 }  // namespace
 }  // namespace tumble

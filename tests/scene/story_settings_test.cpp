@@ -158,6 +158,14 @@ TEST(Reveal, AnEnergyEllipsoidFadesInFromItsAnchoredTime) {
   EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_opacity = 2\n").find("views[1].ellipsoid_opacity"),
             std::string::npos);
   EXPECT_NE(error_of("ellipsoid_from = 1\n").find("only a momentum_sphere view draws an energy ellipsoid"), std::string::npos);
+  // paths_of: bodies whose Π a sphere draws; a body's name, and on a sphere only.
+  EXPECT_EQ(load("[[views]]\nkind = \"momentum_sphere\"\npaths_of = [\"t_handle\"]\n").render.explain.views[1].paths_of,
+            std::vector<std::string>{"t_handle"});
+  EXPECT_TRUE(s.render.explain.views[1].paths_of.empty());
+  EXPECT_NE(error_of("paths_of = [\"t_handle\"]\n").find("only a momentum_sphere view takes paths_of"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npaths_of = [\"t_handel\"]\n").find("did you mean \"t_handle\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npaths_of = []\n").find("views[1].paths_of"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nellipsoid_from = \"soon\"\n").find("story.toml:14:18: error: views[1].ellipsoid_from"),
             std::string::npos);
 }

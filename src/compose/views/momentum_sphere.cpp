@@ -133,6 +133,7 @@ class SpherePanel : public Panel {
   // in its own colour, narrower, so a method that keeps to it shows on it.
   std::vector<viz::SphereTrack> tracks(long k) const {
     std::vector<viz::SphereTrack> out;
+    if (!ctx_.scene.render.explain.views[index_].paths_of.empty()) return body_tracks(k);
     if (ctx_.runs.size() < 2) return out;
     for (int exact : {1, 0})
       for (const scene::Run& run : ctx_.runs) {
@@ -149,6 +150,30 @@ class SpherePanel : public Panel {
           for (long j = 0; j <= kk; ++j) t.path.push_back(momentum_body(run.frames[static_cast<std::size_t>(j)][body_]));
         out.push_back(std::move(t));
       }
+    return out;
+  }
+
+  // The view's `paths_of`: each body's Π from t = 0, times |L|/|L_b| (this view's
+  // body's |L| over its own), so bodies of one inertia spun differently lie on the
+  // one sphere; their energies' curves differ only by E/|L|², which the scaling keeps.
+  std::vector<viz::SphereTrack> body_tracks(long k) const {
+    // Crimson, dark ochre, violet (the comparison's run colours): apart from the axes, L and each other.
+    static const viz::Color kColors[] = {{0.80f, 0.08f, 0.22f, 1}, {0.58f, 0.43f, 0.0f, 1}, {0.50f, 0.22f, 0.72f, 1}};
+    std::vector<viz::SphereTrack> out;
+    const long kk = ctx_.runs.empty() ? -1 : last_frame(ctx_.runs[0], k);
+    if (kk < 0 || ctx_.runs[0].frames.empty()) return out;
+    const scene::Run& run = ctx_.runs[0];
+    const double L = momentum_body(run.frames[0][body_]).norm();
+    const auto& names = ctx_.scene.render.explain.views[index_].paths_of;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const std::size_t b = static_cast<std::size_t>(ctx_.scene.find_body(names[i]) - ctx_.scene.bodies.data());
+      const double Lb = momentum_body(run.frames[0][b]).norm();
+      viz::SphereTrack t;
+      t.name = ctx_.scene.bodies[b].label;
+      t.color = kColors[i % 3];
+      for (std::size_t j = 0; j < run.path_end(kk); ++j) t.path.push_back(momentum_body(run.path[j][b]) * (L / Lb));
+      out.push_back(std::move(t));
+    }
     return out;
   }
 
@@ -173,6 +198,7 @@ class SpherePanel : public Panel {
     in.level_arrows = view.level_arrows;
     in.dot_scale = static_cast<float>(view.dot_scale);
     in.dark_levels = view.dark_levels;
+    in.path_on_top = view.path_on_top;
     return in;
   }
 
