@@ -55,7 +55,7 @@ TEST(PoinsotViews, BoxViewHasE2AcrossAndE3Up) {
   const std::size_t body = 1;  // "tumbling"
   ASSERT_EQ(l.scene.bodies[body].name, "tumbling");
   int seen = 0;
-  // The last at t = 8 s, after flip 3: from flip 3 + 0.21 s the "why" sphere takes the box's view's place.
+  // The last at t = 8 s, after flip 3.
   const long after_flip3 = static_cast<long>(tumble::scene::frame_clock(l.scene, l.fps).video_time(8.0) * l.fps);
   for (const long k : {100L, 700L, 1300L, after_flip3})
     for (const tumble::viz::View& v : fb.build(k).views) {
@@ -171,7 +171,7 @@ TEST(PoinsotViews, EachEllipsoidHoldsItsBodyTurnedWithIt) {
   const Lesson l;
   const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
   int views = 0;
-  const long after_flip3 = static_cast<long>(tumble::scene::frame_clock(l.scene, l.fps).video_time(8.0) * l.fps);  // t = 8 s: before the "why"
+  const long after_flip3 = static_cast<long>(tumble::scene::frame_clock(l.scene, l.fps).video_time(8.0) * l.fps);  // t = 8 s, after flip 3
   for (const long k : {200L, 1300L, after_flip3}) {
     std::size_t poinsot = 0;
     for (const tumble::viz::View& v : fb.build(k).views) {

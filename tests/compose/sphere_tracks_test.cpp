@@ -65,12 +65,12 @@ TEST(SphereTracks, AComparisonsSphereDrawsEachMethodsPathAgainstTheExactOne) {
 
 }
 
-// A sphere's `paths_of` (poinsot's "why"): each body's Π on the one sphere, scaled
+// A sphere's `paths_of` (a poinsot ending kept as a test scene): each body's Π on the one sphere, scaled
 // by |L| of the view's body over its own: on the unit sphere, each on its own
 // level 2E/|L|² (the same box spun twice: box 1's loop well inside e₃'s
 // region, box 2's just below the separatrix's 1/I₂), from t = 0 to now.
 TEST(SphereTracks, PathsOfSeveralBodiesLieOnTheOneSphereEachOnItsOwnLevel) {
-  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "poinsot.toml");
+  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "tests" / "compose" / "scenes" / "poinsot_paths_of.toml");
   const double fps = s.render.output.fps;
   const long count = scene::frame_clock(s, fps).count();
   const auto runs = scene::simulate_runs(s, count, fps);
