@@ -110,11 +110,13 @@ std::string three_digits(double v) {
   return text;
 }
 
-// The angle between the first body's ω and L (world), degrees.
-double omega_L_degrees(const viz::BodySnapshot& b) {
-  const Eigen::Vector3d w = omega_world(*b.model, b.state), L = b.state.L;
-  return std::atan2(w.cross(L).norm(), w.dot(L)) * 180 / std::numbers::pi;
+// The angle between two vectors, degrees (atan2: exact near 0 and 180, where acos is not).
+double degrees_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / std::numbers::pi;
 }
+
+// The angle between the first body's ω and L (world), degrees.
+double omega_L_degrees(const viz::BodySnapshot& b) { return degrees_between(omega_world(*b.model, b.state), b.state.L); }
 
 // The first body's energy and |L| (world), which stay fixed in a free body,
 // then on a line of their own what changes: |ω| and the angle between ω and L
@@ -141,8 +143,7 @@ std::string angle_readout(const viz::BodySnapshot& b) {
 // The angle between the body's principal axis e_i (i = 0, 1, 2) and L
 // (world), degrees: near 0 while it spins about e_i, past 90 once e_i has turned over.
 std::string axis_angle_readout(const viz::BodySnapshot& b, int i) {
-  const Eigen::Vector3d e = b.state.q * Eigen::Vector3d::Unit(i), L = b.state.L;
-  const double deg = std::atan2(e.cross(L).norm(), e.dot(L)) * 180 / std::numbers::pi;
+  const double deg = degrees_between(b.state.q * Eigen::Vector3d::Unit(i), b.state.L);
   static const char* kSub[] = {"\u2081", "\u2082", "\u2083"};
   char text[48];
   // Digits are two spaces wide: padded so that the readout never moves.
