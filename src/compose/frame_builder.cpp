@@ -302,14 +302,24 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
     move_text(b, shift);
     dl.texts.push_back(std::move(b));
   }
-  const double t = world_.clock().time(k);
-  const bool keyed = plan_.frame_key_always || std::any_of(plan_.frame_key_views.begin(), plan_.frame_key_views.end(),
-                                                           [&](std::size_t i) { return shown(i, t); });
-  if (!plan_.frame_key.empty() && keyed) {
+  const std::vector<viz::KeyEntry> key = frame_key_at(world_.clock().time(k));
+  if (!key.empty()) {
     const viz::Box& b = plan_.frame_key_box;
-    viz::add_key_row(dl.texts, plan_.frame_key, 0.5f * (b.x0 + b.x1), b.y0 + 0.5f * plan_.frame_key_px, plan_.frame_key_px,
+    viz::add_key_row(dl.texts, key, 0.5f * (b.x0 + b.x1), b.y0 + 0.5f * plan_.frame_key_px, plan_.frame_key_px,
                      b.x1 - b.x0 - plan_.frame_key_px);
   }
+}
+
+// The frame key's entries at simulated t: the frame's own legend, and those of views shown
+// then (a view that appears later, or has gone, adds nothing its frame does not draw).
+std::vector<viz::KeyEntry> FrameBuilder::frame_key_at(double t) const {
+  std::vector<viz::KeyEntry> out;
+  for (std::size_t e = 0; e < plan_.frame_key.size(); ++e) {
+    const auto& from = e < plan_.frame_key_from.size() ? plan_.frame_key_from[e] : std::vector<std::size_t>{};
+    if (from.empty() ? plan_.frame_key_always : std::any_of(from.begin(), from.end(), [&](std::size_t i) { return shown(i, t); }))
+      out.push_back(plan_.frame_key[e]);
+  }
+  return out;
 }
 
 bool FrameBuilder::title_card(viz::DrawList& dl, long k) const {

@@ -38,6 +38,7 @@ class FrameBuilder {
 
  private:
   bool shown(std::size_t i, double t) const;
+  std::vector<viz::KeyEntry> frame_key_at(double t) const;
   viz::View view_at(std::size_t i, long k, std::vector<std::string>& notes) const;
   void add_frame_text(viz::DrawList& dl, long k) const;
   bool title_card(viz::DrawList& dl, long k) const;

@@ -63,6 +63,15 @@ bool has_entry(const std::vector<viz::KeyEntry>& key, const viz::KeyEntry& e) {
   return std::any_of(key.begin(), key.end(), [&](const viz::KeyEntry& x) { return viz::same_entry(x, e); });
 }
 
+// `e` into the frame key, given by view i (an entry already there notes view i too).
+void add_frame_entry(FramePlan& p, const viz::KeyEntry& e, std::size_t i) {
+  const auto at = std::find_if(p.frame_key.begin(), p.frame_key.end(), [&](const viz::KeyEntry& x) { return viz::same_entry(x, e); });
+  const auto j = static_cast<std::size_t>(at - p.frame_key.begin());
+  if (at == p.frame_key.end()) p.frame_key.push_back(e);
+  p.frame_key_from.resize(p.frame_key.size());
+  p.frame_key_from[j].push_back(i);
+}
+
 // When a view's key only repeats entries other views show too (three momentum
 // spheres side by side), the frame gets one key with every view's entries,
 // like a figure's legend, and the views none: a colour means one thing
@@ -81,8 +90,7 @@ std::vector<std::vector<viz::KeyEntry>> split_keys(const FrameNeeds& n, FramePla
                                                       [&](const viz::KeyEntry& e) { return shown_elsewhere(i, e); });
   if (!repeated) return own;
   for (std::size_t i = 0; i < own.size(); ++i) {
-    for (const viz::KeyEntry& e : own[i])
-      if (!has_entry(p.frame_key, e)) p.frame_key.push_back(e);
+    for (const viz::KeyEntry& e : own[i]) add_frame_entry(p, e, i);
     if (!own[i].empty()) p.frame_key_views.push_back(i);
     own[i].clear();
   }
@@ -108,8 +116,7 @@ void move_wide_keys(const FrameNeeds& n, FramePlan& p, std::vector<std::vector<v
     // A lone view (a classic scene) gives width more freely: its body is most often short of height.
     const float keep = n.views.size() == 1 && !n.views[i].viewport ? kMinContentShare : kFrameKeyShare;
     if (w - viz::key_size(keys[i], key_px).x - 3 * pad >= keep * w) continue;
-    for (const viz::KeyEntry& k : keys[i])
-      if (!has_entry(p.frame_key, k)) p.frame_key.push_back(k);
+    for (const viz::KeyEntry& k : keys[i]) add_frame_entry(p, k, i);
     p.frame_key_views.push_back(i);
     keys[i].clear();
   }
@@ -145,7 +152,7 @@ void plan_frame_key(const FrameNeeds& n, FramePlan& p) {
   if (p.frame_key_px < viz::kMinKeyPx) {
     p.notes.push_back("frame key left out: its text would be " + px(p.frame_key_px) + " high, under the " +
                       px(viz::kMinKeyPx) + " a key needs to be read");
-    p.frame_key.clear();
+    p.frame_key.clear(), p.frame_key_from.clear();
     return;
   }
   const float pad = 0.5f * p.frame_key_px;
@@ -254,6 +261,7 @@ FramePlan plan_frame(const FrameNeeds& n) {
   FramePlan p;
   plan_captions(n, p);
   p.frame_key = n.frame_key;
+  p.frame_key_from.assign(p.frame_key.size(), {});
   p.frame_key_always = !n.frame_key.empty();
   std::vector<std::vector<viz::KeyEntry>> keys = split_keys(n, p);
   move_wide_keys(n, p, keys);

@@ -75,6 +75,9 @@ struct FramePlan {
   /// segment's views, with no key, do not show the views' key it replaced),
   /// or always where the frame has a key of its own (a legend).
   std::vector<std::size_t> frame_key_views;
+  /// For each frame_key entry, the views whose keys gave it (none: the frame's own legend):
+  /// an entry is drawn only while one of them is, so the key lists only what the frame shows.
+  std::vector<std::vector<std::size_t>> frame_key_from;
   bool frame_key_always = false;
   std::vector<std::string> notes;  ///< what was left out, where and why
 };

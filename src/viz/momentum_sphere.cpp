@@ -186,14 +186,16 @@ void add_other_levels(View& view, const MomentumSphereInput& in) {
   }
 }
 
-// Each track's path so far, a hair outside the sphere, and its dot now (its own colour).
-void add_tracks(View& view, const MomentumSphereInput& in, double L) {
+// Each track's path so far, a hair outside the sphere (`paths`), and its dot now (`dots`), in its own colour.
+void add_tracks(View& view, const MomentumSphereInput& in, double L, bool paths, bool dots) {
   const float w = in.line_scale;
   for (const SphereTrack& t : in.tracks) {
     if (t.path.empty()) continue;
     std::vector<glm::dvec3> path;
     for (const Eigen::Vector3d& x : t.path) path.push_back(1.004 * to_glm(x / L));
-    if (path.size() >= 2) view.polylines.push_back({path, t.color, 3.0f * w * t.width, false, t.reported ? "polhode " + t.name : ""});
+    if (paths && path.size() >= 2)
+      view.polylines.push_back({path, t.color, 3.0f * w * t.width, false, t.reported ? "polhode " + t.name : ""});
+    if (!dots) continue;
     // Its dot, unless the ball hides it (behind the ball, inside its outline).
     const glm::dvec3 p = 1.02 * to_glm(t.path.back() / L), d = glm::normalize(view.camera.position - view.camera.target);
     if (glm::dot(p, d) < 0 && glm::length(p - glm::dot(p, d) * d) < kSphereBall) continue;
@@ -243,10 +245,12 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);
   }
+  // Tracks under the separatrix's dashes (a path beside it leaves it seen), or over them.
+  if (in.tracks_under_separatrix) add_tracks(view, in, L, true, false);
   add_separatrix_and_path(view, in, in.tracks.empty() ? scaled(in.history) : std::vector<glm::dvec3>{});
   if (in.reveal.separatrix) add_saddles(view);
   if (!in.tracks.empty()) {
-    add_tracks(view, in, L);
+    add_tracks(view, in, L, !in.tracks_under_separatrix, true);
   } else {
     // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
     view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w * in.dot_scale, color_of(Meaning::momentum_point), "momentum_point"});

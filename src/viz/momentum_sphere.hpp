@@ -75,6 +75,7 @@ struct MomentumSphereInput {
   /// Several paths on the one sphere (the same body stepped by several methods), drawn in this
   /// order, each ended by its dot, instead of `history` and Π's own dot (`momentum` still sets |L|).
   std::vector<SphereTrack> tracks = {};
+  bool tracks_under_separatrix = false;     ///< the tracks' paths under the separatrix's dashes (their dots over all)
 };
 
 /// The energy ellipsoid Σ Π_i²/I_i = `two_E` in units of |Π| = `L` (so the
