@@ -133,6 +133,27 @@ TEST(Overlay, StateReadoutKeepsEAndLAndShowsOmegaChange) {
   EXPECT_NE(flip.substr(0, flip.find("   ")), readout(k0, "|\u03c9| = ").substr(0, flip.find("   ")));  // |ω| changes
 }
 
+// A frame key lists only what the frame draws: the small spheres' entries (saddles ±e₂) while they
+// are shown, none of them once the "why" views have taken the frame (its sphere keys its own tracks).
+TEST(FrameKey, ListsOnlyTheEntriesOfViewsShownNow) {
+  const tumble::scene::Scene s =
+      tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/tennis_racket.toml");
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  const long count = clock.count();
+  const auto runs = tumble::scene::simulate_runs(s, count, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 960, 540);
+  ASSERT_FALSE(fb.plan().frame_key.empty());
+  auto has = [](const tumble::viz::DrawList& dl, const std::string& text) {
+    return std::any_of(dl.texts.begin(), dl.texts.end(), [&](const tumble::viz::TextItem& t) { return t.text == text; });
+  };
+  long early = 0;
+  while (early + 1 < count && (clock.on_title_card(early) || clock.time(early) < 0.2)) ++early;
+  EXPECT_TRUE(has(fb.build(early), "saddles \u00b1e\u2082"));
+  EXPECT_FALSE(has(fb.build(count - 1), "saddles \u00b1e\u2082"));
+  EXPECT_FALSE(has(fb.build(count - 1), "\u03a0: L written in body axes"));
+}
+
 // tennis_racket's racket views have cameras fixed in space (follow = false):
 // L stands still there, so no trail of L's tip as the body sees it is drawn
 // (it turned with the racket beside a still L, unexplained).

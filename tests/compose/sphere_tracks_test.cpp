@@ -4,6 +4,7 @@
 // normalised step adds ½dt²(Π×ω)·I⁻¹(Π×ω) > 0 each time), RK4's ends on the
 // exact path.
 #include <algorithm>
+#include <set>
 #include <filesystem>
 #include <string>
 
@@ -97,6 +98,28 @@ TEST(SphereTracks, PathsOfSeveralBodiesLieOnTheOneSphereEachOnItsOwnLevel) {
   EXPECT_LT(levels[0], levels[1] - 0.1 * (levels[1] - 1 / inertia[2]));
   EXPECT_LT(levels[1], 1 / inertia[1]);
   EXPECT_GT(levels[1], 1 / inertia[1] - 0.02 * (1 / inertia[1] - 1 / inertia[2]));
+}
+
+// paths_of without path_on_top: the bodies' paths under the separatrix's dashes (drawn first), so a
+// path a fraction of a degree beside it (tennis_racket's middle racket) leaves it seen; the dots over all.
+TEST(SphereTracks, PathsOfLieUnderTheSeparatrixAndTheirDotsOverIt) {
+  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "tennis_racket.toml");
+  const double fps = s.render.output.fps;
+  const long count = scene::frame_clock(s, fps).count();
+  const auto runs = scene::simulate_runs(s, count, fps);
+  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
+  const viz::DrawList dl = fb.build(count - 1);
+  const auto sphere = std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
+  ASSERT_NE(sphere, dl.views.end());
+  std::size_t last_path = 0, first_dash = sphere->polylines.size();
+  std::set<std::string> paths;  // a path split where it passes behind the ball keeps its name
+  for (std::size_t i = 0; i < sphere->polylines.size(); ++i) {
+    const std::string& n = sphere->polylines[i].name;
+    if (n.rfind("polhode ", 0) == 0) last_path = i, paths.insert(n);
+    if (n == "separatrix") first_dash = std::min(first_dash, i);
+  }
+  EXPECT_EQ(paths.size(), 3u);  // the three rackets' Π
+  EXPECT_LT(last_path, first_dash);
 }
 
 }  // namespace
