@@ -21,7 +21,7 @@ constexpr viz::Color kInk{0.12f, 0.13f, 0.16f, 1.0f};
 constexpr viz::Color kDiverged{0.75f, 0.1f, 0.1f, 1.0f};
 constexpr const char* kPaused = "paused";  // the badge while a [[holds]] stop lasts
 constexpr double kCaptionSeam = 0.5;  // video s: a caption this close to the next cuts to it
-constexpr const char* kWaiting = "waiting to start";  // a stop at t = 0: nothing has moved yet, so nothing is paused
+constexpr const char* kWaiting = "paused: t = 0";  // a stop at t = 0, before anything has moved: says when it stands
 
 int grid_columns(std::size_t runs) {
   const int n = std::max<int>(1, static_cast<int>(runs));

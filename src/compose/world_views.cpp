@@ -338,10 +338,12 @@ viz::View WorldViews::view(std::size_t r, long k, const viz::Camera& camera, int
 }
 
 std::vector<viz::PolylineItem> WorldViews::trails(std::size_t r, long k, std::size_t b,
-                                                  std::optional<std::array<bool, 3>> axes) const {
+                                                  std::optional<std::array<bool, 3>> axes,
+                                                  std::optional<double> seconds) const {
   const long kk = std::min(k, static_cast<long>(runs_[r].frames.size()) - 1);
-  if (draw_.trail_seconds <= 0 || kk < 0) return {};
-  return trails_[r].polylines(clock_.time(kk), draw_.trail_seconds, axes.value_or(draw_.trail_axes), b);
+  const double s = seconds.value_or(draw_.trail_seconds);
+  if (s <= 0 || kk < 0) return {};
+  return trails_[r].polylines(clock_.time(kk), s, axes.value_or(draw_.trail_axes), b);
 }
 
 std::vector<std::string> WorldViews::overlay(std::size_t r, long k) const {

@@ -54,9 +54,10 @@ class WorldViews {
   viz::View view(std::size_t r, long k, const viz::Camera& camera, int width_px, int height_px,
                  std::optional<std::size_t> only = std::nullopt) const;
   /// Run `r`'s trails of body `b`'s axis tips at frame k (as the scene draws them), in space.
-  /// `axes`: which axes' tips (none: [draw] trail_axes).
+  /// `axes`: which axes' tips (none: [draw] trail_axes); `seconds`: how long (none: [draw] trails).
   std::vector<viz::PolylineItem> trails(std::size_t r, long k, std::size_t b,
-                                        std::optional<std::array<bool, 3>> axes = std::nullopt) const;
+                                        std::optional<std::array<bool, 3>> axes = std::nullopt,
+                                        std::optional<double> seconds = std::nullopt) const;
   /// Run `r`'s overlay at frame k: its line (time, method, step, energy error,
   /// as the scene asks) and, once it has diverged, where it stopped.
   std::vector<std::string> overlay(std::size_t r, long k) const;

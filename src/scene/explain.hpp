@@ -105,6 +105,9 @@ struct ViewConfig {
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)
   std::optional<std::array<bool, 3>> trail_axes;  ///< world: which axes' tips leave a trail here; none = [draw] trail_axes
   bool box = true;                  ///< world: the principal box's outline where [draw] box draws one (false: not in this view)
+  std::optional<double> trail_seconds;  ///< world: s of axis-tip trail here; none = [draw] trails (a slow wobble needs a longer one)
+  bool see_through = false;         ///< world: surfaces a little see-through, so an axis behind or inside them stays seen
+  double L_width = 1;               ///< world: L's thickness times this (on top of line_scale): thinner than the axes it frames
   int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range

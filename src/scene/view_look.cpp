@@ -7,11 +7,15 @@
 
 namespace tumble::scene::detail {
 
-// A world view's own trail_axes (as [draw] trail_axes, for this view) and box (false: no principal-box outline).
+// A world view's own trail_axes and trails (as [draw]'s, for this view), box (false: no principal-box
+// outline), see_through (surfaces faded, axes behind them seen) and L_width (L's thickness, times).
 static void read_world_look(TableReader& r, ViewConfig& v) {
-  for (std::string_view key : {"trail_axes", "box"})
+  for (std::string_view key : {"trail_axes", "box", "trails", "see_through", "L_width"})
     if (r.has(key) && v.kind != ViewKind::world) r.error(key, "only a world view takes " + std::string(key));
   v.box = r.boolean("box").value_or(true);
+  v.trail_seconds = r.number("trails", Range::closed(0, 1e4));
+  v.see_through = r.boolean("see_through").value_or(false);
+  v.L_width = r.number("L_width", Range::closed(0.25, 4)).value_or(1);
   const auto axes = r.strings("trail_axes");
   if (!axes) return;
   std::array<bool, 3> on = {false, false, false};

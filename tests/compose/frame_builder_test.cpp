@@ -67,13 +67,13 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   };
   EXPECT_TRUE(has(fb.build(k), "paused at flip 1"));
   EXPECT_TRUE(has(fb.build(last), "paused at flip 1"));
-  // The stop at the start, before anything has moved, is "waiting to start", not "paused"; a hold
+  // The stop at the start, before anything has moved, is "paused: t = 0" (when it stands), not a bare "paused"; a hold
   // elsewhere (the one after the flip) is "paused", not "paused at flip 1" (it may still carry the
   // flip's mark, "flip 1 · paused", within its 2 s of running video).
   long start = 0;
   while (start + 1 < clock.count() && !clock.in_hold(start)) ++start;
   EXPECT_EQ(clock.time(start), 0.0);
-  EXPECT_TRUE(has(fb.build(start), "waiting to start"));
+  EXPECT_TRUE(has(fb.build(start), "paused: t = 0"));
   EXPECT_FALSE(has(fb.build(start), "paused"));
   const tumble::viz::DrawList at_after = fb.build(after);
   EXPECT_FALSE(has(at_after, "paused at flip 1"));

@@ -1,6 +1,6 @@
-// A world view's own look: `trail_axes` (which axes' tips leave a trail there)
-// and `box = false` (no principal-box outline there), as the demo's side views
-// use them; the main view keeps the scene's [draw] trails and box.
+// A world view's own look: `trail_axes` and `trails` (which axes' tips leave a
+// trail there, how long), `box = false` (no principal-box outline there),
+// `see_through` and `L_width`, as the demo's views use them.
 #include <algorithm>
 #include <filesystem>
 
@@ -25,7 +25,7 @@ int outlines(const viz::View& v) {
   return static_cast<int>(std::count_if(v.boxes.begin(), v.boxes.end(), [](const viz::BoxItem& b) { return b.face.a == 0.0f; }));
 }
 
-TEST(WorldViewLook, TheDemosSideViewsTrailOnlyTheirSpinAxisAndDrawNoBox) {
+TEST(WorldViewLook, TheDemosViewsTrailOnlyTheirSpinAxisAndDrawNoBox) {
   const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "dzhanibekov.toml");
   ASSERT_EQ(s.render.explain.views.size(), 3u);
   const double fps = s.render.output.fps;
@@ -36,14 +36,25 @@ TEST(WorldViewLook, TheDemosSideViewsTrailOnlyTheirSpinAxisAndDrawNoBox) {
   const compose::FrameBuilder fb(s, runs, fps, 960, 540);
   const viz::DrawList dl = fb.build(k);
   ASSERT_EQ(dl.views.size(), 3u);
-  // The main T (the stem's spin) keeps all three trails and the seed's box; the
-  // views of the spins about e₁ and e₃ (by their body, wherever they stand) only that axis' trail, and no box.
+  // The main T (the stem's spin) trails only the stem's tip, draws no box, is
+  // a little see-through (the stem seen behind the handle) and draws L thinner
+  // than its axes; the views of the spins about e₁ and e₃ (by their body,
+  // wherever they stand) only that axis' trail, and no box.
   for (std::size_t view = 0; view < 3; ++view) {
     const std::string& body = s.render.explain.views[view].body;
     const viz::View& v = dl.views[view];
     if (body == "t_handle") {
-      for (int a = 0; a < 3; ++a) EXPECT_EQ(trails_of(v, a), 1) << "main view, axis " << a;
-      EXPECT_EQ(outlines(v), 1) << "the main T keeps the seed's box";
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(trails_of(v, a), a == 1 ? 1 : 0) << "main view, axis " << a;
+      EXPECT_EQ(outlines(v), 0) << "no principal box";
+      ASSERT_FALSE(v.surfaces.empty());
+      for (const viz::SurfaceItem& sf : v.surfaces) EXPECT_LT(sf.color.a, 1.0f) << "see-through";
+      double L = 0, axis = 1e9;
+      for (const viz::ArrowItem& a : v.arrows) {
+        if (a.name == "L") L = a.radius;
+        else if (a.name.rfind('e', 0) == 0) axis = std::min(axis, a.radius);  // e1, e2, e3
+      }
+      EXPECT_GT(L, 0);
+      EXPECT_LT(L, axis) << "L thinner than the axes";
       continue;
     }
     ASSERT_TRUE(body == "about_e1" || body == "about_e3") << body;
@@ -61,6 +72,9 @@ TEST(WorldViewLook, OnlyAWorldViewTakesTrailAxesAndBox) {
   ASSERT_EQ(ok.render.explain.views.size(), 1u);
   EXPECT_EQ(ok.render.explain.views[0].trail_axes, (std::array<bool, 3>{false, true, false}));
   EXPECT_FALSE(ok.render.explain.views[0].box);
+  EXPECT_FALSE(ok.render.explain.views[0].trail_seconds.has_value());  // [draw] trails
+  EXPECT_FALSE(ok.render.explain.views[0].see_through);
+  EXPECT_EQ(ok.render.explain.views[0].L_width, 1.0);
   auto error_of = [&](const std::string& view) {
     try {
       scene::load_scene_from_string(base + view, "v.toml");
@@ -71,6 +85,8 @@ TEST(WorldViewLook, OnlyAWorldViewTakesTrailAxesAndBox) {
   };
   EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nbox = false\n").find("only a world view takes box"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ntrail_axes = [\"e1\"]\n").find("only a world view takes trail_axes"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ntrails = 2\n").find("only a world view takes trails"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nsee_through = true\n").find("only a world view takes see_through"), std::string::npos);
   const std::string bad = error_of("[[views]]\nkind = \"world\"\ntrail_axes = [\"e4\"]\n");
   EXPECT_NE(bad.find("v.toml:"), std::string::npos) << bad;
   EXPECT_NE(bad.find("expected items from"), std::string::npos) << bad;

@@ -23,6 +23,7 @@ constexpr double kMargin = 0.04;  // of the content's half size, kept clear at e
 constexpr long kFitSamples = 240;  // frames looked at to fit the camera
 constexpr double kClosest = 0.1;   // a camera moves at most this much closer to fit
 constexpr double kFillMargin = 0.1;  // room around what a camera moved closer frames
+constexpr float kSeeThroughAlpha = 0.6f;  // a see_through view's surfaces: solid enough to read, an axis behind them seen
 
 class WorldPanel : public Panel {
  public:
@@ -123,8 +124,13 @@ class WorldPanel : public Panel {
   viz::View content(long k) const override {
     viz::View v = ctx_.world.view(run_, k, camera_, int(size_.x), int(size_.y), only_);
     if (only_)
-      for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_, vc_ ? vc_->trail_axes : std::nullopt))
+      for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_, vc_ ? vc_->trail_axes : std::nullopt,
+                                                    vc_ ? vc_->trail_seconds : std::nullopt))
         v.polylines.push_back(std::move(p));
+    // See-through surfaces: an axis behind or inside the body (a stem seen end on) stays seen.
+    if (vc_ && vc_->see_through)
+      for (viz::SurfaceItem& sf : v.surfaces)
+        if (sf.name.empty()) sf.color.a = std::min(sf.color.a, kSeeThroughAlpha);
     // A view may leave out the principal box's outline (a surface's box: no faces, only edges).
     if (vc_ && !vc_->box)
       std::erase_if(v.boxes, [](const viz::BoxItem& b) { return b.face.a == 0.0f; });
@@ -132,7 +138,7 @@ class WorldPanel : public Panel {
     // A view of small bodies may draw its arrows thicker, and leave their names to the key.
     for (viz::ArrowItem& a : v.arrows) {
       if (!vc_) break;
-      a.radius *= vc_->line_scale;
+      a.radius *= vc_->line_scale * (a.name == "L" ? vc_->L_width : 1.0);
       if (!vc_->tip_names) a.tip.clear();
     }
     return v;
