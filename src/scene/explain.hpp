@@ -73,6 +73,7 @@ struct ViewCamera {
   /// world and body_frame views: across = "L" (+1) or "-L" (−1) looks across
   /// L at t = 0, L up (down) in the picture plane (scene.hpp, CameraConfig)
   int across = 0;
+  std::optional<double> roll_deg;  ///< world, across L: L turned clockwise in the picture (default 0: L up)
   /// world views only: as [camera] (m, world; degrees); `up` also a
   /// momentum_sphere's picture up, in principal axes (default +e₃), and a
   /// body_frame's: its camera then fixed in principal axes (azimuth, elevation as a sphere's)
