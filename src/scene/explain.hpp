@@ -102,6 +102,7 @@ struct ViewConfig {
   /// bodies of one inertia compared on one figure; empty = the view's body's Π alone
   std::vector<std::string> paths_of;
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
+  bool path_faint_polhode = false;  ///< `path = "trail_on_polhode"`: the trail over the whole polhode, faint
   double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)
   std::optional<std::array<bool, 3>> trail_axes;  ///< world: which axes' tips leave a trail here; none = [draw] trail_axes
