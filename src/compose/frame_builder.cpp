@@ -75,6 +75,7 @@ FrameBuilder::FrameBuilder(const scene::Scene& s, const std::vector<scene::Run>&
     needs.caption_side = FrameNeeds::CaptionSide::top;
   needs.badge = widest_status();
   plan_ = plan_frame(needs);
+  give_back_key_strip(needs);
   // A [compare] grid's cells differ by a pixel or two (rounding, overlay
   // lines); fitted to one size, they share one camera and so one scale.
   glm::vec2 common{1e9f, 1e9f};
@@ -331,6 +332,28 @@ bool FrameBuilder::title_card(viz::DrawList& dl, long k) const {
   for (viz::TextItem& item : viz::title_items(t.text, t.subtitle, viz::fade_alpha(tau, -1.0, t.hold), width_, height_))
     dl.texts.push_back(std::move(item));
   return true;
+}
+
+// The frame key's strip is drawn only while a view it speaks for is on screen:
+// a view whose span never meets theirs (a closing segment's) is laid out as
+// if the frame had no frame key, and so takes the strip's height too.
+void FrameBuilder::give_back_key_strip(FrameNeeds needs) {
+  if (plan_.frame_key.empty() || plan_.frame_key_always || plan_.frame_key_in_corner) return;
+  const auto span = [&](std::size_t i) {
+    if (i < cells_) return std::pair<double, double>{-1e300, 1e300};
+    const scene::ViewConfig& v = scene_.render.explain.views[i - cells_];
+    return std::pair<double, double>{v.appear, v.until};
+  };
+  const auto meets_keyed = [&](std::size_t i) {
+    return std::any_of(plan_.frame_key_views.begin(), plan_.frame_key_views.end(), [&](std::size_t j) {
+      return span(i).first < span(j).second && span(j).first < span(i).second;
+    });
+  };
+  for (std::size_t j : plan_.frame_key_views) needs.views[j].key.clear();
+  const FramePlan free = plan_frame(needs);
+  if (!free.frame_key.empty()) return;
+  for (std::size_t i = 0; i < panels_.size(); ++i)
+    if (!meets_keyed(i)) plan_.views[i] = free.views[i];
 }
 
 // Whether panel i is drawn at simulated t: a [compare] cell always, a view

@@ -31,7 +31,8 @@ class FrameBuilder {
 
   const scene::FrameClock& clock() const { return world_.clock(); }
   float font_px() const { return world_.font_px(); }
-  /// The frame's layout (decided once, for every frame).
+  /// The frame's layout (decided once, for every frame; a view that is never on
+  /// screen with the frame key's views is laid out without its strip).
   const FramePlan& plan() const { return plan_; }
   /// The captions frame k shows (index into the scene's captions) and their opacity, > 0.
   std::vector<std::pair<std::size_t, float>> captions_at(long k) const;
@@ -44,6 +45,7 @@ class FrameBuilder {
   bool title_card(viz::DrawList& dl, long k) const;
   std::vector<viz::KeyEntry> legend() const;
   FrameNeeds frame_needs() const;
+  void give_back_key_strip(FrameNeeds needs);
   void mark_flips();
   std::string status(long k) const;
   std::string widest_status() const;

@@ -73,6 +73,7 @@ struct ViewCamera {
   /// world and body_frame views: across = "L" (+1) or "-L" (−1) looks across
   /// L at t = 0, L up (down) in the picture plane (scene.hpp, CameraConfig)
   int across = 0;
+  std::optional<double> roll_deg;  ///< world, across L: L turned clockwise in the picture (default 0: L up)
   /// world views only: as [camera] (m, world; degrees); `up` also a
   /// momentum_sphere's picture up, in principal axes (default +e₃), and a
   /// body_frame's: its camera then fixed in principal axes (azimuth, elevation as a sphere's)
@@ -101,6 +102,7 @@ struct ViewConfig {
   /// bodies of one inertia compared on one figure; empty = the view's body's Π alone
   std::vector<std::string> paths_of;
   bool path_trail = false;          ///< momentum_sphere `path = "trail"`: Π's path so far, not its whole polhode
+  bool path_faint_polhode = false;  ///< `path = "trail_on_polhode"`: the trail over the whole polhode, faint
   double line_scale = 1;            ///< momentum_sphere: its curves' widths and Π's dot; world: its arrows' thickness; times this
   bool tip_names = true;            ///< world: arrows named at their tips (false: the key names them)
   std::optional<std::array<bool, 3>> trail_axes;  ///< world: which axes' tips leave a trail here; none = [draw] trail_axes

@@ -111,7 +111,7 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
     return;
   }
   TableReader c(*t, r.key_path("camera"), ctx.diag,
-                v.kind == ViewKind::world ? std::vector<std::string_view>{"across", "azimuth", "elevation"}
+                v.kind == ViewKind::world ? std::vector<std::string_view>{"across", "azimuth", "elevation", "roll"}
                                           : std::vector<std::string_view>{"across", "azimuth", "elevation", "distance", "follow", "up"});
   if (across) v.camera.across = read_across(c);
   v.camera.azimuth_deg = c.number("azimuth", Range::closed(-360, 360));
@@ -119,6 +119,7 @@ void read_view_camera(TableReader& r, LoadContext& ctx, ViewConfig& v) {
   const double steepest = v.kind == ViewKind::momentum_sphere ? 90 : 89;
   v.camera.elevation_deg = c.number("elevation", Range::closed(-steepest, steepest));
   v.camera.distance = c.number("distance", Range::closed(1.5, 100));
+  v.camera.roll_deg = c.number("roll", Range::closed(-180, 180));
   v.camera.follow = c.boolean("follow");
   if (const auto up = c.vec3("up")) {
     if (v.kind != ViewKind::momentum_sphere && v.kind != ViewKind::body_frame)

@@ -47,8 +47,10 @@ void read_sphere_options(TableReader& r, ViewConfig& v) {
   if (v.kind != ViewKind::momentum_sphere) return;
   v.energy_ellipsoid = r.boolean("energy_ellipsoid").value_or(true);
   if (const auto path = r.string("path")) {
-    if (*path != "polhode" && *path != "trail") r.error("path", "expected \"polhode\" or \"trail\", found " + quote_token(*path));
-    v.path_trail = *path == "trail";
+    if (*path != "polhode" && *path != "trail" && *path != "trail_on_polhode")
+      r.error("path", "expected \"polhode\", \"trail\" or \"trail_on_polhode\", found " + quote_token(*path));
+    v.path_trail = *path == "trail" || *path == "trail_on_polhode";
+    v.path_faint_polhode = *path == "trail_on_polhode";
   }
   v.levels = static_cast<int>(r.integer("levels", 2, 40).value_or(10));
 }

@@ -241,6 +241,9 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   // the two run together both stay visible (crimson edges, sky-blue dashes).
   const bool whole = in.reveal.curves && (!in.trail || in.reveal.whole_polhode);
   const auto own = whole ? own_polhode(I, in.momentum, 192) : std::vector<Eigen::Vector3d>{};
+  // Kept faint where Π travels: the whole loop it is on stays in sight ahead of it.
+  if (!whole && in.trail && in.faint_polhode && in.reveal.curves && in.tracks.empty())
+    view.polylines.push_back({scaled(own_polhode(I, in.momentum, 192)), color_of(Meaning::polhode, 0.3f), 4.5f * w, false});
   if (!own.empty()) {
     view.polylines.push_back({scaled(own), color_of(Meaning::polhode), 4.5f * w, false, "polhode"});
     add_direction_arrows(view, unit(own), I, 4, color_of(Meaning::polhode), 0.13);

@@ -65,6 +65,7 @@ struct MomentumSphereInput {
   int frame_h = 360;                        ///< the frame's height (text sizes)
   double text_scale = 1;                    ///< the scene's text scale ([draw] text_scale)
   bool trail = false;                       ///< Π's path drawn as `history` (from t = 0), not its whole polhode
+  bool faint_polhode = false;               ///< with `trail`: Π's whole polhode kept, faint, under the path so far
   float line_scale = 1;                     ///< the curves' widths and Π's dot, times this
   int levels = 10;                          ///< other energies: the levels between L²/I3 and L²/I1 in this many steps
   bool level_arrows = true;                 ///< each other level's direction arrow (and the key's promise of it)

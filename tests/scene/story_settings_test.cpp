@@ -225,7 +225,7 @@ TEST(StorySettings, MisplacedOrBadValuesAreErrorsAtTheirPlace) {
   EXPECT_NE(error_of("path = \"trail\"\n").find("only a momentum_sphere view takes path"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nline_scale = 2\n").find("only a momentum_sphere or world view takes line_scale"),
             std::string::npos);
-  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npath = \"all\"\n").find("views[1].path: expected \"polhode\" or \"trail\""),
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npath = \"all\"\n").find("views[1].path: expected \"polhode\", \"trail\" or \"trail_on_polhode\""),
             std::string::npos);
   EXPECT_NE(error_of("[draw]\ntrail_axes = [\"e4\"]\n").find("draw.trail_axes: expected items from"), std::string::npos);
   EXPECT_NE(error_of("[draw]\nflip_badge = 20\n").find("draw.flip_badge"), std::string::npos);

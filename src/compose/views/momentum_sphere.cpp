@@ -193,6 +193,7 @@ class SpherePanel : public Panel {
     in.fit_radius = kFitRadius / view.zoom;  // a zoom: less room round the ball, where its camera needs less
     in.energy_ellipsoid = view.energy_ellipsoid;
     in.trail = view.path_trail;
+    in.faint_polhode = view.path_faint_polhode;
     in.line_scale = static_cast<float>(view.line_scale);
     in.levels = view.levels;
     in.level_arrows = view.level_arrows;

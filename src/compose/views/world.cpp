@@ -65,7 +65,7 @@ class WorldPanel : public Panel {
           only_ ? b.initial.c : Eigen::Vector3d(camera_.target.x, camera_.target.y, camera_.target.z);
       camera_ = across_camera(target, b.initial.L, across_->across,
                               across_->azimuth_deg.value_or(sc.azimuth_deg), across_->elevation_deg.value_or(sc.elevation_deg),
-                              dist, camera_.fov_y_deg);
+                              dist, camera_.fov_y_deg, across_->roll_deg.value_or(0));
     }
     // The cells of a [compare] grid share one camera, fitted to every run, so
     // the methods' bodies are drawn at one scale side by side.
