@@ -173,7 +173,8 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
                   {"kind", "viewport", "body", "series", "title", "camera", "energy_ellipsoid", "y_range", "y_scale", "appear",
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
                    "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom",
-                   "dot_scale", "dark_levels", "readout", "until", "paths_of", "path_on_top"});
+                   "dot_scale", "dark_levels", "readout", "until", "paths_of", "path_on_top",
+                   "separatrix"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {
