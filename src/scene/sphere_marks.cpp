@@ -1,6 +1,7 @@
 // A momentum_sphere's marks sized for a hall: Π's dot larger (dot_scale),
 // the other levels dark (dark_levels), Π's trail over the separatrix it runs
-// beside (path_on_top), so the figure reads from the back;
+// beside (path_on_top), so the figure reads from the back; a poinsot
+// view's ellipsoid with its separatrix (separatrix);
 // several bodies' Π on the one sphere (paths_of), each on its own |L|.
 #include <algorithm>
 
@@ -15,6 +16,9 @@ void read_sphere_marks(TableReader& r, ViewConfig& v) {
   v.dot_scale = r.number("dot_scale", Range::closed(0.5, 5)).value_or(1);
   v.dark_levels = r.boolean("dark_levels").value_or(false);
   v.path_on_top = r.boolean("path_on_top").value_or(false);
+  if (r.has("separatrix") && v.kind != ViewKind::poinsot)
+    r.error("separatrix", "only a poinsot view takes separatrix (a momentum_sphere always draws it)");
+  v.separatrix = r.boolean("separatrix").value_or(false);
 }
 
 void read_sphere_paths(TableReader& r, const LoadContext& ctx, ViewConfig& v) {

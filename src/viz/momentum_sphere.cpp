@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "viz/captions.hpp"
+#include "viz/dashes.hpp"
 #include "viz/end_on_mark.hpp"
 #include "viz/sphere_figure.hpp"
 #include "viz/key.hpp"
@@ -106,35 +107,6 @@ std::vector<Eigen::Vector3d> own_polhode(const Eigen::Vector3d& I, const Eigen::
     if (!c.empty() && (c.front()[a] >= 0) == (pi[a] >= 0)) return std::move(c);
   return std::move(curves.front());
 }
-
-namespace {
-
-// `curve` as dashes `on` long with gaps `off` (lengths along it, same units).
-std::vector<std::vector<glm::dvec3>> dashed(const std::vector<glm::dvec3>& curve, double on, double off) {
-  std::vector<std::vector<glm::dvec3>> out;
-  double s = 0;
-  bool drawing = true;
-  std::vector<glm::dvec3> dash{curve.empty() ? glm::dvec3(0) : curve.front()};
-  for (std::size_t i = 1; i < curve.size(); ++i) {
-    glm::dvec3 a = curve[i - 1];
-    double left = glm::length(curve[i] - a);
-    while (left > 0) {
-      const double room = (drawing ? on : off) - s, step = std::min(room, left);
-      const glm::dvec3 b = a + (curve[i] - a) * (step / std::max(left, 1e-300));
-      if (drawing) dash.push_back(b);
-      s += step, left -= step, a = b;
-      if (s >= (drawing ? on : off) - 1e-12) {
-        if (drawing && dash.size() >= 2) out.push_back(std::move(dash));
-        dash = {a};
-        drawing = !drawing, s = 0;
-      }
-    }
-  }
-  if (drawing && dash.size() >= 2) out.push_back(std::move(dash));
-  return out;
-}
-
-}  // namespace
 
 // The separatrix dashed and, with a trail, the path so far (scaled to the unit
 // sphere) thinner and under the dashes it runs beside: "just inside the

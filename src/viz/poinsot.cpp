@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "viz/captions.hpp"
+#include "viz/dashes.hpp"
+#include "viz/momentum_sphere.hpp"
 #include "viz/key.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/surfaces.hpp"
@@ -41,14 +43,24 @@ PoinsotGeometry poinsot_geometry(const Eigen::Quaterniond& q, const Eigen::Vecto
   return p;
 }
 
-std::vector<KeyEntry> poinsot_key() {
+std::vector<KeyEntry> poinsot_key(bool separatrix) {
   // The axes, L and ω as every view of bodies names them (one entry each in a
   // frame's key); the plane and the two curves carry their names beside them.
-  return {{Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
-          key_entry(Meaning::L, "L: angular momentum"),
-          key_entry(Meaning::omega, "\u03c9: angular velocity"),
-          {Swatch::dot, {color_of(Meaning::omega)}, "contact point"},
-          key_entry(Meaning::ellipsoid, "inertia ellipsoid")};
+  std::vector<KeyEntry> out{
+      {Swatch::line, {kAxisColors[0], kAxisColors[1], kAxisColors[2]}, "e\u2081 e\u2082 e\u2083: I\u2081 < I\u2082 < I\u2083"},
+      key_entry(Meaning::L, separatrix ? "L" : "L: angular momentum"),
+      key_entry(Meaning::omega, separatrix ? "\u03c9" : "\u03c9: angular velocity"),
+      {Swatch::dot, {color_of(Meaning::omega)}, "contact point"},
+      key_entry(Meaning::ellipsoid, "inertia ellipsoid")};
+  if (separatrix) out.push_back(key_entry(Meaning::separatrix, "separatrix"));
+  return out;
+}
+
+std::vector<std::vector<Eigen::Vector3d>> ellipsoid_separatrix(const Eigen::Vector3d& inertia, double two_E, int n) {
+  auto curves = separatrix(inertia, std::sqrt(std::max(two_E, 0.0) * inertia[1]), n);
+  for (auto& c : curves)
+    for (Eigen::Vector3d& x : c) x = x.cwiseQuotient(inertia);
+  return curves;
 }
 
 namespace {
@@ -171,6 +183,25 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
 }
 
+// The separatrix dashed on the ellipsoid (a hair outside it, as the polhode),
+// its near side over the glass: box 2's polhode is seen to run just beside it.
+// Unnamed, as the principal sections: a reference drawn on the ellipsoid, which
+// labels may cross, not a curve the motion draws.
+void add_separatrix(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
+  const Eigen::Vector3d I = in.inertia;
+  const double two_E = f.p.semi_axes[0] * f.p.semi_axes[0] * I[0];
+  const float w = line_scale(in.frame_h);
+  for (const auto& curve : ellipsoid_separatrix(I, two_E, 192)) {
+    std::vector<glm::dvec3> world;
+    for (const Eigen::Vector3d& x : curve) world.push_back(to_glm(in.q * x * f.scale * 1.004));
+    for (auto& dash : dashed(world, 0.06, 0.04)) {
+      PolylineItem d{std::move(dash), color_of(Meaning::separatrix), 1.5f * w, false};
+      add_near_side(view, f, d);
+      view.polylines.push_back(std::move(d));
+    }
+  }
+}
+
 // A curve's name beside its extent on screen (the extent is the label's
 // subject: compose/label_pins pins it once per run beside where the curve went).
 void add_curve_label(View& view, const ViewportProjection& project, const PolylineItem& curve, const char* text, float size,
@@ -197,18 +228,21 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
     if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode");
     if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode");
   }
-  // The plane at the corner in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
+  // The plane at the point in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;
   if (!project(to_glm(f.foot), foot)) return;
   glm::dvec3 corner(0);
   float farthest = -1;
-  for (double a : {-1.0, 1.0})
-    for (double b : {-1.0, 1.0}) {
-      const glm::dvec3 c = to_glm(f.foot + 1.2 * (a * f.u + b * f.v));
-      glm::vec2 px;
-      const bool shown = project(c, px) && px.x > 0 && px.x < in.width_px && px.y > 0 && px.y < in.height_px;
-      if (shown && glm::length(px - foot) > farthest) farthest = glm::length(px - foot), corner = c;
-    }
+  // Corners, then nearer points and the edges' middles: a close camera may not see the corners.
+  for (double r : {1.2, 0.9})
+    for (double a : {-1.0, 0.0, 1.0})
+      for (double b : {-1.0, 0.0, 1.0}) {
+        if (a == 0 && b == 0) continue;
+        const glm::dvec3 c = to_glm(f.foot + r * (a * f.u + b * f.v));
+        glm::vec2 px;
+        const bool shown = project(c, px) && px.x > 0 && px.x < in.width_px && px.y > 0 && px.y < in.height_px;
+        if (shown && glm::length(px - foot) > farthest) farthest = glm::length(px - foot), corner = c;
+      }
   glm::vec2 px;
   if (farthest < 0 || !project(corner, px)) return;
   TextItem t{"invariable plane", {centred_x("invariable plane", size, px.x), px.y - 0.5f * size}, size,
@@ -227,6 +261,7 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   aim_poinsot_camera(view, f, in.camera);
   add_inertia_ellipsoid(view, f, line_scale(in.frame_h));
   add_invariable_plane(view, f);
+  if (in.separatrix) add_separatrix(view, f, in);
   add_motion(view, f, in);
   add_direct_labels(view, f, in);
 }

@@ -45,6 +45,9 @@ struct PoinsotInput {
   float width_px = 640, height_px = 360;    ///< the viewport
   int frame_h = 360;                        ///< the frame's height (text sizes)
   double text_scale = 1;                    ///< the scene's text scale ([draw] text_scale)
+  /// The separatrix on the ellipsoid, dashed: the polhodes through ±e₂ (|L|² = 2E·I₂),
+  /// which part the loops round e₁ from those round e₃.
+  bool separatrix = false;
 };
 
 /// The plane's surface: opaque and light, so the palette's curves show on it
@@ -64,7 +67,12 @@ inline constexpr double kContactDotRadius = 0.065;
 /// ω's tip is the point named "contact_point".
 void build_poinsot(View& view, const PoinsotInput& in);
 
-/// Poinsot's key entries.
-std::vector<KeyEntry> poinsot_key();
+/// Poinsot's key entries (`separatrix`: with the dashed separatrix's).
+std::vector<KeyEntry> poinsot_key(bool separatrix = false);
+
+/// The separatrix on the inertia ellipsoid of energy `two_E` (J, ×2), principal
+/// frame, ω-space (rad/s): the two closed curves ω = Π/I with Π on the separatrix
+/// great circles of radius √(2E·I₂); `n` points each (first = last).
+std::vector<std::vector<Eigen::Vector3d>> ellipsoid_separatrix(const Eigen::Vector3d& inertia, double two_E, int n);
 
 }  // namespace tumble::viz

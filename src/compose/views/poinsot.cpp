@@ -41,7 +41,7 @@ class PoinsotPanel : public Panel {
         look_(body_look(ctx.scene.bodies[body_], false)) {}
   std::string name() const override { return "poinsot"; }
   std::vector<viz::KeyEntry> key() const override {
-    return ctx_.scene.render.explain.key ? viz::poinsot_key() : std::vector<viz::KeyEntry>{};
+    return ctx_.scene.render.explain.key ? viz::poinsot_key(vc_.separatrix) : std::vector<viz::KeyEntry>{};
   }
 
   void fit(glm::vec2 size) override {
@@ -93,6 +93,7 @@ class PoinsotPanel : public Panel {
     in.width_px = size_.x, in.height_px = size_.y;
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
+    in.separatrix = vc_.separatrix;
     viz::View v;
     viz::build_poinsot(v, in);
     // The body the ellipsoid belongs to, inside it, turning with it.
