@@ -84,9 +84,15 @@ void add_leader(viz::View& view, const viz::TextItem& t, const viz::PolylineItem
     const glm::dvec4 w = world_from_clip * glm::dvec4(2.0 * px.x / size.x - 1, 1 - 2.0 * px.y / size.y, -0.99, 1);
     return glm::dvec3(w) / w.w;
   };
-  viz::PolylineItem leader{{near_point(from_px), near_point(to_px)}, t.color, std::max(1.2f, t.size_px / 22), false};
-  leader.over_glass = true;
-  view.polylines.push_back(std::move(leader));
+  // Dashed, as a figure's leader: a solid line in a curve's colour reads as one more vector.
+  const float length = glm::length(to_px - from_px), on = 0.35f * t.size_px, off = 0.25f * t.size_px;
+  for (float s = 0; s < length; s += on + off) {
+    const glm::vec2 a = from_px + (to_px - from_px) * (s / length);
+    const glm::vec2 b = from_px + (to_px - from_px) * (std::min(s + on, length) / length);
+    viz::PolylineItem dash{{near_point(a), near_point(b)}, t.color, std::max(1.2f, t.size_px / 22), false};
+    dash.over_glass = true;
+    view.polylines.push_back(std::move(dash));
+  }
 }
 
 }  // namespace

@@ -165,8 +165,8 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const PoinsotGeometry& p = f.p;
   // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
   const Eigen::Vector3d L_tip = f.foot - 3 * kHerpolhodeLift * p.normal;
-  view.arrows.push_back({{0, 0, 0}, to_glm(L_tip), 0.015, kLColor, "L", "L", 0});
-  view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.015, kOmegaColor, "omega", "\u03c9", 1});
+  view.arrows.push_back({{0, 0, 0}, to_glm(L_tip), 0.022, kLColor, "L", "L", 0});  // bold: the construction's two vectors
+  view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.022, kOmegaColor, "omega", "\u03c9", 1});
   const float w = line_scale(in.frame_h);
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
   // The herpolhode thinner than the polhode and fading with age (oldest faint):

@@ -21,7 +21,7 @@ namespace {
 constexpr double kPoinsotMargin = 0.04;
 constexpr long kPoinsotFitSamples = 120;
 constexpr double kPoinsotClosest = 0.3;
-constexpr float kBodyAlpha = 0.55f;  // the body inside its ellipsoid: seen, and the arrows from its centre through it
+constexpr float kBodyAlpha = 0.3f;  // the body inside its ellipsoid: seen, and L and ω from its centre clearly through it
 
 // Points on the inertia ellipsoid's surface (its unit sphere under its model), for the camera fit.
 void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& out) {
