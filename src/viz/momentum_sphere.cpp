@@ -82,7 +82,11 @@ std::vector<KeyEntry> sphere_key(const MomentumSphereInput& in) {
     out.push_back(key_entry(Meaning::momentum_point, "\u03a0: L written in body axes"));
     out.push_back(key_entry(Meaning::polhode, "polhode: \u03a0's path"));
   }
-  for (const SphereTrack& t : in.tracks) out.push_back({Swatch::line, {t.color}, t.name});
+  for (std::size_t i = 0; i < in.tracks.size(); ++i) {
+    const SphereTrack& t = in.tracks[i];
+    const std::string text = t.key.empty() ? t.name : t.key;
+    if (t.key.empty() || i == 0 || in.tracks[i - 1].key != t.key) out.push_back({Swatch::line, {t.color}, text});
+  }
   if (draws_energy_ellipsoid(in))
     out.push_back({Swatch::block, {color_of(Meaning::energy_ellipsoid, in.ellipsoid_alpha)}, "energy ellipsoid"});
   out.push_back(key_entry(Meaning::separatrix, "separatrix"));

@@ -43,6 +43,7 @@ struct SphereTrack {
   Color color;
   float width = 1;                    ///< times the view's path width (a wide track under a narrow one shows both)
   std::string name;                   ///< the key's text
+  std::string key;                    ///< else the key's text; tracks of one key text share one entry
   /// Its path named "polhode <name>" (reported, and kept clear of labels, as a curve a viewer
   /// follows); false for paths drawn over a reported one. The dots are not named: several at a
   /// saddle would crowd the axes' names off their tips.

@@ -9,6 +9,7 @@
 #include "core/dynamics.hpp"
 #include "scene/frame_clock.hpp"
 #include "viz/momentum_sphere.hpp"
+#include "viz/palette.hpp"
 #include "viz/sphere_camera.hpp"
 
 namespace tumble::compose {
@@ -157,8 +158,8 @@ class SpherePanel : public Panel {
   // body's |L| over its own), so bodies of one inertia spun differently lie on the
   // one sphere; their energies' curves differ only by E/|L|², which the scaling keeps.
   std::vector<viz::SphereTrack> body_tracks(long k) const {
-    // Crimson, dark ochre, violet (the comparison's run colours): apart from the axes, L and each other.
-    static const viz::Color kColors[] = {{0.80f, 0.08f, 0.22f, 1}, {0.58f, 0.43f, 0.0f, 1}, {0.50f, 0.22f, 0.72f, 1}};
+    // All in the polhode's crimson, as each body's own sphere draws its path: a lesson that shows
+    // them first each on its own sphere keeps their colour; each is told by where it runs (one key entry).
     std::vector<viz::SphereTrack> out;
     const long kk = ctx_.runs.empty() ? -1 : last_frame(ctx_.runs[0], k);
     if (kk < 0 || ctx_.runs[0].frames.empty()) return out;
@@ -170,7 +171,8 @@ class SpherePanel : public Panel {
       const double Lb = momentum_body(run.frames[0][b]).norm();
       viz::SphereTrack t;
       t.name = ctx_.scene.bodies[b].label;
-      t.color = kColors[i % 3];
+      t.color = viz::color_of(viz::Meaning::polhode);
+      t.key = "polhode: each body's \u03a0";
       for (std::size_t j = 0; j < run.path_end(kk); ++j) t.path.push_back(momentum_body(run.path[j][b]) * (L / Lb));
       out.push_back(std::move(t));
     }
