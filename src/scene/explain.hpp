@@ -111,6 +111,8 @@ struct ViewConfig {
   std::optional<double> trail_seconds;  ///< world: s of axis-tip trail here; none = [draw] trails (a slow wobble needs a longer one)
   bool see_through = false;         ///< world: surfaces a little see-through, so an axis behind or inside them stays seen
   double L_width = 1;               ///< world: L's thickness times this (on top of line_scale): thinner than the axes it frames
+  double omega_width = 1;           ///< world: ω's thickness times this (on top of line_scale): a spin axis along ω stays seen
+  double trail_width = 1;           ///< world: the axis-tip trails' width times this (a small view's wobble reads bold)
   int levels = 10;                  ///< momentum_sphere: the family of other energies in this many steps
   bool key = true;                  ///< its key beside it (false: a neighbour's key says the same)
   std::optional<std::array<double, 2>> y_range;  ///< plot: the value axis; none = the whole run's range

@@ -8,14 +8,17 @@
 namespace tumble::scene::detail {
 
 // A world view's own trail_axes and trails (as [draw]'s, for this view), box (false: no principal-box
-// outline), see_through (surfaces faded, axes behind them seen) and L_width (L's thickness, times).
+// outline), see_through (surfaces faded, axes behind them seen), L_width and omega_width (L's, ω's
+// thickness, times) and trail_width (the trails' width, times: a small view's wobble reads bold).
 static void read_world_look(TableReader& r, ViewConfig& v) {
-  for (std::string_view key : {"trail_axes", "box", "trails", "see_through", "L_width"})
+  for (std::string_view key : {"trail_axes", "box", "trails", "see_through", "L_width", "omega_width", "trail_width"})
     if (r.has(key) && v.kind != ViewKind::world) r.error(key, "only a world view takes " + std::string(key));
   v.box = r.boolean("box").value_or(true);
   v.trail_seconds = r.number("trails", Range::closed(0, 1e4));
   v.see_through = r.boolean("see_through").value_or(false);
   v.L_width = r.number("L_width", Range::closed(0.25, 4)).value_or(1);
+  v.omega_width = r.number("omega_width", Range::closed(0.25, 4)).value_or(1);
+  v.trail_width = r.number("trail_width", Range::closed(0.25, 4)).value_or(1);
   const auto axes = r.strings("trail_axes");
   if (!axes) return;
   std::array<bool, 3> on = {false, false, false};

@@ -39,8 +39,8 @@ float screen_len(const ViewportProjection& project, const Camera& cam, const glm
 std::vector<Box> part_boxes(const View& view, const ViewportProjection& project) {
   std::vector<Box> out;
   for (const SurfaceItem& s : view.surfaces) {
-    // A body's parts (unnamed); a translucent veil or a figure's plane ("plane") takes no name off.
-    if (!s.mesh || s.color.a < 1.0f || !s.name.empty()) continue;
+    // A body's parts (unnamed, opaque or see-through); a translucent veil or a figure's plane ("plane") takes no name off.
+    if (!s.mesh || (s.color.a < 1.0f && !s.see_through) || !s.name.empty()) continue;
     Box b{1e30f, 1e30f, -1e30f, -1e30f};
     for (const glm::vec3& v : s.mesh->positions) {
       glm::vec2 px;

@@ -73,6 +73,9 @@ struct SurfaceItem {
   /// with an opaque surface (a reference ghost on a body that keeps to it),
   /// that surface shows whole instead of in stripes of both (z-fighting).
   bool behind = false;
+  /// A body's part drawn see-through (a world view's see_through): still solid
+  /// for the arrows' names, which keep off it as off an opaque part.
+  bool see_through = false;
 };
 
 /// One level of detail of a body's particles, in its cloud axes.

@@ -1,6 +1,6 @@
 // A world view's own look: `trail_axes` and `trails` (which axes' tips leave a
 // trail there, how long), `box = false` (no principal-box outline there),
-// `see_through` and `L_width`, as the demo's views use them.
+// `see_through`, `L_width`, `omega_width` and `trail_width`, as the demo's views use them.
 #include <algorithm>
 #include <filesystem>
 
@@ -60,6 +60,19 @@ TEST(WorldViewLook, TheDemosViewsTrailOnlyTheirSpinAxisAndDrawNoBox) {
     ASSERT_TRUE(body == "about_e1" || body == "about_e3") << body;
     const int spin = body == "about_e1" ? 0 : 2;
     for (int a = 0; a < 3; ++a) EXPECT_EQ(trails_of(v, a), a == spin ? 1 : 0) << body << " " << a;
+    // The spin axis' trail bold and whole (not faded); L and ω thinner than the axes, the spin axis seen along them.
+    for (const viz::PolylineItem& p : v.polylines)
+      if (p.color == viz::kAxisColors[spin]) {
+        EXPECT_GT(p.width_px, 2.0f) << body;
+        EXPECT_FALSE(p.fade) << body;
+      }
+    double thin = 0, axis = 1e9;
+    for (const viz::ArrowItem& a : v.arrows) {
+      if (a.name == "L" || a.name == "omega") thin = std::max(thin, a.radius);
+      else if (a.name.rfind('e', 0) == 0) axis = std::min(axis, a.radius);
+    }
+    EXPECT_GT(thin, 0) << body;
+    EXPECT_LT(thin, axis) << body << ": L and ω thinner than the axes";
     EXPECT_EQ(outlines(v), 0) << body;
     EXPECT_FALSE(v.boxes.size() > 0 && v.surfaces.empty()) << "the body is still drawn";
   }
@@ -75,6 +88,8 @@ TEST(WorldViewLook, OnlyAWorldViewTakesTrailAxesAndBox) {
   EXPECT_FALSE(ok.render.explain.views[0].trail_seconds.has_value());  // [draw] trails
   EXPECT_FALSE(ok.render.explain.views[0].see_through);
   EXPECT_EQ(ok.render.explain.views[0].L_width, 1.0);
+  EXPECT_EQ(ok.render.explain.views[0].omega_width, 1.0);
+  EXPECT_EQ(ok.render.explain.views[0].trail_width, 1.0);
   auto error_of = [&](const std::string& view) {
     try {
       scene::load_scene_from_string(base + view, "v.toml");
@@ -87,6 +102,7 @@ TEST(WorldViewLook, OnlyAWorldViewTakesTrailAxesAndBox) {
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ntrail_axes = [\"e1\"]\n").find("only a world view takes trail_axes"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ntrails = 2\n").find("only a world view takes trails"), std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\nsee_through = true\n").find("only a world view takes see_through"), std::string::npos);
+  EXPECT_NE(error_of("[[views]]\nkind = \"plot\"\ntrail_width = 2\n").find("only a world view takes trail_width"), std::string::npos);
   const std::string bad = error_of("[[views]]\nkind = \"world\"\ntrail_axes = [\"e4\"]\n");
   EXPECT_NE(bad.find("v.toml:"), std::string::npos) << bad;
   EXPECT_NE(bad.find("expected items from"), std::string::npos) << bad;

@@ -2,6 +2,7 @@
 // What a lecturer reads in a view, GL-free: a key
 // lists exactly what its view draws, and a body's label sits beside its body,
 // clear of the body's box and its arrows.
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -174,6 +175,29 @@ TEST(Labels, ALabelWithNoPlaceIsLeftOutAndHandedBack) {
   EXPECT_EQ(out[0].text, "a long body name");
   ASSERT_EQ(v.texts.size(), 1u);
   EXPECT_EQ(v.texts[0].text, "kept");
+}
+
+// A body drawn see-through (an axis behind it seen) is still solid for the
+// arrows' names: a name keeps off it as off an opaque part; a translucent veil does not.
+TEST(Labels, ATipNameKeepsOffASeeThroughBodyPart) {
+  auto mesh = std::make_shared<SurfaceMesh>();
+  for (float x : {-0.35f, 0.35f})
+    for (float z : {-0.35f, 0.35f}) mesh->positions.push_back({x, 0.0f, z}), mesh->normals.push_back({0, -1, 0});
+  for (const bool see_through : {true, false}) {
+    View v;
+    v.camera.position = {0, -6, 0}, v.camera.target = {0, 0, 0}, v.camera.up = {0, 0, 1};
+    const float w = 640, h = 360, size = 16;
+    SurfaceItem part{mesh, glm::dmat4(1.0), {0.7f, 0.6f, 0.5f, 0.6f}};
+    part.see_through = see_through;
+    v.surfaces.push_back(part);
+    v.arrows.push_back({{0, 0, 0}, {0.15, 0, 0.15}, 0.01, kAxisColors[2], "e3", "e\u2083"});  // its tip inside the part
+    EXPECT_TRUE(label_arrow_tips(v, w, h, size, true).empty());
+    ASSERT_EQ(v.texts.size(), 1u);
+    glm::vec2 a, b;
+    ASSERT_TRUE(project_to_viewport(v.camera, w, h, {-0.35, 0, -0.35}, a) && project_to_viewport(v.camera, w, h, {0.35, 0, 0.35}, b));
+    const Box body{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+    EXPECT_EQ(text_box(v.texts[0]).overlaps(body), !see_through) << (see_through ? "see-through part" : "veil");
+  }
 }
 
 }  // namespace

@@ -125,12 +125,18 @@ class WorldPanel : public Panel {
     viz::View v = ctx_.world.view(run_, k, camera_, int(size_.x), int(size_.y), only_);
     if (only_)
       for (viz::PolylineItem& p : ctx_.world.trails(run_, k, *only_, vc_ ? vc_->trail_axes : std::nullopt,
-                                                    vc_ ? vc_->trail_seconds : std::nullopt))
+                                                    vc_ ? vc_->trail_seconds : std::nullopt)) {
+        if (vc_) p.width_px *= static_cast<float>(vc_->trail_width);
+        if (vc_ && vc_->trail_width > 1) p.fade = false;  // a bold trail is one colour: its whole circle reads
         v.polylines.push_back(std::move(p));
+      }
     // See-through surfaces: an axis behind or inside the body (a stem seen end on) stays seen.
     if (vc_ && vc_->see_through)
       for (viz::SurfaceItem& sf : v.surfaces)
-        if (sf.name.empty()) sf.color.a = std::min(sf.color.a, kSeeThroughAlpha);
+        if (sf.name.empty()) {
+          sf.color.a = std::min(sf.color.a, kSeeThroughAlpha);
+          sf.see_through = true;
+        }
     // A view may leave out the principal box's outline (a surface's box: no faces, only edges).
     if (vc_ && !vc_->box)
       std::erase_if(v.boxes, [](const viz::BoxItem& b) { return b.face.a == 0.0f; });
@@ -138,7 +144,7 @@ class WorldPanel : public Panel {
     // A view of small bodies may draw its arrows thicker, and leave their names to the key.
     for (viz::ArrowItem& a : v.arrows) {
       if (!vc_) break;
-      a.radius *= vc_->line_scale * (a.name == "L" ? vc_->L_width : 1.0);
+      a.radius *= vc_->line_scale * (a.name == "L" ? vc_->L_width : a.name == "omega" ? vc_->omega_width : 1.0);
       if (!vc_->tip_names) a.tip.clear();
     }
     return v;
