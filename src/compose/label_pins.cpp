@@ -1,6 +1,7 @@
 #include "compose/label_pins.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "compose/view_layout.hpp"
 #include "viz/text_layout.hpp"
@@ -85,8 +86,13 @@ void add_leader(viz::View& view, const viz::TextItem& t, const viz::PolylineItem
     return glm::dvec3(w) / w.w;
   };
   // Dashed, as a figure's leader: a solid line in a curve's colour reads as one more vector.
-  const float length = glm::length(to_px - from_px), on = 0.35f * t.size_px, off = 0.25f * t.size_px;
-  for (float s = 0; s < length; s += on + off) {
+  // Whole dashes from the label to the curve: the pattern stretched to fit, so both ends are drawn.
+  const float length = glm::length(to_px - from_px);
+  float on = 0.35f * t.size_px, off = 0.25f * t.size_px;
+  const float n = std::max(1.0f, std::round((length + off) / (on + off)));
+  const float fit = length / (n * on + (n - 1) * off);
+  on *= fit, off *= fit;
+  for (float s = 0; s < length - 0.5f * on; s += on + off) {
     const glm::vec2 a = from_px + (to_px - from_px) * (s / length);
     const glm::vec2 b = from_px + (to_px - from_px) * (std::min(s + on, length) / length);
     viz::PolylineItem dash{{near_point(a), near_point(b)}, t.color, std::max(1.2f, t.size_px / 22), false};

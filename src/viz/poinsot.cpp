@@ -171,7 +171,7 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
   // The herpolhode thinner than the polhode and fading with age (oldest faint):
   // box 1's turns round and round, and drawn at one weight its loops fill a ring.
-  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 1.3f * w, true, "herpolhode"};
+  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f * w, true, "herpolhode"};
   herpolhode.over_glass = true;  // under the ellipsoid's glass, seen through it in full colour (not tinted away)
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(to_glm(in.q * w * f.scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history)
@@ -205,7 +205,7 @@ void add_separatrix(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
 // A curve's name beside its extent on screen (the extent is the label's
 // subject: compose/label_pins pins it once per run beside where the curve went).
 void add_curve_label(View& view, const ViewportProjection& project, const PolylineItem& curve, const char* text, float size,
-                     const char* name) {
+                     const char* name, bool leader) {
   glm::vec4 box{1e30f, 1e30f, -1e30f, -1e30f};
   for (const glm::dvec3& p : curve.points) {
     glm::vec2 px;
@@ -216,7 +216,7 @@ void add_curve_label(View& view, const ViewportProjection& project, const Polyli
   const glm::vec2 c{0.5f * (box.x + box.z), 0.5f * (box.y + box.w)};
   TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, curve.color, name};
   t.subject_px = box + glm::vec4(-4, -4, 4, 4);
-  t.leader_to = curve.name;
+  if (leader) t.leader_to = curve.name;
   view.texts.push_back(std::move(t));
 }
 
@@ -225,8 +225,10 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h, in.text_scale);
   for (const PolylineItem& l : view.polylines) {
-    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode");
-    if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode");
+    // The polhode, the one red curve, named in red beside it with no leader: a line
+    // across the ellipsoid to it read as one more curve. The small herpolhode is led to.
+    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode", false);
+    if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode", true);
   }
   // The plane at the point in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;
