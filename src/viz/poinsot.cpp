@@ -171,7 +171,7 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
   // The herpolhode thinner than the polhode and fading with age (oldest faint):
   // box 1's turns round and round, and drawn at one weight its loops fill a ring.
-  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 2.0f * w, true, "herpolhode"};
+  PolylineItem herpolhode{{}, color_of(Meaning::herpolhode), 1.7f * w, true, "herpolhode"};
   herpolhode.over_glass = true;  // under the ellipsoid's glass, seen through it in full colour (not tinted away)
   for (const Eigen::Vector3d& w : in.omega_principal_history) polhode.points.push_back(to_glm(in.q * w * f.scale * 1.006));
   for (const Eigen::Vector3d& w : in.omega_world_history)
