@@ -7,6 +7,7 @@
 #include <set>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -30,16 +31,34 @@ const viz::PolylineItem* coloured(const viz::View& v, const viz::Color& c) {
   return it == v.polylines.end() ? nullptr : &*it;
 }
 
+// A scene's last frame as drawn at 960x540, with the runs it was drawn from.
+struct LastFrame {
+  scene::Scene scene;
+  std::vector<scene::Run> runs;
+  viz::DrawList dl;
+};
+
+LastFrame last_frame(const std::filesystem::path& file) {
+  LastFrame f{scene::load_scene(file), {}, {}};
+  const double fps = f.scene.render.output.fps;
+  const long count = scene::frame_clock(f.scene, fps).count();
+  f.runs = scene::simulate_runs(f.scene, count, fps);
+  f.dl = compose::FrameBuilder(f.scene, f.runs, fps, 960, 540).build(count - 1);
+  return f;
+}
+
+// The frame's momentum sphere; end() when it has none.
+std::vector<viz::View>::const_iterator sphere_of(const viz::DrawList& dl) {
+  return std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
+}
+
 TEST(SphereTracks, AComparisonsSphereDrawsEachMethodsPathAgainstTheExactOne) {
-  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "methods_compare.toml");
-  const double fps = s.render.output.fps;
-  const long count = scene::frame_clock(s, fps).count();
-  const auto runs = scene::simulate_runs(s, count, fps);
+  const LastFrame f = last_frame(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "methods_compare.toml");  // t = 16 s
+  const scene::Scene& s = f.scene;
+  const auto& runs = f.runs;
   ASSERT_EQ(runs.size(), 3u);
-  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
-  const viz::DrawList dl = fb.build(count - 1);  // t = 16 s
-  const auto sphere = std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
-  ASSERT_NE(sphere, dl.views.end());
+  const auto sphere = sphere_of(f.dl);
+  ASSERT_NE(sphere, f.dl.views.end());
   // The paths by their colours (the methods' unnamed: the axes' names may sit over them at the crowded saddles).
   const viz::PolylineItem* exact = coloured(*sphere, compose::kExactPathColor);
   const viz::PolylineItem* euler = coloured(*sphere, compose::run_color(runs[0]));
@@ -71,14 +90,11 @@ TEST(SphereTracks, AComparisonsSphereDrawsEachMethodsPathAgainstTheExactOne) {
 // level 2E/|L|² (the same box spun twice: box 1's loop well inside e₃'s
 // region, box 2's just below the separatrix's 1/I₂), from t = 0 to now.
 TEST(SphereTracks, PathsOfSeveralBodiesLieOnTheOneSphereEachOnItsOwnLevel) {
-  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "tests" / "compose" / "scenes" / "poinsot_paths_of.toml");
-  const double fps = s.render.output.fps;
-  const long count = scene::frame_clock(s, fps).count();
-  const auto runs = scene::simulate_runs(s, count, fps);
-  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
-  const viz::DrawList dl = fb.build(count - 1);
-  const auto sphere = std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
-  ASSERT_NE(sphere, dl.views.end());
+  const LastFrame f = last_frame(std::filesystem::path(TUMBLE_SOURCE_DIR) / "tests" / "compose" / "scenes" / "poinsot_paths_of.toml");
+  const scene::Scene& s = f.scene;
+  const auto& runs = f.runs;
+  const auto sphere = sphere_of(f.dl);
+  ASSERT_NE(sphere, f.dl.views.end());
   const Eigen::Vector3d& inertia = s.bodies[0].model.inertia;
   double levels[2] = {0, 0};
   for (std::size_t b = 0; b < 2; ++b) {
@@ -103,14 +119,9 @@ TEST(SphereTracks, PathsOfSeveralBodiesLieOnTheOneSphereEachOnItsOwnLevel) {
 // paths_of without path_on_top: the bodies' paths under the separatrix's dashes (drawn first), so a
 // path a fraction of a degree beside it (tennis_racket's middle racket) leaves it seen; the dots over all.
 TEST(SphereTracks, PathsOfLieUnderTheSeparatrixAndTheirDotsOverIt) {
-  const scene::Scene s = scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "tennis_racket.toml");
-  const double fps = s.render.output.fps;
-  const long count = scene::frame_clock(s, fps).count();
-  const auto runs = scene::simulate_runs(s, count, fps);
-  const compose::FrameBuilder fb(s, runs, fps, 960, 540);
-  const viz::DrawList dl = fb.build(count - 1);
-  const auto sphere = std::find_if(dl.views.begin(), dl.views.end(), [](const viz::View& v) { return v.name == "momentum_sphere"; });
-  ASSERT_NE(sphere, dl.views.end());
+  const LastFrame f = last_frame(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "tennis_racket.toml");
+  const auto sphere = sphere_of(f.dl);
+  ASSERT_NE(sphere, f.dl.views.end());
   std::size_t last_path = 0, first_dash = sphere->polylines.size();
   std::set<std::string> paths;  // a path split where it passes behind the ball keeps its name
   for (std::size_t i = 0; i < sphere->polylines.size(); ++i) {
