@@ -359,8 +359,9 @@ PlyVertices read_ply(std::istream& in, const std::string& name, bool whole) {
     if (m < 0) throw InputError(at + "mass " + format_number(m, 6) + " kg is negative");
     out.masses.push_back(m);
   }
+  // An element without properties holds no data whatever its count (up to 2^64 - 1): nothing to read.
   for (auto e = vertex + 1; whole && e != h.elements.end(); ++e)
-    for (std::uint64_t i = 0; i < e->count; ++i)
+    for (std::uint64_t i = 0; i < e->count && !e->properties.empty(); ++i)
       read_record(d, *e, i, name, nullptr, e->name == "face" ? vertex->count : 0, true);
   double total = 0;
   for (double m : out.masses) total += m;

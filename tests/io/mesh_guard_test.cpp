@@ -57,6 +57,23 @@ TEST(MeshPrecheck, PlyFaceIndexOutOfRangeNamesTheRecord) {
             std::string::npos) << msg;
 }
 
+TEST(MeshPrecheck, APlyElementWithoutPropertiesIsNotReadRecordByRecord) {
+  // 2^64 - 1 records of nothing after the vertices: the check once looped over each (a fuzzer's hang).
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element nothing 18446744073709551615\nelement face 1\nproperty list uchar int vertex_indices\n"
+                          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n";
+  const std::string msg = refusal(ply, MeshFormat::ply, "e.ply");
+  EXPECT_NE(msg.find("e.ply:14:7: element 'face' record 0: list 'vertex_indices' holds 9"), std::string::npos) << msg;
+  std::string good = ply;
+  good.replace(good.rfind('9'), 1, "2");
+  try {
+    const io::MeshFile m = io::read_mesh_bytes(good, MeshFormat::ply, "e.ply", {5.0, std::size_t{1} << 30});
+    EXPECT_EQ(m.mesh.triangles.size(), 1u);
+  } catch (const InputError& e) {
+    ADD_FAILURE() << e.what();
+  }
+}
+
 TEST(MeshPrecheck, BinaryStlSizeMustMatchItsTriangleCount) {
   std::string stl(84 + 50, '\0');
   stl[80] = 2;  // declares 2 triangles, holds 1
