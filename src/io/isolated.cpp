@@ -19,6 +19,10 @@
 
 #include "base/error.hpp"
 
+#ifdef TUMBLE_NO_ADDRESS_LIMIT
+#include <sanitizer/common_interface_defs.h>
+#endif
+
 
 namespace tumble::io {
 
@@ -43,6 +47,11 @@ void default_crash_signals() {
 // In the child: limits, the work, one tagged reply ('O' result, 'E' message, 'M' memory), _exit.
 [[noreturn]] void child(int fd, const std::function<std::string()>& work, const IsolationLimits& limits) {
   default_crash_signals();
+#ifdef TUMBLE_NO_ADDRESS_LIMIT
+  // Likewise a sanitizer's report in the child (the importer's heap error) ends
+  // the child only: a host's death callback (a fuzzer's) would file the host's input as a crash.
+  __sanitizer_set_death_callback(nullptr);
+#endif
   const auto cpu = static_cast<rlim_t>(std::ceil(limits.seconds)) + 1;
   const rlimit cpu_limit{cpu, cpu + 1};
   ::setrlimit(RLIMIT_CPU, &cpu_limit);

@@ -20,6 +20,10 @@
 #include "io/mesh_file.hpp"
 #include "io/mesh_precheck.hpp"
 
+#ifdef TUMBLE_NO_ADDRESS_LIMIT
+#include <sanitizer/common_interface_defs.h>
+#endif
+
 namespace fs = std::filesystem;
 using namespace tumble;
 using io::MeshFormat;
@@ -176,6 +180,34 @@ TEST(MeshGuard, ARunawayAllocationHitsTheMemoryLimit) {
               std::string::npos) << e.what();
   }
 }
+
+#ifdef TUMBLE_NO_ADDRESS_LIMIT
+// Built with a sanitizer only: its report of a heap error in the child ends the
+// child, and a host's death callback (as libFuzzer sets one) is not run there.
+std::string g_marker;
+void host_death_callback() { std::ofstream(g_marker) << "the host's callback ran in the child"; }
+
+TEST(MeshGuard, ASanitizerReportInTheChildIsNotTheHosts) {
+  g_marker = (fs::temp_directory_path() / ("tumble_death_" + std::to_string(::getpid()))).string();
+  fs::remove(g_marker);
+  __sanitizer_set_death_callback(host_death_callback);
+  std::string what;
+  try {
+    (void)io::run_isolated([]() -> std::string {
+      int* p = new int[4];
+      int* volatile q = p;
+      delete[] p;
+      return std::to_string(q[1]);  // a heap use after free: the sanitizer reports it and ends the child
+    }, {5.0, std::size_t{1} << 30}, "x.ply");
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  __sanitizer_set_death_callback(nullptr);
+  EXPECT_NE(what.find("x.ply: the importer"), std::string::npos) << what;
+  EXPECT_FALSE(fs::exists(g_marker)) << "the host's death callback ran in the child";
+  fs::remove(g_marker);
+}
+#endif
 
 TEST(MeshGuard, TheChildsResultAndErrorsComeBack) {
   EXPECT_EQ(io::run_isolated([] { return std::string("mesh\0bytes", 10); }, {}, "x"), std::string("mesh\0bytes", 10));
