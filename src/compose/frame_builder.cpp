@@ -300,6 +300,8 @@ void FrameBuilder::add_frame_text(viz::DrawList& dl, long k) const {
   if (const auto badge = viz::speed_badge(status(k), false, width_, height_, true, scene_.render.draw.text_scale)) {
     viz::TextItem b = *badge;
     b.position_px.y = plan_.badge_y;
+    // In a comparison red is a method's colour (Euler's): the badge is ink there, not a method's words.
+    if (!scene_.render.compare_methods.empty()) b.color = viz::color_of(viz::Meaning::ink);
     move_text(b, shift);
     dl.texts.push_back(std::move(b));
   }

@@ -194,8 +194,8 @@ void add_separatrix(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   for (const auto& curve : ellipsoid_separatrix(I, two_E, 192)) {
     std::vector<glm::dvec3> world;
     for (const Eigen::Vector3d& x : curve) world.push_back(to_glm(in.q * x * f.scale * 1.004));
-    for (auto& dash : dashed(world, 0.06, 0.04)) {
-      PolylineItem d{std::move(dash), color_of(Meaning::separatrix), 1.5f * w, false};
+    for (auto& dash : dashed(world, 0.08, 0.04)) {  // bold: it must read through the glass beside the polhode
+      PolylineItem d{std::move(dash), color_of(Meaning::separatrix), 2.4f * w, false};
       add_near_side(view, f, d);
       view.polylines.push_back(std::move(d));
     }
@@ -225,9 +225,9 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h, in.text_scale);
   for (const PolylineItem& l : view.polylines) {
-    // The polhode, the one red curve, named in red beside it with no leader: a line
-    // across the ellipsoid to it read as one more curve. The small herpolhode is led to.
-    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode", false);
+    // Both named with a dashed leader to the curve: beside its extent alone, the
+    // polhode's name could land on the plane by the herpolhode's.
+    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode", true);
     if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode", true);
   }
   // The plane at the point in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
