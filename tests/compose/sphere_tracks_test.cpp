@@ -133,5 +133,30 @@ TEST(SphereTracks, PathsOfLieUnderTheSeparatrixAndTheirDotsOverIt) {
   EXPECT_LT(last_path, first_dash);
 }
 
+// paths_of of bodies in one colour (poinsot's two sand boxes): every path in the polhode's
+// crimson, one key entry; of bodies in different colours (tennis_racket's rackets): each path
+// in its body's colour, one key entry per body, so each dot is matched to its racket.
+TEST(SphereTracks, PathsOfTakeTheirBodiesColoursWhenTheBodiesDiffer) {
+  const LastFrame same = last_frame(std::filesystem::path(TUMBLE_SOURCE_DIR) / "tests" / "compose" / "scenes" / "poinsot_paths_of.toml");
+  const LastFrame differ = last_frame(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes" / "tennis_racket.toml");
+  auto path_colours = [](const LastFrame& f) {
+    std::set<std::string> names;
+    std::vector<viz::Color> colours;
+    for (const viz::PolylineItem& p : sphere_of(f.dl)->polylines)
+      if (p.name.rfind("polhode ", 0) == 0 && names.insert(p.name).second) colours.push_back(p.color);
+    return colours;
+  };
+  for (const viz::Color& c : path_colours(same)) EXPECT_EQ(c, viz::color_of(viz::Meaning::polhode));
+  const std::vector<viz::Color> c = path_colours(differ);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_FALSE(c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) << "three rackets, three colours";
+  const scene::Scene& s = differ.scene;
+  for (std::size_t b = 0; b < 3; ++b) {
+    const Eigen::Vector3f want = 0.75f * s.bodies[b].color.cast<float>();  // as the key draws a body
+    EXPECT_NEAR(c[b].r, want.x(), 1e-6) << s.bodies[b].label;
+    EXPECT_NEAR(c[b].g, want.y(), 1e-6) << s.bodies[b].label;
+  }
+}
+
 }  // namespace
 }  // namespace tumble

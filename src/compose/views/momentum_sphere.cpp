@@ -158,21 +158,33 @@ class SpherePanel : public Panel {
   // body's |L| over its own), so bodies of one inertia spun differently lie on the
   // one sphere; their energies' curves differ only by E/|L|², which the scaling keeps.
   std::vector<viz::SphereTrack> body_tracks(long k) const {
-    // All in the polhode's crimson, as each body's own sphere draws its path: a lesson that shows
-    // them first each on its own sphere keeps their colour; each is told by where it runs (one key entry).
+    // Bodies of one colour: all in the polhode's crimson, as each body's own sphere draws its
+    // path, each told by where it runs (one key entry). Bodies of different colours: each path
+    // and dot in its body's colour, as the key names it, so a dot is matched to its body at a glance.
     std::vector<viz::SphereTrack> out;
     const long kk = ctx_.runs.empty() ? -1 : last_frame(ctx_.runs[0], k);
     if (kk < 0 || ctx_.runs[0].frames.empty()) return out;
     const scene::Run& run = ctx_.runs[0];
     const double L = momentum_body(run.frames[0][body_]).norm();
     const auto& names = ctx_.scene.render.explain.views[index_].paths_of;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      const std::size_t b = static_cast<std::size_t>(ctx_.scene.find_body(names[i]) - ctx_.scene.bodies.data());
+    std::vector<std::size_t> bodies;
+    for (const std::string& n : names) bodies.push_back(static_cast<std::size_t>(ctx_.scene.find_body(n) - ctx_.scene.bodies.data()));
+    bool distinct = true;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if ((ctx_.scene.bodies[bodies[i]].color - ctx_.scene.bodies[bodies[j]].color).norm() < 0.05) distinct = false;
+    for (const std::size_t b : bodies) {
       const double Lb = momentum_body(run.frames[0][b]).norm();
       viz::SphereTrack t;
       t.name = ctx_.scene.bodies[b].label;
-      t.color = viz::color_of(viz::Meaning::polhode);
-      t.key = "polhode: each body's \u03a0";
+      if (distinct) {
+        const Eigen::Vector3f c = 0.75f * ctx_.scene.bodies[b].color.cast<float>();  // as the key names bodies
+        t.color = viz::Color(c.x(), c.y(), c.z(), 1.0f);
+        t.key = "\u03a0: " + t.name;
+      } else {
+        t.color = viz::color_of(viz::Meaning::polhode);
+        t.key = "polhode: each body's \u03a0";
+      }
       for (std::size_t j = 0; j < run.path_end(kk); ++j) t.path.push_back(momentum_body(run.path[j][b]) * (L / Lb));
       out.push_back(std::move(t));
     }
