@@ -85,20 +85,12 @@ void add_leader(viz::View& view, const viz::TextItem& t, const viz::PolylineItem
     const glm::dvec4 w = world_from_clip * glm::dvec4(2.0 * px.x / size.x - 1, 1 - 2.0 * px.y / size.y, -0.99, 1);
     return glm::dvec3(w) / w.w;
   };
-  // Dashed, as a figure's leader: a solid line in a curve's colour reads as one more vector.
-  // Whole dashes from the label to the curve: the pattern stretched to fit, so both ends are drawn.
-  const float length = glm::length(to_px - from_px);
-  float on = 0.35f * t.size_px, off = 0.25f * t.size_px;
-  const float n = std::max(1.0f, std::round((length + off) / (on + off)));
-  const float fit = length / (n * on + (n - 1) * off);
-  on *= fit, off *= fit;
-  for (float s = 0; s < length - 0.5f * on; s += on + off) {
-    const glm::vec2 a = from_px + (to_px - from_px) * (s / length);
-    const glm::vec2 b = from_px + (to_px - from_px) * (std::min(s + on, length) / length);
-    viz::PolylineItem dash{{near_point(a), near_point(b)}, t.color, std::max(1.2f, t.size_px / 22), false};
-    dash.over_glass = true;
-    view.polylines.push_back(std::move(dash));
-  }
+  // Thin, solid and grey, as a textbook figure's leader: in a curve's colour (dashed or not) it
+  // read as one more curve or vector.
+  viz::PolylineItem line{{near_point(from_px), near_point(to_px)}, viz::color_of(viz::Meaning::ink, 0.7f),
+                         std::max(1.0f, t.size_px / 30), false};
+  line.over_glass = true;
+  view.polylines.push_back(std::move(line));
 }
 
 }  // namespace

@@ -142,10 +142,11 @@ TEST(PoinsotViews, CurveNamesAreAtTheirCurvesOrLedToThem) {
         float gap = 1e30f;  // from the label to its curve, on screen
         for (const glm::dvec3& p : curve->points) gap = std::min(gap, distance_to(box, on_screen(v, p)));
         if (gap < 0.4f * t.size_px) continue;  // at its curve
-        // Else a dashed leader in its colour: one dash from the label's box, one ending within a few px of the curve.
+        // Else a thin grey leader (a textbook figure's): from the label's box to within a few px of the curve.
         bool starts = false, ends = false;
+        const tumble::viz::Color leader = tumble::viz::color_of(tumble::viz::Meaning::ink, 0.7f);
         for (const tumble::viz::PolylineItem& p : v.polylines) {
-          if (!p.name.empty() || p.points.size() != 2 || p.color != t.color) continue;
+          if (!p.name.empty() || p.points.size() != 2 || p.color != leader) continue;
           const glm::vec2 a = on_screen(v, p.points[0]), b = on_screen(v, p.points[1]);
           float end_gap = 1e30f;
           for (const glm::dvec3& q : curve->points) end_gap = std::min(end_gap, glm::length(b - on_screen(v, q)));
