@@ -232,14 +232,6 @@ void body_labels_clear_of_bodies() {
   const std::size_t camera = labelled.find("camera = { up", view);
   ASSERT_NE(camera, std::string::npos) << "poinsot.toml's body_frame camera";
   labelled.erase(camera, labelled.find('\n', camera) - camera);
-  // That view given the whole column: the sphere view under it left out.
-  const std::string half = "viewport = [0.68, 0.0, 0.32, 0.5]";
-  const std::size_t column = labelled.find(half, view);
-  ASSERT_NE(column, std::string::npos) << "poinsot.toml's body_frame viewport";
-  labelled.replace(column, half.size(), "viewport = [0.68, 0.0, 0.32, 1.0]");
-  const std::size_t sphere = labelled.find("[[views]]\nkind = \"momentum_sphere\"");
-  ASSERT_NE(sphere, std::string::npos) << "poinsot.toml's momentum_sphere view";
-  labelled.erase(sphere, labelled.find("[[captions]]", sphere) - sphere);
   std::map<std::string, std::map<int, Layouts>> scenes = all_layouts();
   scenes["poinsot, labels = true"] = layouts_of(
       tumble::scene::load_scene_from_string(labelled, "poinsot.toml, labels = true", poinsot.parent_path()), {kSizes[1]});
