@@ -51,6 +51,7 @@ std::vector<KeyEntry> poinsot_key(bool separatrix) {
       key_entry(Meaning::L, separatrix ? "L" : "L: angular momentum"),
       key_entry(Meaning::omega, separatrix ? "\u03c9" : "\u03c9: angular velocity"),
       {Swatch::dot, {color_of(Meaning::omega)}, "contact point"},
+      {Swatch::dot, {color_of(Meaning::polhode)}, "polhode's start"},
       key_entry(Meaning::ellipsoid, "inertia ellipsoid")};
   if (separatrix) out.push_back(key_entry(Meaning::separatrix, "separatrix"));
   return out;
