@@ -178,7 +178,8 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   for (const Eigen::Vector3d& w : in.omega_world_history)
     herpolhode.points.push_back(to_glm(w * f.scale - kHerpolhodeLift * p.normal));
   // Where ω started on the ellipsoid: the loop is seen to close when it comes back to it.
-  if (!polhode.points.empty()) view.points.push_back({polhode.points.front(), 0.6 * kContactDotRadius, polhode.color, ""});
+  if (!polhode.points.empty())
+    view.points.push_back({polhode.points.front(), 0.6 * kContactDotRadius, polhode.color, "polhode_start"});
   // The contact point, where the ellipsoid touches the plane: the eye's first stop.
   view.points.push_back({to_glm(p.contact * f.scale), kContactDotRadius, color_of(Meaning::omega), "contact_point"});
   if (polhode.points.size() >= 2) add_near_side(view, f, polhode);

@@ -125,13 +125,13 @@ TEST(Poinsot, TranslucentEllipsoidOnOpaquePlaneSeenFromAboveWithNames) {
   // The camera looks down on the plane from at least 30° above it.
   const glm::dvec3 eye = glm::normalize(v.camera.position - v.camera.target);
   EXPECT_GT(glm::dot(eye, -n), std::sin(30.0 * 3.14159265 / 180));
-  // Its key names the arrows and the ellipsoid (the layout draws it beside the
+  // Its key names the arrows, the two dots and the ellipsoid (the layout draws it beside the
   // view); the plane and the two curves are named on the picture, inside the view.
   const std::vector<KeyEntry> key = poinsot_key();
-  for (const std::string name : {"L:", "ω:", "contact point", "inertia ellipsoid"})
+  for (const std::string name : {"L:", "ω:", "contact point", "polhode's start", "inertia ellipsoid"})
     EXPECT_TRUE(std::any_of(key.begin(), key.end(), [&](const KeyEntry& e) { return e.text.rfind(name, 0) == 0; }))
         << name;
-  EXPECT_EQ(key.size(), 5u);
+  EXPECT_EQ(key.size(), 6u);
   for (const std::string name : {"polhode", "herpolhode", "invariable plane"}) {
     const auto t = std::find_if(v.texts.begin(), v.texts.end(), [&](const TextItem& x) { return x.text == name; });
     ASSERT_NE(t, v.texts.end()) << name;
