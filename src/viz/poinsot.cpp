@@ -209,7 +209,7 @@ void add_separatrix(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
 // A curve's name beside its extent on screen (the extent is the label's
 // subject: compose/label_pins pins it once per run beside where the curve went).
 void add_curve_label(View& view, const ViewportProjection& project, const PolylineItem& curve, const char* text, float size,
-                     const char* name, bool leader) {
+                     const char* name) {
   glm::vec4 box{1e30f, 1e30f, -1e30f, -1e30f};
   for (const glm::dvec3& p : curve.points) {
     glm::vec2 px;
@@ -220,7 +220,7 @@ void add_curve_label(View& view, const ViewportProjection& project, const Polyli
   const glm::vec2 c{0.5f * (box.x + box.z), 0.5f * (box.y + box.w)};
   TextItem t{text, {centred_x(text, size, c.x), c.y - 0.5f * size}, size, curve.color, name};
   t.subject_px = box + glm::vec4(-4, -4, 4, 4);
-  if (leader) t.leader_to = curve.name;
+  t.leader_to = curve.name;
   view.texts.push_back(std::move(t));
 }
 
@@ -229,10 +229,10 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h, in.text_scale);
   for (const PolylineItem& l : view.polylines) {
-    // Both named with a dashed leader to the curve: beside its extent alone, the
+    // Each named with a leader to its curve: beside its extent alone, the
     // polhode's name could land on the plane by the herpolhode's.
-    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode", true);
-    if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode", true);
+    if (l.name == "polhode") add_curve_label(view, project, l, "polhode", size, "label_polhode");
+    if (l.name == "herpolhode") add_curve_label(view, project, l, "herpolhode", size, "label_herpolhode");
   }
   // The plane at the point in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;

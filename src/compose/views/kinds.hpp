@@ -22,6 +22,8 @@ std::unique_ptr<Panel> make_poinsot(const PanelContext& ctx, std::size_t index);
 /// The key of a view of bodies: axes, L and ω as drawn, then each body (or `only` that one) by name.
 /// `arrows`: arrows keyed by arrow swatches, trails by faded lines (viz::bodies_key).
 std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std::size_t> only, bool arrows = false);
+/// A body's colour as its key entry (and a path drawn for it) shows it: its surface colour, darkened.
+viz::Color body_key_color(const scene::Body& b);
 /// The key entry of the box outline drawn around a surface (none when no such box is drawn).
 std::optional<viz::KeyEntry> box_key(const PanelContext& ctx);
 

@@ -178,8 +178,7 @@ class SpherePanel : public Panel {
       viz::SphereTrack t;
       t.name = ctx_.scene.bodies[b].label;
       if (distinct) {
-        const Eigen::Vector3f c = 0.75f * ctx_.scene.bodies[b].color.cast<float>();  // as the key names bodies
-        t.color = viz::Color(c.x(), c.y(), c.z(), 1.0f);
+        t.color = body_key_color(ctx_.scene.bodies[b]);
         t.key = "\u03a0: " + t.name;
       } else {
         t.color = viz::color_of(viz::Meaning::polhode);

@@ -182,11 +182,15 @@ std::vector<viz::KeyEntry> bodies_key(const PanelContext& ctx, std::optional<std
   const bool named = ctx.scene.render.explain.labels || only || ctx.scene.bodies.size() == 1;
   for (std::size_t i = 0; i < ctx.scene.bodies.size() && !named; ++i) {
     if (only && i != *only) continue;
-    const Eigen::Vector3f c = 0.75f * ctx.scene.bodies[i].color.cast<float>();
     bodies.emplace_back(ctx.scene.bodies[i].label.empty() ? ctx.scene.bodies[i].name : ctx.scene.bodies[i].label,
-                        viz::Color(c.x(), c.y(), c.z(), 1.0f));  // the display name
+                        body_key_color(ctx.scene.bodies[i]));  // the display name
   }
   return viz::bodies_key(ctx.world.draw(), bodies, arrows);
+}
+
+viz::Color body_key_color(const scene::Body& b) {
+  const Eigen::Vector3f c = 0.75f * b.color.cast<float>();
+  return {c.x(), c.y(), c.z(), 1.0f};
 }
 
 std::optional<viz::KeyEntry> box_key(const PanelContext& ctx) {
