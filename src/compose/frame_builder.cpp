@@ -176,6 +176,9 @@ std::string FrameBuilder::status(long k) const {
   // Held at a flip, the whole hold: a deliberate stop, named ("paused at flip 1").
   for (std::size_t i = 0; i < flip_t_.size(); ++i)
     if (clock.in_hold(k) && std::abs(clock.time(k) - flip_t_[i]) < 1e-6) return std::string(kPaused) + " at " + flip + std::to_string(i + 1);
+  // A stop the scene gives a reason: the reason, so the hall knows what to look at.
+  for (const scene::Hold& h : scene_.render.explain.holds)
+    if (clock.in_hold(k) && !h.label.empty() && std::abs(clock.time(k) - h.at) < 1e-6) return std::string(kPaused) + ": " + h.label;
   if (!speed.empty()) out += (out.empty() ? "" : "  \u00b7  ") + speed;
   return out;
 }

@@ -53,6 +53,7 @@ struct Hold {
   double at = 0;              ///< simulated s
   double hold = 2;            ///< video s
   std::string at_text;        ///< as written
+  std::string label;          ///< why it stops, after "paused: " in the badge (empty: "paused")
 };
 
 /// A title card on its own backdrop for the first `hold` s of video, while the

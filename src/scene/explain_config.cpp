@@ -348,12 +348,13 @@ void read_holds(TableReader& root, LoadContext& ctx, Scene& s) {
   const auto list = root.tables("holds");
   auto& out = s.render.explain.holds;
   for (std::size_t i = 0; i < list.size(); ++i) {
-    TableReader r(*list[i], indexed("holds", i), ctx.diag, {"at", "hold", "body"});
+    TableReader r(*list[i], indexed("holds", i), ctx.diag, {"at", "hold", "body", "label"});
     Hold h;
     const std::size_t body = read_body_index(r, ctx, s);
     const auto at = read_time(r, "at", s, body, &h.at_text);
     if (!at && !r.has("at")) r.error("at", std::string("missing; expected ") + kEventTimeForms);
     h.hold = r.number("hold", Range::closed(0.1, 60)).value_or(h.hold);
+    h.label = r.string("label").value_or("");
     if (!at) continue;
     h.at = *at;
     out.push_back(h);

@@ -1,5 +1,6 @@
 // The frame builder's text: the overlay line keeps clear of the view title and the name labels.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
@@ -80,6 +81,28 @@ TEST(Badge, AHoldAtAFlipIsNamed) {
   EXPECT_TRUE(std::any_of(at_after.texts.begin(), at_after.texts.end(), [](const tumble::viz::TextItem& t) {
     return t.text.size() >= 6 && t.text.compare(t.text.size() - 6, 6, "paused") == 0;
   }));
+}
+
+// A stop the scene gives a reason (its `label`) says it: poinsot's stop where box 2's polhode closes.
+TEST(Badge, AHoldWithALabelSaysWhyItStops) {
+  const tumble::scene::Scene s = tumble::scene::load_scene(std::filesystem::path(TUMBLE_SOURCE_DIR) / "scenes/poinsot.toml");
+  const auto labelled = std::find_if(s.render.explain.holds.begin(), s.render.explain.holds.end(),
+                                     [](const tumble::scene::Hold& h) { return !h.label.empty(); });
+  ASSERT_NE(labelled, s.render.explain.holds.end());
+  const double fps = s.render.output.fps;
+  const tumble::scene::FrameClock clock = tumble::scene::frame_clock(s, fps);
+  long k = 0;
+  while (k + 1 < clock.count() && !(clock.in_hold(k) && std::abs(clock.time(k) - labelled->at) < 1e-9)) ++k;
+  ASSERT_TRUE(clock.in_hold(k));
+  const auto runs = tumble::scene::simulate_runs(s, k + 1, fps);
+  const tumble::compose::FrameBuilder fb(s, runs, fps, 320, 240);
+  const tumble::viz::DrawList dl = fb.build(k);
+  EXPECT_TRUE(std::any_of(dl.texts.begin(), dl.texts.end(),
+                          [&](const tumble::viz::TextItem& t) { return t.text == "paused: " + labelled->label; }));
+  // The frame before the hold runs: no reason shown.
+  const tumble::viz::DrawList before = fb.build(k - 1);
+  EXPECT_FALSE(std::any_of(before.texts.begin(), before.texts.end(),
+                           [&](const tumble::viz::TextItem& t) { return t.text.find(labelled->label) != std::string::npos; }));
 }
 
 // Frame k's first text holding `what`, from `what` on ("" where none does).
