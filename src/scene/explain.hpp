@@ -100,6 +100,9 @@ struct ViewConfig {
   bool dark_levels = false;         ///< momentum_sphere: the other levels dark grey and opaque (read from afar), not faint
   bool path_on_top = false;         ///< momentum_sphere: Π's trail drawn over the dashed separatrix (a path a fraction of a degree off it)
   bool separatrix = false;          ///< poinsot: the separatrix dashed on the inertia ellipsoid (the polhodes through ±e₂)
+  /// poinsot: the contact region alone, close up (an inset): the polhode, the herpolhode and the contact point,
+  /// no arrows, no body; its field narrowed to those curves over the whole run
+  bool close_up = false;
   /// momentum_sphere: these bodies' Π from t = 0 on the one sphere, each scaled to it (Π/|L| of its own):
   /// bodies of one inertia compared on one figure; empty = the view's body's Π alone
   std::vector<std::string> paths_of;

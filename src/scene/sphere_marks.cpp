@@ -19,6 +19,8 @@ void read_sphere_marks(TableReader& r, ViewConfig& v) {
   if (r.has("separatrix") && v.kind != ViewKind::poinsot)
     r.error("separatrix", "only a poinsot view takes separatrix (a momentum_sphere always draws it)");
   v.separatrix = r.boolean("separatrix").value_or(false);
+  if (r.has("close_up") && v.kind != ViewKind::poinsot) r.error("close_up", "only a poinsot view takes close_up");
+  v.close_up = r.boolean("close_up").value_or(false);
 }
 
 void read_sphere_paths(TableReader& r, const LoadContext& ctx, ViewConfig& v) {

@@ -79,9 +79,10 @@ struct PoinsotFrame {
 
 // The camera: the plane below the ellipsoid (up = -L̂), seen from in.camera
 // (by default 40° above it, so the herpolhode opens up instead of lying edge-on).
-void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSettings& c) {
+void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSettings& c, bool close_up) {
   const Eigen::Vector3d up = -f.p.normal;
-  const Eigen::Vector3d target = 0.5 * f.foot;  // halfway from the centre to the plane: the ellipsoid fills the view
+  // Halfway from the centre to the plane: the ellipsoid fills the view; close up, the foot of L (the curves are round it).
+  const Eigen::Vector3d target = close_up ? f.foot : Eigen::Vector3d(0.5 * f.foot);
   view.camera = Camera{};
   view.name = "poinsot";
   view.camera.target = to_glm(target);
@@ -166,8 +167,10 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
   const PoinsotGeometry& p = f.p;
   // L̂ from the centre to the plane's foot: it meets the plane at a right angle.
   const Eigen::Vector3d L_tip = f.foot - 3 * kHerpolhodeLift * p.normal;
-  view.arrows.push_back({{0, 0, 0}, to_glm(L_tip), 0.022, kLColor, "L", "L", 0});  // bold: the construction's two vectors
-  view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.022, kOmegaColor, "omega", "\u03c9", 1});
+  if (!in.close_up) {  // close up, their heads would cover the curves they point to
+    view.arrows.push_back({{0, 0, 0}, to_glm(L_tip), 0.022, kLColor, "L", "L", 0});  // bold: the construction's two vectors
+    view.arrows.push_back({{0, 0, 0}, to_glm(p.contact * f.scale), 0.022, kOmegaColor, "omega", "\u03c9", 1});
+  }
   const float w = line_scale(in.frame_h);
   PolylineItem polhode{{}, color_of(Meaning::polhode), 2.5f * w, false, "polhode"};
   // The herpolhode thinner than the polhode and fading with age (oldest faint):
@@ -179,9 +182,9 @@ void add_motion(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
     herpolhode.points.push_back(to_glm(w * f.scale - kHerpolhodeLift * p.normal));
   // Where ω started on the ellipsoid: the loop is seen to close when it comes back to it.
   if (!polhode.points.empty())
-    view.points.push_back({polhode.points.front(), 0.6 * kContactDotRadius, polhode.color, "polhode_start"});
+    view.points.push_back({polhode.points.front(), 0.6 * kContactDotRadius * in.dot_scale, polhode.color, "polhode_start"});
   // The contact point, where the ellipsoid touches the plane: the eye's first stop.
-  view.points.push_back({to_glm(p.contact * f.scale), kContactDotRadius, color_of(Meaning::omega), "contact_point"});
+  view.points.push_back({to_glm(p.contact * f.scale), kContactDotRadius * in.dot_scale, color_of(Meaning::omega), "contact_point"});
   if (polhode.points.size() >= 2) add_near_side(view, f, polhode);
   if (polhode.points.size() >= 2) view.polylines.push_back(std::move(polhode));
   if (herpolhode.points.size() >= 2) view.polylines.push_back(std::move(herpolhode));
@@ -226,6 +229,8 @@ void add_curve_label(View& view, const ViewportProjection& project, const Polyli
 
 // The polhode and the herpolhode named beside them, the plane at a corner clear of the ellipsoid.
 void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in) {
+  // A close-up is an inset in a view that names them, in the same colours: in its small space names would crowd the curves.
+  if (in.close_up) return;
   const ViewportProjection project(view.camera, in.width_px, in.height_px);
   const float size = text_px(TextRole::label, in.frame_h, in.text_scale);
   for (const PolylineItem& l : view.polylines) {
@@ -264,10 +269,11 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   f.scale = 1.0 / std::max(f.p.semi_axes.maxCoeff(), 1e-300);
   plane_basis(f.p.normal, f.u, f.v);
   f.foot = f.p.plane_distance * f.scale * f.p.normal;
-  aim_poinsot_camera(view, f, in.camera);
+  aim_poinsot_camera(view, f, in.camera, in.close_up);
   add_inertia_ellipsoid(view, f, line_scale(in.frame_h));
+  if (in.close_up) view.arrows.clear();  // the axes end far outside a close-up
   add_invariable_plane(view, f);
-  if (in.separatrix) add_separatrix(view, f, in);
+  if (in.separatrix && !in.close_up) add_separatrix(view, f, in);
   add_motion(view, f, in);
   add_direct_labels(view, f, in);
 }

@@ -48,6 +48,11 @@ struct PoinsotInput {
   /// The separatrix on the ellipsoid, dashed: the polhodes through ±e₂ (|L|² = 2E·I₂),
   /// which part the loops round e₁ from those round e₃.
   bool separatrix = false;
+  /// The contact region alone, the camera aimed at the foot of L: the curves,
+  /// the contact point and the polhode's start; no arrows, no separatrix, no names.
+  bool close_up = false;
+  /// The dots' radius times this (a close-up's narrowed field keeps them their size on screen).
+  double dot_scale = 1;
 };
 
 /// The plane's surface: opaque and light, so the palette's curves show on it

@@ -278,8 +278,9 @@ void names_pinned_once_per_run() {
                                    << " places over the run";
       }
     }
-  EXPECT_GE(pinned, 3 * 6) << "names checked (poinsot's six: polhode, herpolhode and the plane in each Poinsot view; at three "
-                              "sizes)";
+  // Poinsot's five: polhode, herpolhode in both boxes' views, the plane in box 2's (box 1's view, above
+  // its close-up, has no room left for it); at three sizes.
+  EXPECT_GE(pinned, 3 * 5) << "names checked";
 }
 
 // Layout by construction: every reported 3D item (arrow whole, marker, body

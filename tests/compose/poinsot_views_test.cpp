@@ -32,6 +32,7 @@ struct Lesson {
 
 glm::dvec3 eye(const tumble::viz::Camera& c) { return glm::normalize(c.position - c.target); }
 
+// Box 1, box 2 and box 1's close-up: one direction, one up; the close-up a narrower field.
 TEST(PoinsotViews, EllipsoidsAreSeenFromOneDirection) {
   const Lesson l;
   const FrameBuilder fb(l.scene, l.runs, l.fps, 960, 540);
@@ -39,9 +40,12 @@ TEST(PoinsotViews, EllipsoidsAreSeenFromOneDirection) {
     std::vector<tumble::viz::Camera> poinsot;
     for (const tumble::viz::View& v : fb.build(k).views)
       if (v.name == "poinsot") poinsot.push_back(v.camera);
-    ASSERT_EQ(poinsot.size(), 2u);
-    EXPECT_GT(glm::dot(eye(poinsot[0]), eye(poinsot[1])), 0.9999) << "frame " << k;
-    EXPECT_GT(glm::dot(glm::normalize(poinsot[0].up), glm::normalize(poinsot[1].up)), 0.9999) << "frame " << k;
+    ASSERT_EQ(poinsot.size(), 3u);
+    for (std::size_t i = 1; i < poinsot.size(); ++i) {
+      EXPECT_GT(glm::dot(eye(poinsot[0]), eye(poinsot[i])), 0.9999) << "frame " << k << " view " << i;
+      EXPECT_GT(glm::dot(glm::normalize(poinsot[0].up), glm::normalize(poinsot[i].up)), 0.9999) << "frame " << k;
+    }
+    EXPECT_LT(poinsot[2].fov_y_deg, 0.5 * poinsot[0].fov_y_deg) << "the close-up's field, frame " << k;
   }
 }
 
@@ -182,7 +186,15 @@ TEST(PoinsotViews, EachEllipsoidHoldsItsBodyTurnedWithIt) {
     std::size_t poinsot = 0;
     for (const tumble::viz::View& v : fb.build(k).views) {
       if (v.name != "poinsot") continue;
-      const std::size_t body = poinsot++ == 0 ? 0 : 1;  // box 1 ("stable"), box 2 ("tumbling")
+      const std::size_t index = poinsot++;
+      if (index == 2) {  // box 1's close-up: its curves and the contact point, no body, no arrows
+        EXPECT_TRUE(std::none_of(v.surfaces.begin(), v.surfaces.end(), [](const auto& s) { return s.name == "ellipsoid_body"; }));
+        EXPECT_TRUE(v.arrows.empty()) << "frame " << k;
+        EXPECT_TRUE(std::any_of(v.points.begin(), v.points.end(), [](const auto& p) { return p.name == "contact_point"; }));
+        EXPECT_TRUE(std::any_of(v.polylines.begin(), v.polylines.end(), [](const auto& p) { return p.name == "herpolhode"; }));
+        continue;
+      }
+      const std::size_t body = index == 0 ? 0 : 1;  // box 1 ("stable"), box 2 ("tumbling")
       const Eigen::Quaterniond q = l.runs[0].frames[static_cast<std::size_t>(k)][body].q;
       const tumble::viz::SurfaceItem* ellipsoid = nullptr;
       std::vector<const tumble::viz::SurfaceItem*> inside;

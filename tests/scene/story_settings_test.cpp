@@ -163,6 +163,11 @@ TEST(Reveal, AnEnergyEllipsoidFadesInFromItsAnchoredTime) {
             std::vector<std::string>{"t_handle"});
   EXPECT_TRUE(s.render.explain.views[1].paths_of.empty());
   EXPECT_NE(error_of("paths_of = [\"t_handle\"]\n").find("only a momentum_sphere view takes paths_of"), std::string::npos);
+  // close_up: a Poinsot view's contact region alone; on a Poinsot view only.
+  EXPECT_FALSE(s.render.explain.views[1].close_up);
+  EXPECT_TRUE(load("[[views]]\nkind = \"poinsot\"\nclose_up = true\n").render.explain.views[1].close_up);
+  EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\nclose_up = true\n").find("only a poinsot view takes close_up"),
+            std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npaths_of = [\"t_handel\"]\n").find("did you mean \"t_handle\""),
             std::string::npos);
   EXPECT_NE(error_of("[[views]]\nkind = \"momentum_sphere\"\npaths_of = []\n").find("views[1].paths_of"), std::string::npos);

@@ -8,6 +8,7 @@
 
 #include "compose/camera_fit.hpp"
 #include "compose/panel.hpp"
+#include "compose/view_layout.hpp"
 #include "compose/views/kinds.hpp"
 #include "core/dynamics.hpp"
 #include "compose/world_views.hpp"
@@ -21,6 +22,7 @@ namespace {
 constexpr double kPoinsotMargin = 0.04;
 constexpr long kPoinsotFitSamples = 120;
 constexpr double kPoinsotClosest = 0.3;
+constexpr double kCloseUpClosest = 0.02;  // a close-up of the contact region: up to 50 times nearer
 constexpr float kBodyAlpha = 0.3f;  // the body inside its ellipsoid: seen, and L and ω from its centre clearly through it
 
 // Points on the inertia ellipsoid's surface (its unit sphere under its model), for the camera fit.
@@ -32,6 +34,29 @@ void add_ellipsoid_points(const viz::SurfaceItem& sf, std::vector<glm::dvec3>& o
       const glm::dvec3 u(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
       out.push_back(glm::dvec3(sf.model * glm::dvec4(u, 1.0)));
     }
+}
+
+// A close-up keeps its camera where it stands and narrows its field: moved
+// nearer, it would stand inside the ellipsoid. Near the target the picture
+// scales as if the camera stood `factor` times as far.
+viz::Camera zoomed(viz::Camera c, double factor) {
+  c.fov_y_deg = 2 * glm::degrees(std::atan(factor * std::tan(0.5 * glm::radians(c.fov_y_deg))));
+  return c;
+}
+
+// The narrowing (zoomed's factor) that keeps every point of `shots` inside
+// the margins: a narrower field scales each point's NDC by 1/factor.
+double narrowing(const std::vector<Shot>& shots, double aspect) {
+  double factor = kCloseUpClosest;
+  for (const Shot& s : shots) {
+    const CameraMatrices m = camera_matrices(s.camera, static_cast<float>(aspect));
+    for (const glm::dvec3& p : s.points) {
+      const glm::dvec4 clip = glm::dmat4(m.proj) * glm::dmat4(m.view) * glm::dvec4(p, 1.0);
+      if (clip.w <= 0) continue;
+      factor = std::max({factor, std::abs(clip.x / clip.w) / (1 - kPoinsotMargin), std::abs(clip.y / clip.w) / (1 - kPoinsotMargin)});
+    }
+  }
+  return std::min(factor, 1.0);
 }
 
 class PoinsotPanel : public Panel {
@@ -57,11 +82,13 @@ class PoinsotPanel : public Panel {
       for (const viz::PolylineItem& l : v.polylines)
         if (!l.name.empty()) s.points.insert(s.points.end(), l.points.begin(), l.points.end());
       for (const viz::SurfaceItem& sf : v.surfaces)
-        if (sf.name == "ellipsoid") add_ellipsoid_points(sf, s.points);
+        if (sf.name == "ellipsoid" && !vc_.close_up) add_ellipsoid_points(sf, s.points);
       shots.push_back(std::move(s));
     }
-    // Closer too: the construction, not the plane (cut at the content's edges), fills the content.
-    backoff_ = backoff(shots, size.x / std::max(size.y, 1.0f), kPoinsotMargin, kPoinsotClosest);
+    // Closer too: the construction, not the plane (cut at the content's edges), fills the content;
+    // close up, the curves and the contact point alone.
+    const double aspect = size.x / std::max(size.y, 1.0f);
+    backoff_ = vc_.close_up ? narrowing(shots, aspect) : backoff(shots, aspect, kPoinsotMargin, kPoinsotClosest);
   }
 
   viz::View content(long k) const override {
@@ -69,7 +96,7 @@ class PoinsotPanel : public Panel {
     const long kk = last_frame(ctx_.runs[0], k);
     if (kk < 0) return {};
     viz::View v = build(kk);
-    v.camera = backed_off(v.camera, backoff_);
+    v.camera = vc_.close_up ? zoomed(v.camera, backoff_) : backed_off(v.camera, backoff_);
     return v;
   }
 
@@ -94,10 +121,12 @@ class PoinsotPanel : public Panel {
     in.frame_h = ctx_.frame_h;
     in.text_scale = ctx_.text_scale();
     in.separatrix = vc_.separatrix;
+    in.close_up = vc_.close_up;
+    in.dot_scale = vc_.close_up ? 1.5 * backoff_ : 1.0;  // the field narrowed by backoff_: the dots a little larger on screen than elsewhere, the eye's first stop
     viz::View v;
     viz::build_poinsot(v, in);
-    // The body the ellipsoid belongs to, inside it, turning with it.
-    viz::add_body_in_ellipsoid(v, look_, s.q, m.cloud_from_principal, m.com_cloud, m.inertia, kBodyAlpha);
+    // The body the ellipsoid belongs to, inside it, turning with it (not in a close-up of the contact).
+    if (!vc_.close_up) viz::add_body_in_ellipsoid(v, look_, s.q, m.cloud_from_principal, m.com_cloud, m.inertia, kBodyAlpha);
     return v;
   }
 
