@@ -241,7 +241,7 @@ void add_direct_labels(View& view, const PoinsotFrame& f, const PoinsotInput& in
   }
   // The plane at the point in view farthest on screen from the foot of L (the ellipsoid and the curves are round it).
   glm::vec2 foot;
-  if (!project(to_glm(f.foot), foot)) return;
+  if (!in.name_plane || !project(to_glm(f.foot), foot)) return;
   glm::dvec3 corner(0);
   float farthest = -1;
   // Corners, then nearer points and the edges' middles: a close camera may not see the corners.

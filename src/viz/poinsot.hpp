@@ -51,6 +51,8 @@ struct PoinsotInput {
   /// The contact region alone, the camera aimed at the foot of L: the curves,
   /// the contact point and the polhode's start; no arrows, no separatrix, no names.
   bool close_up = false;
+  /// The plane named (false: a close-up below the view shows it, its title naming it; no room is left here).
+  bool name_plane = true;
   /// The dots' radius times this (a close-up's narrowed field keeps them their size on screen).
   double dot_scale = 1;
 };

@@ -63,7 +63,12 @@ class PoinsotPanel : public Panel {
  public:
   PoinsotPanel(const PanelContext& ctx, std::size_t index)
       : ctx_(ctx), vc_(ctx.scene.render.explain.views[index]), body_(view_body(ctx, index)),
-        look_(body_look(ctx.scene.bodies[body_], false)) {}
+        look_(body_look(ctx.scene.bodies[body_], false)) {
+    const auto& views = ctx.scene.render.explain.views;
+    for (std::size_t j = 0; j < views.size(); ++j)
+      if (j != index && views[j].kind == scene::ViewKind::poinsot && views[j].close_up && view_body(ctx, j) == body_)
+        has_close_up_ = true;
+  }
   std::string name() const override { return "poinsot"; }
   std::vector<viz::KeyEntry> key() const override {
     return ctx_.scene.render.explain.key ? viz::poinsot_key(vc_.separatrix) : std::vector<viz::KeyEntry>{};
@@ -122,6 +127,7 @@ class PoinsotPanel : public Panel {
     in.text_scale = ctx_.text_scale();
     in.separatrix = vc_.separatrix;
     in.close_up = vc_.close_up;
+    in.name_plane = !has_close_up_;
     in.dot_scale = vc_.close_up ? 1.5 * backoff_ : 1.0;  // the field narrowed by backoff_: the dots a little larger on screen than elsewhere, the eye's first stop
     viz::View v;
     viz::build_poinsot(v, in);
@@ -136,6 +142,7 @@ class PoinsotPanel : public Panel {
   viz::BodyLook look_;  // its surfaces, drawn inside the ellipsoid
   glm::vec2 size_{1, 1};
   double backoff_ = 1;
+  bool has_close_up_ = false;  // another view shows this body's contact close up (and names the plane)
 };
 
 }  // namespace
