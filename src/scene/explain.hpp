@@ -98,6 +98,7 @@ struct ViewConfig {
   double dot_scale = 1;             ///< momentum_sphere: Π's dot radius times this (on top of line_scale)
   bool dark_levels = false;         ///< momentum_sphere: the other levels dark grey and opaque (read from afar), not faint
   bool path_on_top = false;         ///< momentum_sphere: Π's trail drawn over the dashed separatrix (a path a fraction of a degree off it)
+  bool hide_far_side = false;       ///< momentum_sphere: what lies behind the ball not drawn (default: faint through it)
   bool separatrix = false;          ///< poinsot: the separatrix dashed on the inertia ellipsoid (the polhodes through ±e₂)
   /// momentum_sphere: these bodies' Π from t = 0 on the one sphere, each scaled to it (Π/|L| of its own):
   /// bodies of one inertia compared on one figure; empty = the view's body's Π alone
