@@ -98,6 +98,11 @@ bool on_a_line(const View& view, const ViewportProjection& project, const Box& b
   return false;
 }
 
+// Whether `box` overlaps a text of `view` (a name already placed).
+bool on_a_name(const View& view, const Box& box) {
+  return std::any_of(view.texts.begin(), view.texts.end(), [&](const TextItem& t) { return text_box(t).overlaps(box); });
+}
+
 }  // namespace
 
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px) {
@@ -128,6 +133,13 @@ void name_sphere_axes(View& view, float width_px, float height_px, float label_p
     if (project(e, tip) && project(e + 0.029 * glm::normalize(view.camera.up), head))
       head_px = std::max(head_px, glm::length(head - tip));
   }
+  glm::vec2 centre, rim;
+  const bool ball_seen = project(glm::dvec3(0), centre) && project(glm::normalize(view.camera.up), rim);
+  const float ball_px = ball_seen ? glm::length(rim - centre) : 0;
+  const auto on_face = [&](const Box& b) {
+    const glm::vec2 near{std::clamp(centre.x, b.x0, b.x1), std::clamp(centre.y, b.y0, b.y1)};
+    return glm::length(near - centre) < ball_px;
+  };
   for (int i = 0; i < 3; ++i)
     for (int sign : {1, -1}) {
       glm::dvec3 end(0);
@@ -149,25 +161,30 @@ void name_sphere_axes(View& view, float width_px, float height_px, float label_p
       const glm::vec2 d0 = glm::length(mixed) > 0.2f ? glm::normalize(mixed) : (len > 0 ? along / len : end_on);
       const glm::vec2 from = tip;
       const float past = sign > 0 ? head_px : 1.0f;
+      // An end seen beside the ball is named beside it too: on its face, a name reads as a point there.
+      const bool off_face = glm::length(tip - base) > ball_px;
       // Along the axis as drawn, else turned a little at a time until clear of the axes and inside the view;
       // where no turn is, along the axis pushed back inside (a narrow view, an axis along its edge).
-      auto at = [&](float turn, bool curves) {
+      auto at = [&](float turn, bool curves = true) {
         const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
         const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.25f * label_px;
         const glm::vec2 centre = from + reach * d;
         t.position_px = {centred_x(t.text, label_px, centre.x), centre.y - 0.5f * label_px};
         const Box b = text_box(t);
-        return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= width_px && b.y1 <= height_px && !on_a_line(view, project, b, head_px, curves);
+        // Among curves, a quarter line clear (as the labels' later settling keeps them, which would move it).
+        const float g = clear_of_curves ? 0.25f * label_px : 0.0f;
+        return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= width_px && b.y1 <= height_px &&
+               !on_a_line(view, project, {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g}, head_px, clear_of_curves && curves) &&
+               !(clear_of_curves && (off_face && on_face(b) || on_a_name(view, {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g})));
       };
       bool placed = false;
-      // Clear of the curves too where asked, else of the axes alone.
-      for (const bool curves : {clear_of_curves, false}) {
-        for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f, 2.4f, -2.4f})
-          if ((placed = at(turn, curves))) break;
-        if (placed || !curves) break;
-      }
+      for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f, 2.4f, -2.4f})
+        if ((placed = at(turn))) break;
+      // Among the curves near a tip (a small sphere), finer turns; then over a curve, off the face.
+      for (int k = 0; clear_of_curves && !placed && k < 66; ++k)
+        placed = at(0.15f * static_cast<float>((k % 33 + 1) / 2) * (k % 2 ? -1.0f : 1.0f), k < 33);
       if (!placed) {
-        at(0.0f, false);
+        at(0.0f);
         const Box b = text_box(t);
         t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - width_px);
         t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - height_px);
