@@ -173,20 +173,6 @@ std::optional<glm::vec2> clear_spot(const Box& near, glm::vec2 size, float gap, 
   return best;
 }
 
-// Whether `b` overlaps a ball of the view (a point of radius ≥ 0.5: a sphere figure's, not a marker) as drawn.
-bool on_a_ball(const View& view, float w, float h, const Box& b) {
-  const glm::dvec3 up = glm::normalize(view.camera.up);
-  for (const PointItem& p : view.points) {
-    glm::vec2 c, edge;
-    if (p.radius < 0.5 || !project_to_viewport(view.camera, w, h, p.position, c) ||
-        !project_to_viewport(view.camera, w, h, p.position + p.radius * up, edge))
-      continue;
-    const glm::vec2 near{std::clamp(c.x, b.x0, b.x1), std::clamp(c.y, b.y0, b.y1)};
-    if (glm::length(near - c) < glm::length(edge - c)) return true;
-  }
-  return false;
-}
-
 std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());
@@ -210,11 +196,7 @@ std::vector<TextItem> settle_labels(View& view, float width_px, float height_px,
     const glm::vec2 size{at.x1 - at.x0, at.y1 - at.y0};
     const bool subject = has_subject(t);
     const Box own{t.subject_px.x, t.subject_px.y, t.subject_px.z, t.subject_px.w};
-    // A name put beside a ball goes first to a place near it off the ball: moved onto its face,
-    // it reads as naming a point there. Then anywhere, as before.
-    const bool off_ball = !on_a_ball(view, width_px, height_px, at);
     bool placed = false;
-    for (int pass = off_ball ? 0 : 1; pass < 2 && !placed; ++pass)
     for (const glm::vec2 p : subject ? around(t.subject_px, size, gap) : nearby(t.position_px, size, t.size_px)) {
       const Box b{p.x, p.y, p.x + size.x, p.y + size.y};
       if (b.x0 < 0 || b.y0 < 0 || b.x1 > width_px || b.y1 > height_px) continue;
@@ -225,8 +207,6 @@ std::vector<TextItem> settle_labels(View& view, float width_px, float height_px,
                                    std::any_of(dots.begin(), dots.end(), [&](const Box& o) { return o.overlaps(b); }))
         continue;
       if ((subject && own.overlaps(wide)) || std::any_of(solid.begin(), solid.end(), hit)) continue;
-      const bool near = std::abs(p.x - at.x0) <= 0.71f * size.x && std::abs(p.y - at.y0) <= 2.3f * t.size_px;
-      if (pass == 0 && (!near || on_a_ball(view, width_px, height_px, b))) continue;
       t.position_px = p;
       taken.push_back(b);
       taken_by_axes.push_back(b);
