@@ -99,6 +99,7 @@ struct ViewConfig {
   double dot_scale = 1;             ///< momentum_sphere: Π's dot radius times this (on top of line_scale)
   bool dark_levels = false;         ///< momentum_sphere: the other levels dark grey and opaque (read from afar), not faint
   bool path_on_top = false;         ///< momentum_sphere: Π's trail drawn over the dashed separatrix (a path a fraction of a degree off it)
+  bool hide_far_side = false;       ///< momentum_sphere: what lies behind the ball not drawn (default: faint through it)
   bool separatrix = false;          ///< poinsot: the separatrix dashed on the inertia ellipsoid (the polhodes through ±e₂)
   /// poinsot: the contact region alone, close up (an inset): the polhode, the herpolhode and the contact point,
   /// no arrows, no body; its field narrowed to those curves over the whole run

@@ -175,7 +175,7 @@ void read_views(TableReader& root, LoadContext& ctx, Scene& s) {
                    "key", "path", "line_scale", "levels", "shade_speeds", "tip_names", "turn", "energy_levels",
                    "ellipsoid_from", "ellipsoid_opacity", "level_arrows", "build_up", "trail_axes", "box", "zoom",
                    "dot_scale", "dark_levels", "readout", "until", "paths_of", "path_on_top", "trails", "see_through",
-                   "L_width", "omega_width", "trail_width", "separatrix", "close_up"});
+                   "L_width", "omega_width", "trail_width", "separatrix", "close_up", "hide_far_side"});
     ViewConfig v;
     const auto kind = r.string("kind");
     if (!kind) {

@@ -214,7 +214,9 @@ std::vector<TextItem> settle_labels(View& view, float width_px, float height_px,
       placed = true;
       break;
     }
-    if (!placed) left_out.push_back(std::move(t));
+    // An axis end must keep its name: with no clear place, where it was put (beside its tip).
+    if (!placed && t.name.rfind("axis_label", 0) == 0) kept.push_back(std::move(t));
+    else if (!placed) left_out.push_back(std::move(t));
   }
   view.texts = std::move(kept);
   return left_out;

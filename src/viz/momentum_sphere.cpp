@@ -211,7 +211,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   const float w = in.line_scale;
   // Everything from here on shows through the ball, faintly, where it is behind it.
   const std::size_t front_first = view.polylines.size();
-  add_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale));
+  add_sphere_axis_lines(view);
   add_end_on_marks(view, kAxisReach, 0.05);
   // The body's own polhode, wide, then the separatrix dashed over it: where
   // the two run together both stay visible (crimson edges, sky-blue dashes).
@@ -234,7 +234,9 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
     // Π now: a dot standing out of the sphere, over every curve, small enough that a saddle it sits near shows.
     view.points.push_back({1.02 * to_glm(in.momentum / L), 0.03 * w * in.dot_scale, color_of(Meaning::momentum_point), "momentum_point"});
   }
-  show_far_side(view, front_first, kSphereBall);
+  // Named last: clear of the curves too, not pushed later by lines onto the ball's face.
+  name_sphere_axes(view, in.width_px, in.height_px, text_px(TextRole::label, in.frame_h, in.text_scale), in.hide_far_side);
+  show_far_side(view, front_first, kSphereBall, in.hide_far_side);
 }
 
 }  // namespace tumble::viz

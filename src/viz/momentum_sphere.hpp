@@ -73,6 +73,9 @@ struct MomentumSphereInput {
   float dot_scale = 1;                      ///< Π's dot radius, times this (on top of line_scale)
   bool dark_levels = false;                 ///< the other levels dark grey and opaque, wider, arrows larger: read from afar
   bool path_on_top = false;                 ///< Π's trail over the separatrix (default under it: the separatrix reads across it)
+  /// What lies behind the ball not drawn at all (default: faint through it), and the axes
+  /// named clear of the curves on the front, which are then all a viewer follows.
+  bool hide_far_side = false;
   SphereReveal reveal = {};                 ///< what a build-up shows so far (the ellipsoid: energy_ellipsoid, ellipsoid_alpha)
   /// Several paths on the one sphere (the same body stepped by several methods), drawn in this
   /// order, each ended by its dot, instead of `history` and Π's own dot (`momentum` still sets |L|).

@@ -68,8 +68,12 @@ std::vector<Eigen::Vector3d> refined_curve(const std::function<Eigen::Vector3d(d
 namespace {
 
 // Whether `box` lies on one of the six half-axes as `project` draws them (the
-// + arrows thickened by their heads' `head_px`).
-bool on_an_axis(const ViewportProjection& project, const Box& box, float head_px) {
+// + arrows thickened by their heads' `head_px`); `curves`: or on a named curve
+// (one a viewer follows), counting only what the ball does not hide, so that
+// a name may sit over what is behind the ball (a figure that hides its back).
+bool on_a_line(const View& view, const ViewportProjection& project, const Box& box, float head_px, bool curves) {
+  const glm::dvec3 eye = view.camera.position;
+  const auto on = [&](glm::vec2 p, float r) { return p.x + r > box.x0 && p.x - r < box.x1 && p.y + r > box.y0 && p.y - r < box.y1; };
   glm::vec2 base, tip;
   if (!project(glm::dvec3(0), base)) return false;
   for (int i = 0; i < 3; ++i)
@@ -78,21 +82,35 @@ bool on_an_axis(const ViewportProjection& project, const Box& box, float head_px
       e[i] = sign * kAxisReach;
       if (!project(e, tip)) continue;
       for (int s = 0; s <= 24; ++s) {
-        const glm::vec2 p = base + (tip - base) * (static_cast<float>(s) / 24);
-        const float r = s == 24 && sign > 0 ? head_px + 1 : 2.5f;
-        if (p.x + r > box.x0 && p.x - r < box.x1 && p.y + r > box.y0 && p.y - r < box.y1) return true;
+        if (curves && hidden_by_ball(eye, e * (s / 24.0), 1.0)) continue;
+        if (on(base + (tip - base) * (static_cast<float>(s) / 24), s == 24 && sign > 0 ? head_px + 1 : 2.5f)) return true;
       }
     }
+  if (!curves) return false;
+  const auto seen_on = [&](const glm::dvec3& x) {
+    glm::vec2 p;
+    return !hidden_by_ball(eye, x, 1.0) && project(x, p) && on(p, 2.5f);
+  };
+  for (const PolylineItem& l : view.polylines)
+    if (!l.name.empty())
+      for (std::size_t j = 0; j < l.points.size(); ++j)
+        if (seen_on(l.points[j]) || (j > 0 && seen_on(0.5 * (l.points[j - 1] + l.points[j])))) return true;
   return false;
+}
+
+// Whether `box` overlaps a text of `view` (a name already placed).
+bool on_a_name(const View& view, const Box& box) {
+  return std::any_of(view.texts.begin(), view.texts.end(), [&](const TextItem& t) { return text_box(t).overlaps(box); });
 }
 
 }  // namespace
 
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px) {
-  static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
-  static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
-  const ViewportProjection project(view.camera, width_px, height_px);
-  float head_px = 0;
+  add_sphere_axis_lines(view);
+  name_sphere_axes(view, width_px, height_px, label_px);
+}
+
+void add_sphere_axis_lines(View& view) {
   for (int i = 0; i < 3; ++i) {
     glm::dvec3 e(0);
     e[i] = kAxisReach;
@@ -100,10 +118,28 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
     if (!hidden_by_ball(view.camera.position, e, 1.0))
       view.arrows.push_back({{0, 0, 0}, e, 0.012, kAxisColors[i], std::string("axis") + char('1' + i)});
     view.polylines.push_back({{glm::dvec3(0), -e}, color_of(static_cast<Meaning>(i), 0.75f), 2.0f, false});
+  }
+}
+
+void name_sphere_axes(View& view, float width_px, float height_px, float label_px, bool clear_of_curves) {
+  static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
+  static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
+  const ViewportProjection project(view.camera, width_px, height_px);
+  float head_px = 0;
+  for (int i = 0; i < 3; ++i) {
+    glm::dvec3 e(0);
+    e[i] = kAxisReach;
     glm::vec2 tip, head;
     if (project(e, tip) && project(e + 0.029 * glm::normalize(view.camera.up), head))
       head_px = std::max(head_px, glm::length(head - tip));
   }
+  glm::vec2 centre, rim;
+  const bool ball_seen = project(glm::dvec3(0), centre) && project(glm::normalize(view.camera.up), rim);
+  const float ball_px = ball_seen ? glm::length(rim - centre) : 0;
+  const auto on_face = [&](const Box& b) {
+    const glm::vec2 near{std::clamp(centre.x, b.x0, b.x1), std::clamp(centre.y, b.y0, b.y1)};
+    return glm::length(near - centre) < ball_px;
+  };
   for (int i = 0; i < 3; ++i)
     for (int sign : {1, -1}) {
       glm::dvec3 end(0);
@@ -125,19 +161,28 @@ void add_sphere_axes(View& view, float width_px, float height_px, float label_px
       const glm::vec2 d0 = glm::length(mixed) > 0.2f ? glm::normalize(mixed) : (len > 0 ? along / len : end_on);
       const glm::vec2 from = tip;
       const float past = sign > 0 ? head_px : 1.0f;
+      // An end seen beside the ball is named beside it too: on its face, a name reads as a point there.
+      const bool off_face = glm::length(tip - base) > ball_px;
       // Along the axis as drawn, else turned a little at a time until clear of the axes and inside the view;
       // where no turn is, along the axis pushed back inside (a narrow view, an axis along its edge).
-      auto at = [&](float turn) {
+      auto at = [&](float turn, bool curves = true) {
         const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
         const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.25f * label_px;
         const glm::vec2 centre = from + reach * d;
         t.position_px = {centred_x(t.text, label_px, centre.x), centre.y - 0.5f * label_px};
         const Box b = text_box(t);
-        return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= width_px && b.y1 <= height_px && !on_an_axis(project, b, head_px);
+        // Among curves, a quarter line clear (as the labels' later settling keeps them, which would move it).
+        const float g = clear_of_curves ? 0.25f * label_px : 0.0f;
+        return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= width_px && b.y1 <= height_px &&
+               !on_a_line(view, project, {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g}, head_px, clear_of_curves && curves) &&
+               !(clear_of_curves && (off_face && on_face(b) || on_a_name(view, {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g})));
       };
       bool placed = false;
       for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f, 2.4f, -2.4f})
         if ((placed = at(turn))) break;
+      // Among the curves near a tip (a small sphere), finer turns; then over a curve, off the face.
+      for (int k = 0; clear_of_curves && !placed && k < 66; ++k)
+        placed = at(0.15f * static_cast<float>((k % 33 + 1) / 2) * (k % 2 ? -1.0f : 1.0f), k < 33);
       if (!placed) {
         at(0.0f);
         const Box b = text_box(t);
@@ -186,7 +231,7 @@ Color faint_marker(Color c) {
   return {glm::mix(glm::vec3(c), glm::vec3(kSphereBallColor), 0.68f), 1.0f};
 }
 
-void show_far_side(View& view, std::size_t first_polyline, double ball) {
+void show_far_side(View& view, std::size_t first_polyline, double ball, bool hide) {
   const glm::dvec3 eye = view.camera.position;
   const double front = 1.0 + 0.5 * (1.0 - ball);  // above the ball, below nothing on the sphere
   std::vector<PolylineItem> out(view.polylines.begin(), view.polylines.begin() + static_cast<long>(first_polyline));
@@ -199,7 +244,7 @@ void show_far_side(View& view, std::size_t first_polyline, double ball) {
       std::size_t end = start + 1;
       while (end + 1 < p.points.size() && hidden_by_ball(eye, p.points[end], ball) == hidden) ++end;
       // The separatrix's back half is not drawn: seen through the ball it reads as a ring round the near pole.
-      if (hidden && p.name == "separatrix") {
+      if (hidden && (hide || p.name == "separatrix")) {
         start = end;
         continue;
       }
@@ -213,8 +258,10 @@ void show_far_side(View& view, std::size_t first_polyline, double ball) {
   }
   view.polylines = std::move(out);
   // Every marker on the sphere (not the ball itself, at the centre): a saddle's white core too.
+  const auto behind = [&](const PointItem& pt) { return glm::length(pt.position) > 0.5 && hidden_by_ball(eye, pt.position, ball); };
+  if (hide) std::erase_if(view.points, behind);
   for (PointItem& pt : view.points)
-    if (glm::length(pt.position) > 0.5 && hidden_by_ball(eye, pt.position, ball)) {
+    if (behind(pt)) {
       pt.position = near_side(eye, pt.position, front + pt.radius);
       pt.color = faint_marker(pt.color);
       pt.radius *= 0.8;

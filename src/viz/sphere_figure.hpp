@@ -3,7 +3,8 @@
 // seen; the saddles ±e₂ marked; arrows along the level curves giving the
 // direction of motion (dΠ/dt = Π × ω, ω = I⁻¹Π); and the far side of what a
 // viewer follows (polhode, Π, saddles) shown faintly through the ball, as a
-// textbook draws a sphere's hidden half; the separatrix's far half not drawn. GL-free.
+// textbook draws a sphere's hidden half (or, asked, not at all); the
+// separatrix's far half not drawn. GL-free.
 #pragma once
 
 #include <functional>
@@ -35,6 +36,12 @@ inline constexpr double kAxisReach = 1.22, kAxisLabelReach = 1.37;
 /// clear of the six half-axes. An end behind the ball is not named.
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px);
 
+/// add_sphere_axes in two steps: the axes, then their names; `clear_of_curves`:
+/// the names also kept clear of the named curves drawn by then (those a viewer
+/// follows) where the ball does not hide them.
+void add_sphere_axis_lines(View& view);
+void name_sphere_axes(View& view, float width_px, float height_px, float label_px, bool clear_of_curves = false);
+
 /// The saddles ±e₂ (points named saddle_+e2, saddle_-e2) on the unit sphere.
 void add_saddles(View& view);
 
@@ -51,6 +58,8 @@ Color faint_marker(Color c);
 /// `view` (units of |L|): brought along the eye's rays to the ball's near side
 /// (same pixels) and drawn faint (points: faint_marker), so they show through it; the far runs of
 /// the separatrix are dropped (through the ball they read as a ring round a pole).
-void show_far_side(View& view, std::size_t first_polyline, double ball);
+/// `hide`: all of them dropped instead, markers too (faint, they read as on the front face);
+/// a kept run reaches behind the ball by its end points at most (the ball hides those).
+void show_far_side(View& view, std::size_t first_polyline, double ball, bool hide = false);
 
 }  // namespace tumble::viz

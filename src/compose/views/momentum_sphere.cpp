@@ -213,6 +213,7 @@ class SpherePanel : public Panel {
     in.dot_scale = static_cast<float>(view.dot_scale);
     in.dark_levels = view.dark_levels;
     in.path_on_top = view.path_on_top;
+    in.hide_far_side = view.hide_far_side;
     in.tracks_under_separatrix = !view.paths_of.empty() && !view.path_on_top;  // bodies' paths as a body's own path
     return in;
   }
