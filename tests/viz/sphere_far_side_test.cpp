@@ -1,6 +1,8 @@
 // A momentum sphere that hides its back (hide_far_side): nothing behind the
 // ball is drawn, neither markers nor runs of curves, where by default they
 // show faintly through it; the axes' names stay off the curves on the front.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "viz/captions.hpp"
@@ -98,6 +100,45 @@ TEST(SphereFarSide, AxisNamesKeepOffTheCurvesInFront) {
     EXPECT_TRUE(named);
     EXPECT_EQ(over, !clear) << (clear ? "named over the curve" : "the curve no longer where the name goes first");
   }
+}
+
+// The axes' names crowded out of every place off the ball: settling may move
+// them, but never onto the ball's face, where a name reads as a point on the
+// sphere (with no place left, a name stays where it was put, beside its tip).
+TEST(SphereFarSide, ASettledAxisNameStaysOffTheBall) {
+  SphereCameraSettings s;
+  s.follow = false, s.azimuth_deg = -60, s.elevation_deg = 30, s.distance = 14, s.reach = kSphereReach;
+  View v;
+  v.name = "momentum_sphere";
+  v.camera = sphere_camera({}, s);
+  add_sphere_axis_lines(v);
+  name_sphere_axes(v, 640, 360, 14, true);
+  const ViewportProjection project(v.camera, 640, 360);
+  glm::vec2 centre, top;
+  ASSERT_TRUE(project(glm::dvec3(0), centre));
+  ASSERT_TRUE(project(glm::dvec3(0, 0, 1), top));
+  const float ball = glm::length(top - centre);  // e₃ points nearly up the picture: about the ball's radius
+  glm::vec2 tip;
+  ASSERT_TRUE(project(glm::dvec3(0, 0, kAxisReach), tip));
+  // Every place off the ball taken (above e₃'s tip, and either side of the ball) but e₃'s own:
+  // the only clear places left near it are on the ball's face.
+  std::vector<Box> taken{{0, 0, 640, tip.y - 16}, {0, 0, centre.x - ball - 2, 360}, {centre.x + ball + 2, 0, 640, 360}};
+  for (const TextItem& t : v.texts)
+    if (t.name == "axis_label_e3") {
+      const Box b = text_box(t);
+      EXPECT_GE(b.y0, tip.y - 16 - 30) << "e₃'s name first beside its tip";
+      taken[0].y1 = std::min(taken[0].y1, b.y0 - 1);
+    }
+  settle_labels(v, 640, 360, taken);
+  bool named = false;
+  for (const TextItem& t : v.texts) {
+    if (t.name.rfind("axis_label", 0) != 0) continue;
+    const Box b = text_box(t);
+    const glm::vec2 near{std::clamp(centre.x, b.x0, b.x1), std::clamp(centre.y, b.y0, b.y1)};
+    if (t.name == "axis_label_e3") named = true;
+    EXPECT_GE(glm::length(near - centre), 0.95f * ball) << t.text << " on the ball's face";
+  }
+  EXPECT_TRUE(named);
 }
 
 }  // namespace
