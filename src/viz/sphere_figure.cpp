@@ -121,6 +121,70 @@ void add_sphere_axis_lines(View& view) {
   }
 }
 
+namespace {
+
+// What every axis end's name is placed against: the view as named so far, its
+// projection, the arrowheads' size and the ball as drawn.
+struct AxisNaming {
+  const View& view;
+  const ViewportProjection& project;
+  float width_px, height_px, label_px, head_px;
+  bool clear_of_curves;
+  glm::vec2 centre;
+  float ball_px;
+  bool on_face(const Box& b) const {
+    const glm::vec2 near{std::clamp(centre.x, b.x0, b.x1), std::clamp(centre.y, b.y0, b.y1)};
+    return glm::length(near - centre) < ball_px;
+  }
+};
+
+// One end's name beside its tip (at `tip`, the centre at `base`), `past` px beyond it.
+TextItem name_axis_end(const AxisNaming& n, const char* text, Color color, glm::vec2 tip, glm::vec2 base, float past) {
+  TextItem t{text, {0, 0}, n.label_px, color};
+  const InkSpan ink = text_ink(t.text, n.label_px);
+  const glm::vec2 along = tip - base;
+  const float len = glm::length(along);
+  // Seen end-on (pointing at the viewer): beside its tip, up and right; the
+  // shorter the axis as drawn, the more its label leans that way, so that a
+  // turning camera moves it smoothly, never by a jump.
+  const glm::vec2 end_on(0.7071f, -0.7071f);
+  const float lean = std::clamp(len / (1.5f * n.label_px), 0.0f, 1.0f);
+  const glm::vec2 mixed = len > 0 ? (1 - lean) * end_on + lean * (along / len) : end_on;
+  const glm::vec2 d0 = glm::length(mixed) > 0.2f ? glm::normalize(mixed) : (len > 0 ? along / len : end_on);
+  // An end seen beside the ball is named beside it too: on its face, a name reads as a point there.
+  const bool off_face = len > n.ball_px;
+  // Along the axis as drawn, else turned a little at a time until clear of the axes and inside the view;
+  // where no turn is, along the axis pushed back inside (a narrow view, an axis along its edge).
+  auto at = [&](float turn, bool curves = true) {
+    const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
+    const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * n.label_px) + 0.25f * n.label_px;
+    const glm::vec2 centre = tip + reach * d;
+    t.position_px = {centred_x(t.text, n.label_px, centre.x), centre.y - 0.5f * n.label_px};
+    const Box b = text_box(t);
+    // Among curves, a quarter line clear (as the labels' later settling keeps them, which would move it).
+    const float g = n.clear_of_curves ? 0.25f * n.label_px : 0.0f;
+    const Box wide{b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g};
+    return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= n.width_px && b.y1 <= n.height_px &&
+           !on_a_line(n.view, n.project, wide, n.head_px, n.clear_of_curves && curves) &&
+           !(n.clear_of_curves && ((off_face && n.on_face(b)) || on_a_name(n.view, wide)));
+  };
+  bool placed = false;
+  for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f, 2.4f, -2.4f})
+    if ((placed = at(turn))) break;
+  // Among the curves near a tip (a small sphere), finer turns; then over a curve, off the face.
+  for (int k = 0; n.clear_of_curves && !placed && k < 66; ++k)
+    placed = at(0.15f * static_cast<float>((k % 33 + 1) / 2) * (k % 2 ? -1.0f : 1.0f), k < 33);
+  if (!placed) {
+    at(0.0f);
+    const Box b = text_box(t);
+    t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - n.width_px);
+    t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - n.height_px);
+  }
+  return t;
+}
+
+}  // namespace
+
 void name_sphere_axes(View& view, float width_px, float height_px, float label_px, bool clear_of_curves) {
   static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
   static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
@@ -135,11 +199,8 @@ void name_sphere_axes(View& view, float width_px, float height_px, float label_p
   }
   glm::vec2 centre, rim;
   const bool ball_seen = project(glm::dvec3(0), centre) && project(glm::normalize(view.camera.up), rim);
-  const float ball_px = ball_seen ? glm::length(rim - centre) : 0;
-  const auto on_face = [&](const Box& b) {
-    const glm::vec2 near{std::clamp(centre.x, b.x0, b.x1), std::clamp(centre.y, b.y0, b.y1)};
-    return glm::length(near - centre) < ball_px;
-  };
+  const AxisNaming naming{view, project, width_px, height_px, label_px, head_px, clear_of_curves, centre,
+                          ball_seen ? glm::length(rim - centre) : 0.0f};
   for (int i = 0; i < 3; ++i)
     for (int sign : {1, -1}) {
       glm::dvec3 end(0);
@@ -148,47 +209,7 @@ void name_sphere_axes(View& view, float width_px, float height_px, float label_p
       if (!project(end, tip) || !project(glm::dvec3(0), base)) continue;
       // Each end is named at its own tip; an end the ball hides (pointing away) is not named: nothing of it shows.
       if (hidden_by_ball(view.camera.position, end, 1.0)) continue;
-      TextItem t{sign > 0 ? kPlus[i] : kMinus[i], {0, 0}, label_px, kAxisColors[i]};
-      const InkSpan ink = text_ink(t.text, label_px);
-      const glm::vec2 along = tip - base;
-      const float len = glm::length(along);
-      // Seen end-on (pointing at the viewer): beside its tip, up and right; the
-      // shorter the axis as drawn, the more its label leans that way, so that a
-      // turning camera moves it smoothly, never by a jump.
-      const glm::vec2 end_on(0.7071f, -0.7071f);
-      const float lean = std::clamp(len / (1.5f * label_px), 0.0f, 1.0f);
-      const glm::vec2 mixed = len > 0 ? (1 - lean) * end_on + lean * (along / len) : end_on;
-      const glm::vec2 d0 = glm::length(mixed) > 0.2f ? glm::normalize(mixed) : (len > 0 ? along / len : end_on);
-      const glm::vec2 from = tip;
-      const float past = sign > 0 ? head_px : 1.0f;
-      // An end seen beside the ball is named beside it too: on its face, a name reads as a point there.
-      const bool off_face = glm::length(tip - base) > ball_px;
-      // Along the axis as drawn, else turned a little at a time until clear of the axes and inside the view;
-      // where no turn is, along the axis pushed back inside (a narrow view, an axis along its edge).
-      auto at = [&](float turn, bool curves = true) {
-        const glm::vec2 d{d0.x * std::cos(turn) - d0.y * std::sin(turn), d0.x * std::sin(turn) + d0.y * std::cos(turn)};
-        const float reach = past + 0.5f * (std::abs(d.x) * ink.width() + std::abs(d.y) * label_px) + 0.25f * label_px;
-        const glm::vec2 centre = from + reach * d;
-        t.position_px = {centred_x(t.text, label_px, centre.x), centre.y - 0.5f * label_px};
-        const Box b = text_box(t);
-        // Among curves, a quarter line clear (as the labels' later settling keeps them, which would move it).
-        const float g = clear_of_curves ? 0.25f * label_px : 0.0f;
-        return b.x0 >= 0 && b.y0 >= 0 && b.x1 <= width_px && b.y1 <= height_px &&
-               !on_a_line(view, project, {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g}, head_px, clear_of_curves && curves) &&
-               !(clear_of_curves && (off_face && on_face(b) || on_a_name(view, {b.x0 - g, b.y0 - g, b.x1 + g, b.y1 + g})));
-      };
-      bool placed = false;
-      for (const float turn : {0.0f, 0.45f, -0.45f, 0.9f, -0.9f, 1.35f, -1.35f, 1.8f, -1.8f, 2.4f, -2.4f})
-        if ((placed = at(turn))) break;
-      // Among the curves near a tip (a small sphere), finer turns; then over a curve, off the face.
-      for (int k = 0; clear_of_curves && !placed && k < 66; ++k)
-        placed = at(0.15f * static_cast<float>((k % 33 + 1) / 2) * (k % 2 ? -1.0f : 1.0f), k < 33);
-      if (!placed) {
-        at(0.0f);
-        const Box b = text_box(t);
-        t.position_px.x += std::max(0.0f, -b.x0) - std::max(0.0f, b.x1 - width_px);
-        t.position_px.y += std::max(0.0f, -b.y0) - std::max(0.0f, b.y1 - height_px);
-      }
+      TextItem t = name_axis_end(naming, sign > 0 ? kPlus[i] : kMinus[i], kAxisColors[i], tip, base, sign > 0 ? head_px : 1.0f);
       t.name = std::string(sign > 0 ? "axis_label_e" : "axis_label_-e") + char('1' + i);
       view.texts.push_back(std::move(t));
     }
