@@ -15,13 +15,13 @@ if [ ! -x "$tumble" ]; then
 fi
 # scene frame docs-name: frame 40 = the title card; 1050 = the stop at the
 # first flip (t = 1.29 s, the stem across L); 1376 = t = 2.28 s, Π near −e₂
-# between the flips; poinsot 1392 = t = 3 s;
+# between the flips; poinsot 1215 = t = 3 s;
 # tennis_racket 600 = the hold at the middle racket's first flip (t = 0.47 s);
 # dzhanibekov 800 = the demo's hold at flip 2 (t = 5.09 s: ω 28° off L, seen across,
 # the two stable spins either side of the T); methods_compare 680 = the stop at t = 0.78 s,
 # explicit Euler's energy just past the separatrix (ringed on the plot).
 for spec in "dzhanibekov 800 demo_frame" "dzhanibekov_explained 40 explained_start" "dzhanibekov_explained 1050 explained_flip" \
-            "dzhanibekov_explained 1376 explained_after" "poinsot 1392 poinsot_3s" \
+            "dzhanibekov_explained 1376 explained_after" "poinsot 1215 poinsot_3s" \
             "tennis_racket 600 tennis_racket_flip" "methods_compare 680 methods_compare_frame"; do
   set -- $spec
   "$tumble" render "scenes/$1.toml" --frames "$2:$2" --width 960 --height 540 --video none --progress none \

@@ -25,8 +25,8 @@ TEST(LayoutRun, WritesTheAskedFramesAndSaysWhich) {
   const tumble::run::LayoutSummary r = tumble::run::write_layout_report(s, "200:201", file);  // past the title card
   EXPECT_EQ(r.first, 200);
   EXPECT_EQ(r.last, 201);
-  // The whole video: 6 s title + 2.2 s at ×1/10 + 0.4 s at ×1/25 + 5.9 s at ×1/4 + holds 2.8+4+3+3+4.5+9 s = 87.9 s at 30 fps, and its last frame.
-  EXPECT_EQ(r.count, 2638);
+  // The whole video: 6 s title + 8.5 s at ×1/4 + holds 6+6+6.5+4+3.5+3+4.5+9 s = 82.5 s at 30 fps, and its last frame.
+  EXPECT_EQ(r.count, 2476);
   EXPECT_EQ(r.width, s.render.output.width);
   EXPECT_EQ(r.height, s.render.output.height);
   std::ifstream in(file);
