@@ -186,6 +186,9 @@ struct View {
   /// arrow reaches the view's title or key strips; unset = the whole view.
   /// Texts stay in the view's pixels.
   std::optional<glm::vec4> content_px;
+  /// A sphere figure's ball on screen (centre x, y and radius, view px): names
+  /// settle beside it, never onto its face, where a name reads as a point there.
+  std::optional<glm::vec3> ball_px;
 };
 
 /// A whole frame: views laid out on a grid of `columns` (row-major).

@@ -175,34 +175,16 @@ std::optional<glm::vec2> clear_spot(const Box& near, glm::vec2 size, float gap, 
 
 namespace {
 
-// A momentum sphere's ball (the unit sphere at the origin) on screen: its
-// silhouette's bounding box; an axis end's name on it reads as a point there.
-std::optional<Box> ball_on_screen(const View& view, float w, float h) {
-  if (view.name != "momentum_sphere") return std::nullopt;
-  const glm::dvec3 eye = view.camera.position;
-  const double d = glm::length(eye);
-  if (d <= 1) return std::nullopt;
-  const glm::dvec3 n = eye / d, a = glm::normalize(glm::cross(n, std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
-  const glm::dvec3 b = glm::cross(n, a);
-  const double r = std::sqrt(1 - 1 / (d * d));
-  std::vector<glm::dvec3> rim;
-  for (int i = 0; i < 24; ++i) {
-    const double t = 2 * 3.14159265358979 * i / 24;
-    rim.push_back(n / d + r * (std::cos(t) * a + std::sin(t) * b));
-  }
-  return screen_box(view.camera, w, h, rim);
-}
-
-bool on_ball(const Box& ball, const Box& b) {
-  const glm::vec2 c{0.5f * (ball.x0 + ball.x1), 0.5f * (ball.y0 + ball.y1)};
-  const glm::vec2 near{std::clamp(c.x, b.x0, b.x1), std::clamp(c.y, b.y0, b.y1)};
-  return glm::length(near - c) < 0.5f * (ball.x1 - ball.x0);
+// Whether `b` lies on the face of the ball drawn at `ball` (centre x, y, radius).
+bool on_ball(const glm::vec3& ball, const Box& b) {
+  const glm::vec2 near{std::clamp(ball.x, b.x0, b.x1), std::clamp(ball.y, b.y0, b.y1)};
+  return glm::length(near - glm::vec2(ball)) < ball.z;
 }
 
 }  // namespace
 
 std::vector<TextItem> settle_labels(View& view, float width_px, float height_px, const std::vector<Box>& also_clear) {
-  const std::optional<Box> ball = ball_on_screen(view, width_px, height_px);
+  const std::optional<glm::vec3>& ball = view.ball_px;
   std::vector<Box> taken = text_obstacles(view, width_px, height_px);
   taken.insert(taken.end(), also_clear.begin(), also_clear.end());
   // An axis end's name keeps a quarter line from the other text but may come up

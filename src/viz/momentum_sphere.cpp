@@ -187,6 +187,7 @@ void build_momentum_sphere(View& view, const MomentumSphereInput& in) {
   view.name = "momentum_sphere";
   view.camera = sphere_camera(in.pose, in.camera);
   if (in.fit_radius > 0) view.camera.fov_y_deg = fov_for_ball(view.camera, in.fit_radius, in.width_px / in.height_px);
+  view.ball_px = ball_on_screen(view.camera, in.width_px, in.height_px);
   // An opaque ball a hair inside the sphere hides the curves on its far side.
   view.points.push_back({{0, 0, 0}, kSphereBall, kSphereBallColor});
   if (L <= 0) {

@@ -96,7 +96,7 @@ void aim_poinsot_camera(View& view, const PoinsotFrame& f, const SphereCameraSet
 
 // The ellipsoid: a shaded translucent surface fixed to the body, with its
 // three principal sections drawn on it so its turning shows.
-void add_inertia_ellipsoid(View& view, const PoinsotFrame& f, float w) {
+void add_inertia_ellipsoid(View& view, const PoinsotFrame& f, float w, bool axes_too) {
   const PoinsotGeometry& p = f.p;
   const double pi = std::numbers::pi;
   glm::dmat3 axes;
@@ -114,7 +114,8 @@ void add_inertia_ellipsoid(View& view, const PoinsotFrame& f, float w) {
     }
     view.polylines.push_back(std::move(section));
   }
-  // The axes end on the ellipsoid's surface, where ω ends too.
+  // The axes end on the ellipsoid's surface, where ω ends too (far outside a close-up: not drawn there).
+  if (!axes_too) return;
   static const char* const kNames[3] = {"e\u2081", "e\u2082", "e\u2083"};
   for (int i = 0; i < 3; ++i)
     view.arrows.push_back({{0, 0, 0}, to_glm(p.axes.col(i) * p.semi_axes[i] * f.scale), 0.012, kAxisColors[i],
@@ -270,8 +271,7 @@ void build_poinsot(View& view, const PoinsotInput& in) {
   plane_basis(f.p.normal, f.u, f.v);
   f.foot = f.p.plane_distance * f.scale * f.p.normal;
   aim_poinsot_camera(view, f, in.camera, in.close_up);
-  add_inertia_ellipsoid(view, f, line_scale(in.frame_h));
-  if (in.close_up) view.arrows.clear();  // the axes end far outside a close-up
+  add_inertia_ellipsoid(view, f, line_scale(in.frame_h), !in.close_up);
   add_invariable_plane(view, f);
   if (in.separatrix && !in.close_up) add_separatrix(view, f, in);
   add_motion(view, f, in);

@@ -185,6 +185,13 @@ TextItem name_axis_end(const AxisNaming& n, const char* text, Color color, glm::
 
 }  // namespace
 
+std::optional<glm::vec3> ball_on_screen(const Camera& camera, float width_px, float height_px) {
+  const ViewportProjection project(camera, width_px, height_px);
+  glm::vec2 centre, rim;
+  if (!project(glm::dvec3(0), centre) || !project(glm::normalize(camera.up), rim)) return std::nullopt;
+  return glm::vec3(centre, glm::length(rim - centre));
+}
+
 void name_sphere_axes(View& view, float width_px, float height_px, float label_px, bool clear_of_curves) {
   static const char* const kPlus[3] = {"e\u2081", "e\u2082", "e\u2083"};               // e₁ e₂ e₃
   static const char* const kMinus[3] = {"\u2212e\u2081", "\u2212e\u2082", "\u2212e\u2083"};  // −e₁ −e₂ −e₃
@@ -197,10 +204,8 @@ void name_sphere_axes(View& view, float width_px, float height_px, float label_p
     if (project(e, tip) && project(e + 0.029 * glm::normalize(view.camera.up), head))
       head_px = std::max(head_px, glm::length(head - tip));
   }
-  glm::vec2 centre, rim;
-  const bool ball_seen = project(glm::dvec3(0), centre) && project(glm::normalize(view.camera.up), rim);
-  const AxisNaming naming{view, project, width_px, height_px, label_px, head_px, clear_of_curves, centre,
-                          ball_seen ? glm::length(rim - centre) : 0.0f};
+  const glm::vec3 ball = ball_on_screen(view.camera, width_px, height_px).value_or(glm::vec3(0));
+  const AxisNaming naming{view, project, width_px, height_px, label_px, head_px, clear_of_curves, glm::vec2(ball), ball.z};
   for (int i = 0; i < 3; ++i)
     for (int sign : {1, -1}) {
       glm::dvec3 end(0);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,6 +36,10 @@ inline constexpr double kAxisReach = 1.22, kAxisLabelReach = 1.37;
 /// drawn (up and right of an end pointing at the camera), turned until it is
 /// clear of the six half-axes. An end behind the ball is not named.
 void add_sphere_axes(View& view, float width_px, float height_px, float label_px);
+
+/// The unit ball (centre at the origin) as `camera` draws it in a `width_px` × `height_px`
+/// view: centre x, y and radius in px; none where it cannot be projected.
+std::optional<glm::vec3> ball_on_screen(const Camera& camera, float width_px, float height_px);
 
 /// add_sphere_axes in two steps: the axes, then their names; `clear_of_curves`:
 /// the names also kept clear of the named curves drawn by then (those a viewer

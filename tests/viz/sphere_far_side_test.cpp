@@ -109,8 +109,8 @@ TEST(SphereFarSide, ASettledAxisNameStaysOffTheBall) {
   SphereCameraSettings s;
   s.follow = false, s.azimuth_deg = -60, s.elevation_deg = 30, s.distance = 14, s.reach = kSphereReach;
   View v;
-  v.name = "momentum_sphere";
   v.camera = sphere_camera({}, s);
+  v.ball_px = ball_on_screen(v.camera, 640, 360);  // as build_momentum_sphere declares it
   add_sphere_axis_lines(v);
   name_sphere_axes(v, 640, 360, 14, true);
   const ViewportProjection project(v.camera, 640, 360);
